@@ -1,0 +1,339 @@
+// input.cpp: the strict world-file reader and the round-trip writer (SPEC.md section 1).
+//
+// The reader is line-oriented: every record of the table sits on its own line, as the course's
+// files and createWorld write them, so an error can name the exact line and field. Blank lines
+// are skipped; CR before LF is whitespace. Numbers go through std::from_chars, which is exact
+// (correctly rounded) and fast, and which, unlike strtod, ignores the locale.
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "world.h"
+
+namespace jello {
+
+namespace {
+
+constexpr const char* kIntegratorNames[] = {"EULER",      "RK4",    "MIDPOINT", "SYMPLECTIC",
+                                            "VERLET",     "RK45",   "IMPLICIT"};
+constexpr std::size_t kMaxIntegratorNameLength = 16;
+// The shortest possible field line, "0 0 0\n": a file shorter than R^3 of these cannot hold
+// the field it announces, so it is refused before any memory is set aside for it.
+constexpr std::size_t kShortestFieldLine = 6;
+constexpr int kMaxTokensKept = 8;
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+class Parser {
+ public:
+  Parser(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+
+  [[noreturn]] void fail(int line, const std::string& what, const std::string& field) const {
+    throw WorldFileError(name_ + ":" + std::to_string(line) + ": " + what + " (" + field + ")");
+  }
+
+  // Moves to the next non-blank line and splits it into tokens. Returns false at end of file.
+  bool nextLine() {
+    while (pos_ < text_.size()) {
+      std::size_t end = text_.find('\n', pos_);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view line = text_.substr(pos_, end - pos_);
+      pos_ = end + 1;
+      ++line_;
+      count_ = 0;
+      std::size_t i = 0;
+      while (i < line.size()) {
+        while (i < line.size() && isSpace(line[i])) ++i;
+        if (i == line.size()) break;
+        std::size_t start = i;
+        while (i < line.size() && !isSpace(line[i])) ++i;
+        if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
+        ++count_;
+      }
+      if (count_ > 0) return true;
+    }
+    ++line_;  // an error at end of file names the line after the last one
+    count_ = 0;
+    return false;
+  }
+
+  // Reads the next record, which must hold exactly `count` tokens.
+  void record(int count, const std::string& field) {
+    if (!nextLine()) fail(line_, "file ends early, expected " + what(count), field);
+    if (count_ != count) {
+      fail(line_, "expected " + what(count) + ", found " + std::to_string(count_), field);
+    }
+  }
+
+  std::string_view token(int i) const { return tokens_[i]; }
+  int line() const { return line_; }
+  std::size_t remainingBytes() const { return text_.size() - std::min(pos_, text_.size()); }
+
+  double number(int i, const std::string& field) const {
+    std::string_view t = tokens_[i];
+    double value = 0;
+    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec == std::errc::result_out_of_range) fail(line_, "'" + str(t) + "' is out of range", field);
+    if (ec != std::errc() || end != t.data() + t.size()) {
+      fail(line_, "'" + str(t) + "' is not a number", field);
+    }
+    if (std::isnan(value)) fail(line_, "NaN is not allowed", field);
+    if (std::isinf(value)) fail(line_, "infinity is not allowed", field);
+    return value;
+  }
+
+  int integer(int i, const std::string& field) const {
+    std::string_view t = tokens_[i];
+    int value = 0;
+    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    if (ec == std::errc::result_out_of_range) fail(line_, "'" + str(t) + "' is out of range", field);
+    if (ec != std::errc() || end != t.data() + t.size()) {
+      fail(line_, "'" + str(t) + "' is not a whole number", field);
+    }
+    return value;
+  }
+
+  double positive(int i, const std::string& field) const {
+    double value = number(i, field);
+    if (!(value > 0)) fail(line_, "must be > 0, got " + str(tokens_[i]), field);
+    return value;
+  }
+
+  double nonNegative(int i, const std::string& field) const {
+    double value = number(i, field);
+    if (value < 0) fail(line_, "must be >= 0, got " + str(tokens_[i]), field);
+    return value;
+  }
+
+  static std::string str(std::string_view s) { return std::string(s); }
+
+ private:
+  static std::string what(int count) {
+    return count == 1 ? std::string("1 value") : std::to_string(count) + " numbers";
+  }
+
+  std::string_view text_;
+  const std::string& name_;
+  std::size_t pos_ = 0;
+  int line_ = 0;
+  int count_ = 0;
+  std::array<std::string_view, kMaxTokensKept> tokens_{};
+};
+
+void readPoints(Parser& in, double* xyz, const std::string& what) {
+  for (int q = 0; q < kNumPoints; ++q) {
+    std::string field = what + latticeLabel(q);
+    in.record(3, field);
+    for (int axis = 0; axis < 3; ++axis) xyz[3 * q + axis] = in.number(axis, field);
+  }
+}
+
+void appendNumber(std::string& out, double value) {
+  char buffer[32];
+  auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+void appendLine(std::string& out, std::initializer_list<double> values) {
+  bool first = true;
+  for (double value : values) {
+    if (!first) out += ' ';
+    appendNumber(out, value);
+    first = false;
+  }
+  out += '\n';
+}
+
+}  // namespace
+
+std::string latticeLabel(int q) {
+  const int perSlab = kLatticeSize * kLatticeSize;
+  return "[" + std::to_string(q / perSlab) + "][" + std::to_string((q / kLatticeSize) % kLatticeSize) +
+         "][" + std::to_string(q % kLatticeSize) + "]";
+}
+
+const char* integratorName(Integrator integrator) {
+  return kIntegratorNames[static_cast<int>(integrator)];
+}
+
+bool parseIntegratorName(std::string_view name, Integrator* out) {
+  for (int i = 0; i < static_cast<int>(std::size(kIntegratorNames)); ++i) {
+    std::string_view candidate = kIntegratorNames[i];
+    if (candidate.size() != name.size()) continue;
+    bool same = true;
+    for (std::size_t c = 0; c < name.size() && same; ++c) {
+      same = std::toupper(static_cast<unsigned char>(name[c])) == candidate[c];
+    }
+    if (same) {
+      *out = static_cast<Integrator>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+WorldFile parseWorld(std::string_view text, const std::string& name) {
+  Parser in(text, name);
+  if (text.find_first_not_of(" \t\r\n\v\f") == std::string_view::npos) {
+    in.fail(1, "the file is empty", "integrator");
+  }
+  WorldFile result;
+  World& w = result.world;
+
+  in.record(1, "integrator");
+  std::string_view integrator = in.token(0);
+  if (integrator.size() > kMaxIntegratorNameLength) {
+    in.fail(in.line(), "integrator name is too long (" + std::to_string(integrator.size()) +
+                           " characters)", "integrator");
+  }
+  if (!parseIntegratorName(integrator, &w.integrator)) {
+    in.fail(in.line(), "unknown integrator '" + Parser::str(integrator) +
+                           "', expected EULER, RK4, MIDPOINT, SYMPLECTIC, VERLET, RK45 or IMPLICIT",
+            "integrator");
+  }
+
+  in.record(2, "dt n");
+  w.dt = in.positive(0, "dt");
+  w.n = in.integer(1, "n");
+  if (w.n < 1) in.fail(in.line(), "must be >= 1, got " + Parser::str(in.token(1)), "n");
+
+  in.record(4, "kElastic dElastic kCollision dCollision");
+  w.kElastic = in.nonNegative(0, "kElastic");
+  w.dElastic = in.nonNegative(1, "dElastic");
+  w.kCollision = in.nonNegative(2, "kCollision");
+  w.dCollision = in.nonNegative(3, "dCollision");
+
+  in.record(1, "mass");
+  w.mass = in.positive(0, "mass");
+
+  in.record(1, "incPlanePresent");
+  int flag = in.integer(0, "incPlanePresent");
+  if (flag != 0 && flag != 1) {
+    in.fail(in.line(), "must be 0 or 1, got " + Parser::str(in.token(0)), "incPlanePresent");
+  }
+  w.hasPlane = flag == 1;
+  if (w.hasPlane) {
+    in.record(4, "plane a b c d");
+    w.plane = {in.number(0, "plane a"), in.number(1, "plane b"), in.number(2, "plane c"),
+               in.number(3, "plane d")};
+    if (w.plane.a == 0 && w.plane.b == 0 && w.plane.c == 0) {
+      in.fail(in.line(), "the plane's normal (a,b,c) is zero", "plane a b c");
+    }
+  }
+
+  in.record(1, "resolution");
+  int r = in.integer(0, "resolution");
+  if (r < 0) in.fail(in.line(), "must be >= 0, got " + Parser::str(in.token(0)), "resolution");
+  if (r > kMaxResolution) {
+    in.fail(in.line(), std::to_string(r) + " is too large to hold (at most " +
+                           std::to_string(kMaxResolution) + ")", "resolution");
+  }
+  std::size_t nodes = static_cast<std::size_t>(r) * r * r;
+  if (nodes * kShortestFieldLine > in.remainingBytes()) {
+    in.fail(in.line(), std::to_string(r) + " needs " + std::to_string(nodes) +
+                           " field lines, more than the rest of the file can hold", "resolution");
+  }
+  w.field.resolution = r;
+  w.field.forces.resize(3 * nodes);
+  for (std::size_t node = 0; node < nodes; ++node) {
+    std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
+    std::string field = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
+                        std::to_string(k) + ")";
+    in.record(3, field);
+    for (int axis = 0; axis < 3; ++axis) w.field.forces[3 * node + axis] = in.number(axis, field);
+  }
+
+  readPoints(in, result.state.p(), "position p");
+  readPoints(in, result.state.v(), "velocity v");
+
+  if (in.nextLine()) {
+    in.fail(in.line(), "unexpected '" + Parser::str(in.token(0)) + "' after the 512 velocities",
+            "trailing garbage");
+  }
+  return result;
+}
+
+WorldFile readWorldFile(const std::string& path) {
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
+  struct stat info {};
+  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
+    ::close(fd);
+    throw WorldFileError(path + ": is a directory, not a world file");
+  }
+  std::string text;
+  if (S_ISREG(info.st_mode)) text.reserve(static_cast<std::size_t>(info.st_size));
+  char buffer[1 << 16];
+  for (;;) {
+    ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      int error = errno;
+      ::close(fd);
+      throw WorldFileError(path + ": cannot read: " + std::strerror(error));
+    }
+    if (got == 0) break;
+    text.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(fd);
+  return parseWorld(text, path);
+}
+
+std::string formatWorld(const World& w, const State& state) {
+  std::string out;
+  out.reserve(64 * (static_cast<std::size_t>(w.field.forces.size()) + 2 * kNumCoords) / 3 + 256);
+  out += integratorName(w.integrator);
+  out += '\n';
+  appendNumber(out, w.dt);
+  out += ' ' + std::to_string(w.n) + '\n';
+  appendLine(out, {w.kElastic, w.dElastic, w.kCollision, w.dCollision});
+  appendLine(out, {w.mass});
+  out += w.hasPlane ? "1\n" : "0\n";
+  if (w.hasPlane) appendLine(out, {w.plane.a, w.plane.b, w.plane.c, w.plane.d});
+  out += std::to_string(w.field.resolution) + '\n';
+  const std::vector<double>& f = w.field.forces;
+  for (std::size_t i = 0; i + 2 < f.size(); i += 3) appendLine(out, {f[i], f[i + 1], f[i + 2]});
+  for (const double* xyz : {state.p(), state.v()}) {
+    for (int q = 0; q < kNumPoints; ++q) appendLine(out, {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
+  }
+  return out;
+}
+
+void writeWorldFile(const std::string& path, const World& world, const State& state) {
+  std::string text = formatWorld(world, state);
+  std::string temp = path + ".tmp.XXXXXX";
+  int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < text.size()) {
+    ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) {
+      int error = errno;
+      ::close(fd);
+      ::unlink(temp.c_str());
+      throw std::runtime_error(path + ": cannot write: " + std::strerror(error));
+    }
+    done += static_cast<std::size_t>(wrote);
+  }
+  // mkstemp creates the file 0600; a world file is ordinary user data.
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  if (::close(fd) != 0 || ::rename(temp.c_str(), path.c_str()) != 0) {
+    int error = errno;
+    ::unlink(temp.c_str());
+    throw std::runtime_error(path + ": cannot write: " + std::strerror(error));
+  }
+}
+
+}  // namespace jello

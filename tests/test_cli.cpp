@@ -1,0 +1,165 @@
+// The command line of ./jello (SPEC.md section 4), run as a user runs it.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+
+#include "headless.h"
+#include "integrators.h"
+#include "physics.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+using test::dataPath;
+using test::runJello;
+
+int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+bool exists(const std::string& path) {
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+TEST(Cli, HeadlessRunPrintsOneSummaryLine) {
+  test::CommandResult r = runJello("--headless --steps 20 '" + dataPath("rotate.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(lineCount(r.out), 1) << r.out;
+  for (const char* part : {"rotate.w", "RK4", "dt=0.001 ", "steps=20 ", "simulated=0.02 s", "wall=", "us/step"}) {
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
+  }
+  EXPECT_EQ(r.err, "") << "quiet when stderr is not a terminal";
+}
+
+TEST(Cli, DefaultLengthIsThreeHundredFramesOfNSteps) {
+  test::CommandResult r = runJello("--headless --n 2 --integrator euler --dt 1e-5 '" + dataPath("moveLeft.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("EULER dt=1e-05 steps=600 "), std::string::npos) << r.out;
+}
+
+TEST(Cli, TimeIsConvertedToSteps) {
+  test::CommandResult r = runJello("--headless --time 0.05 '" + dataPath("jello.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("steps=100 "), std::string::npos) << r.out;
+  EXPECT_EQ(stepsForTime(1.0, 0.001), 1000);
+  EXPECT_EQ(stepsForTime(0.3, 0.1), 3);
+  EXPECT_EQ(stepsForTime(0.25, 0.1), 3);
+}
+
+TEST(Cli, WithoutADisplayItSaysSoAndRunsHeadless) {
+  test::CommandResult r = runJello("--steps 5 '" + dataPath("rotate.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.out.find("steps=5 "), std::string::npos) << r.out;
+}
+
+TEST(Cli, DumpHoldsTheFinalStateBitForBitAndTheOverrides) {
+  std::string dir = test::makeTempDir();
+  std::string out = dir + "/final.w";
+  test::CommandResult r = runJello("--headless --steps 50 --integrator EULER --dt 0.0002 --dump '" + out + "' '" +
+                                   dataPath("gravity.w") + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  WorldFile dumped = readWorldFile(out);
+  WorldFile f = readWorldFile(dataPath("gravity.w"));
+  Model model = makeModel(f.world, f.state);
+  Workspace ws;
+  for (int s = 0; s < 50; ++s) step(model, Integrator::Euler, 0.0002, f.state, ws);
+  EXPECT_EQ(dumped.state.y, f.state.y);
+  EXPECT_EQ(dumped.world.integrator, Integrator::Euler);
+  EXPECT_EQ(dumped.world.dt, 0.0002);
+  EXPECT_EQ(dumped.world.field.forces, f.world.field.forces);
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+TEST(Cli, DivergenceStopsWithStatusOneNamingStepTimeAndDt) {
+  std::string dir = test::makeTempDir();
+  std::string out = dir + "/never.w";
+  test::CommandResult r = runJello("--headless --steps 2000 --integrator EULER --dt 0.01 --dump '" + out + "' '" +
+                                   dataPath("jello.w") + "'");
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  for (const char* part : {"diverged at step ", "(t=", "dt=0.01", "EULER"}) {
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing from: " << r.err;
+  }
+  EXPECT_FALSE(exists(out)) << "a diverged run wrote a dump";
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+class CliMalformedWorld : public ::testing::TestWithParam<test::MalformedCase> {};
+
+TEST_P(CliMalformedWorld, ExitsTwoWithOneLineNamingTheLine) {
+  const test::MalformedCase& c = GetParam();
+  std::string dir = test::makeTempDir();
+  std::string path = dir + "/bad world.w";
+  std::string dump = dir + "/dump.w";
+  test::writeText(path, c.text);
+  test::CommandResult r = runJello("--headless --steps 3 --dump '" + dump + "' '" + path + "'");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(path + ":" + std::to_string(c.line) + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(" + c.field), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(exists(dump));
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliMalformedWorld, ::testing::ValuesIn(test::malformedCases()),
+                         [](const auto& info) { return info.param.name; });
+
+struct UsageCase {
+  const char* name;
+  std::string args;
+  const char* says;
+};
+
+void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.args; }
+
+class CliUsage : public ::testing::TestWithParam<UsageCase> {};
+
+TEST_P(CliUsage, ExitsTwoWithOneLine) {
+  const UsageCase& c = GetParam();
+  // Every case runs rotate.w unless it names its own world.
+  std::string args = c.args.find(".w") == std::string::npos ? c.args + " '" + dataPath("rotate.w") + "'" : c.args;
+  test::CommandResult r = runJello(args);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliUsage,
+    ::testing::Values(UsageCase{"frames", "--headless --frames out", "--frames is not available yet"},
+                      UsageCase{"check", "--check", "--check is not available yet"},
+                      UsageCase{"report", "--report dir", "--report is not available yet"},
+                      UsageCase{"bench", "--bench", "--bench is not available yet"},
+                      UsageCase{"size", "--headless --size 320x240", "--size is not available yet"},
+                      UsageCase{"unknown_option", "--headless --fast", "--fast"},
+                      UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
+                      UsageCase{"negative_steps", "--headless --steps -3", "--steps"},
+                      UsageCase{"zero_dt", "--headless --dt 0", "--dt"},
+                      UsageCase{"nan_dt", "--headless --dt nan", "--dt"},
+                      UsageCase{"inf_time", "--headless --time inf", "--time"},
+                      UsageCase{"zero_n", "--headless --n 0", "--n"},
+                      UsageCase{"word_steps", "--headless --steps many", "--steps"},
+                      UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
+                      UsageCase{"later_integrator", "--headless --integrator midpoint", "MIDPOINT is not available yet"},
+                      UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open"},
+                      UsageCase{"two_worlds", "--headless a.w b.w", "not expected"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Cli, HelpAndVersion) {
+  test::CommandResult help = runJello("--help");
+  EXPECT_EQ(help.status, 0);
+  for (const char* option : {"--headless", "--steps", "--time", "--integrator", "--dt", "--n", "--dump"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+  }
+  test::CommandResult version = runJello("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_NE(version.out.find("jello "), std::string::npos) << version.out;
+}
+
+}  // namespace
+}  // namespace jello

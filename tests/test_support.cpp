@@ -1,0 +1,158 @@
+#include "test_support.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "vec3.h"
+
+namespace jello::test {
+
+std::string dataPath(const std::string& name) { return std::string(JELLO_TEST_DATA) + "/" + name; }
+
+std::vector<double> readExpectedPositions(const std::string& name) {
+  std::ifstream in(dataPath("expected/" + name));
+  if (!in) throw std::runtime_error("cannot open expected/" + name);
+  std::vector<double> p;
+  double value;
+  while (in >> value) p.push_back(value);
+  if (p.size() != static_cast<std::size_t>(kNumCoords)) throw std::runtime_error("bad expected file " + name);
+  return p;
+}
+
+double rmsDistance(const double* a, const double* b) {
+  double sum = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 d = load(a, q) - load(b, q);
+    sum += dot(d, d);
+  }
+  return std::sqrt(sum / kNumPoints);
+}
+
+State restLattice() {
+  State state;
+  for (int i = 0; i < kLatticeSize; ++i)
+    for (int j = 0; j < kLatticeSize; ++j)
+      for (int k = 0; k < kLatticeSize; ++k)
+        store(state.p(), pointIndex(i, j, k), kRestSpacing * Vec3{double(i), double(j), double(k)});
+  return state;
+}
+
+World springsOnlyWorld() {
+  World w;
+  w.integrator = Integrator::RK4;
+  w.dt = 1e-4;
+  w.kElastic = 500;
+  w.dElastic = 0.25;
+  w.kCollision = 1000;
+  w.dCollision = 0.25;
+  w.mass = 1.0 / 512;
+  return w;
+}
+
+std::string makeTempDir() {
+  const char* base = std::getenv("TMPDIR");
+  std::string pattern = std::string(base && *base ? base : "/tmp") + "/jello-test-XXXXXX";
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+  return pattern;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+CommandResult runJello(const std::string& args) {
+  std::string dir = makeTempDir();
+  std::string command = std::string("'") + JELLO_BINARY + "' " + args + " >" + dir + "/out 2>" + dir + "/err </dev/null";
+  int raw = std::system(command.c_str());
+  CommandResult result;
+  if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
+  result.out = readText(dir + "/out");
+  result.err = readText(dir + "/err");
+  std::system(("rm -rf '" + dir + "'").c_str());
+  return result;
+}
+
+namespace {
+
+// A small valid world (R = 2), its lines numbered as in the table of SPEC section 1:
+// 1 integrator, 2 dt n, 3 stiffness, 4 mass, 5 plane flag, 6 plane, 7 resolution,
+// 8-15 field, 16-527 positions, 528-1039 velocities.
+std::vector<std::string> baseLines() {
+  World w = springsOnlyWorld();
+  w.hasPlane = true;
+  w.plane = {1, -1, -1, 4};
+  w.field.resolution = 2;
+  w.field.forces.assign(3 * 8, 0.5);
+  std::string text = formatWorld(w, restLattice());
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string join(const std::vector<std::string>& lines, std::size_t count) {
+  std::string text;
+  for (std::size_t i = 0; i < count && i < lines.size(); ++i) text += lines[i] + "\n";
+  return text;
+}
+
+}  // namespace
+
+std::vector<MalformedCase> malformedCases() {
+  const std::vector<std::string> base = baseLines();
+  auto with = [&](int line, const std::string& replacement) {
+    std::vector<std::string> lines = base;
+    lines[line - 1] = replacement;
+    return join(lines, lines.size());
+  };
+  return {
+      {"empty", "", 1, "integrator"},
+      {"blank", "\n  \r\n", 1, "integrator"},
+      {"truncated_positions", join(base, 300), 301, "position p[4][3][5]"},
+      {"missing_velocities", join(base, 527), 528, "velocity v[0][0][0]"},
+      {"word_for_number", with(3, "500 soft 1000 0.25"), 3, "dElastic"},
+      {"nan", with(4, "nan"), 4, "mass"},
+      {"inf", with(16, "inf 0 0"), 16, "position p[0][0][0]"},
+      {"negative_infinity", with(8, "0 -infinity 0"), 8, "force field node (0,0,0)"},
+      {"out_of_range", with(3, "1e999 0.25 1000 0.25"), 3, "kElastic"},
+      {"zero_dt", with(2, "0 1"), 2, "dt"},
+      {"negative_dt", with(2, "-0.001 1"), 2, "dt"},
+      {"zero_mass", with(4, "0"), 4, "mass"},
+      {"negative_mass", with(4, "-0.001953"), 4, "mass"},
+      {"zero_n", with(2, "0.001 0"), 2, "n"},
+      {"fractional_n", with(2, "0.001 1.5"), 2, "n"},
+      {"negative_stiffness", with(3, "-500 0.25 1000 0.25"), 3, "kElastic"},
+      {"negative_collision_damping", with(3, "500 0.25 1000 -1"), 3, "dCollision"},
+      {"plane_flag_2", with(5, "2"), 5, "incPlanePresent"},
+      {"plane_flag_word", with(5, "yes"), 5, "incPlanePresent"},
+      {"zero_plane_normal", with(6, "0 0 0 4"), 6, "plane a b c"},
+      {"short_plane", with(6, "1 -1 -1"), 6, "plane a b c d"},
+      {"negative_resolution", with(7, "-1"), 7, "resolution"},
+      {"huge_resolution", with(7, "100000"), 7, "resolution"},
+      {"resolution_beyond_file", with(7, "200"), 7, "resolution"},
+      {"unknown_integrator", with(1, "RK5"), 1, "integrator"},
+      {"overlong_integrator", with(1, std::string(4000, 'X')), 1, "integrator"},
+      {"two_integrators", with(1, "RK4 EULER"), 1, "integrator"},
+      {"extra_number", with(16, "0 0 0 0"), 16, "position p[0][0][0]"},
+      {"missing_number", with(600, "0 0"), 600, "velocity v[1][1][0]"},
+      {"trailing_garbage", join(base, base.size()) + "1 2 3\n", 1040, "trailing garbage"},
+      {"trailing_word", join(base, base.size()) + "\nend\n", 1041, "trailing garbage"},
+  };
+}
+
+}  // namespace jello::test

@@ -1,0 +1,49 @@
+// test_support.h: shared helpers of the test suite.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "world.h"
+
+namespace jello::test {
+
+// A file of tests/data (copied from ../shared/reference-worlds).
+std::string dataPath(const std::string& name);
+
+// The 512 positions of a `expected/` file, xyz-interleaved.
+std::vector<double> readExpectedPositions(const std::string& name);
+
+// RMS over the 512 points of the distance between two position arrays (m).
+double rmsDistance(const double* a, const double* b);
+
+// The ideal lattice p[i][j][k] = (i,j,k)/7, at rest.
+State restLattice();
+
+// A world with damped springs and nothing else: no plane, no field.
+World springsOnlyWorld();
+
+// A fresh directory under the system's temporary directory.
+std::string makeTempDir();
+void writeText(const std::string& path, const std::string& text);
+std::string readText(const std::string& path);
+
+struct CommandResult {
+  int status = -1;  // exit status, or -1 if the process did not exit normally
+  std::string out, err;
+};
+// Runs the jello binary under test with `args` (a shell-quoted string).
+CommandResult runJello(const std::string& args);
+
+// One malformed world file: its text, and the line and field its error must name.
+struct MalformedCase {
+  std::string name;
+  std::string text;
+  int line;
+  std::string field;
+};
+std::vector<MalformedCase> malformedCases();
+inline void PrintTo(const MalformedCase& c, std::ostream* os) { *os << c.name; }
+
+}  // namespace jello::test

@@ -1,0 +1,209 @@
+// Reader and writer of world files (SPEC.md section 1).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "test_support.h"
+#include "vec3.h"
+#include "world.h"
+
+namespace jello {
+namespace {
+
+using test::dataPath;
+
+bool bitIdentical(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+void expectSameWorld(const WorldFile& a, const WorldFile& b) {
+  const World &x = a.world, &y = b.world;
+  EXPECT_EQ(x.integrator, y.integrator);
+  EXPECT_TRUE(bitIdentical({x.dt, x.kElastic, x.dElastic, x.kCollision, x.dCollision, x.mass, x.plane.a,
+                            x.plane.b, x.plane.c, x.plane.d},
+                           {y.dt, y.kElastic, y.dElastic, y.kCollision, y.dCollision, y.mass, y.plane.a,
+                            y.plane.b, y.plane.c, y.plane.d}));
+  EXPECT_EQ(x.n, y.n);
+  EXPECT_EQ(x.hasPlane, y.hasPlane);
+  EXPECT_EQ(x.field.resolution, y.field.resolution);
+  EXPECT_TRUE(bitIdentical(x.field.forces, y.field.forces));
+  EXPECT_TRUE(bitIdentical(a.state.y, b.state.y));
+}
+
+struct CourseWorld {
+  const char* file;
+  double dt, kElastic, dElastic, kCollision, dCollision;
+  bool hasPlane;
+  Plane plane;
+  Vec3 fieldAtNode0, p777, velocity0;
+};
+
+// The values of ../shared/reference-worlds/README.md, as written (six decimals).
+const CourseWorld kCourseWorlds[] = {
+    {"jello.w", 0.0005, 200, 0.25, 400, 0.25, true, {-1, 1, 1, 2}, {0, 0, 0}, {1.142857, 1.142857, 1.142857}, {10, -10, 20}},
+    {"rotate.w", 0.001, 500, 0.25, 1000, 0.25, true, {1, -1, -1, 4}, {0.019531, -0.019531, 0}, {1, 1, 1}, {0, 0, 0}},
+    {"moveLeft.w", 0.0005, 500, 0.25, 1000, 0.25, false, {}, {0, 0, 0}, {1, 1, 1}, {-50, 0, 0}},
+    {"skewedCorner.w", 0.00001, 500, 0.25, 1000, 0.25, false, {}, {0, 0, 0}, {1.142857, 1.142857, 1.142857}, {0, 0, 0}},
+    {"gravity.w", 0.0001, 500, 0.25, 1000, 0.25, true, {-1, 1, 2, 6}, {0, 0, -0.06}, {1, 1, 1}, {10, -10, 0}},
+};
+
+TEST(WorldReader, CourseWorldsLoadWithTheirExactValues) {
+  for (const CourseWorld& c : kCourseWorlds) {
+    SCOPED_TRACE(c.file);
+    WorldFile f = readWorldFile(dataPath(c.file));
+    const World& w = f.world;
+    EXPECT_EQ(w.integrator, Integrator::RK4);
+    EXPECT_EQ(w.dt, c.dt);
+    EXPECT_EQ(w.n, 1);
+    EXPECT_EQ(w.kElastic, c.kElastic);
+    EXPECT_EQ(w.dElastic, c.dElastic);
+    EXPECT_EQ(w.kCollision, c.kCollision);
+    EXPECT_EQ(w.dCollision, c.dCollision);
+    EXPECT_EQ(w.mass, 0.001953);
+    EXPECT_EQ(w.hasPlane, c.hasPlane);
+    if (c.hasPlane) {
+      EXPECT_EQ(w.plane.a, c.plane.a);
+      EXPECT_EQ(w.plane.b, c.plane.b);
+      EXPECT_EQ(w.plane.c, c.plane.c);
+      EXPECT_EQ(w.plane.d, c.plane.d);
+    }
+    ASSERT_EQ(w.field.resolution, 30);
+    ASSERT_EQ(w.field.forces.size(), 3u * 30 * 30 * 30);
+    EXPECT_EQ(w.field.forces[0], c.fieldAtNode0.x);
+    EXPECT_EQ(w.field.forces[1], c.fieldAtNode0.y);
+    EXPECT_EQ(w.field.forces[2], c.fieldAtNode0.z);
+    Vec3 p0 = load(f.state.p(), pointIndex(0, 0, 0));
+    EXPECT_EQ(p0.x, 0);
+    EXPECT_EQ(p0.y, 0);
+    EXPECT_EQ(p0.z, 0);
+    EXPECT_EQ(load(f.state.p(), pointIndex(0, 0, 1)).z, 0.142857);
+    Vec3 p777 = load(f.state.p(), pointIndex(7, 7, 7));
+    EXPECT_EQ(p777.x, c.p777.x);
+    EXPECT_EQ(p777.y, c.p777.y);
+    EXPECT_EQ(p777.z, c.p777.z);
+    for (int q = 0; q < kNumPoints; ++q) {
+      Vec3 v = load(f.state.v(), q);
+      ASSERT_EQ(v.x, c.velocity0.x);
+      ASSERT_EQ(v.y, c.velocity0.y);
+      ASSERT_EQ(v.z, c.velocity0.z);
+    }
+  }
+}
+
+TEST(WorldReader, SwirlFieldOfRotateIsStoredAtIRRPlusJRPlusK) {
+  // rotate.w: F = (5/512)(-y, x, 0), rounded to six decimals, at node (i,j,k).
+  WorldFile f = readWorldFile(dataPath("rotate.w"));
+  const int r = 30;
+  for (int i : {0, 7, 29})
+    for (int j : {0, 13, 29})
+      for (int k : {0, 5, 29}) {
+        double x = -2 + 4.0 * i / (r - 1), y = -2 + 4.0 * j / (r - 1);
+        const double* node = &f.world.field.forces[3 * (i * r * r + j * r + k)];
+        EXPECT_NEAR(node[0], -5.0 / 512 * y, 1e-6);
+        EXPECT_NEAR(node[1], 5.0 / 512 * x, 1e-6);
+        EXPECT_EQ(node[2], 0);
+      }
+}
+
+TEST(WorldReader, CrlfFilesReadTheSame) {
+  std::string text = test::readText(dataPath("gravity.w"));
+  std::string crlf;
+  for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  expectSameWorld(parseWorld(text, "lf"), parseWorld(crlf, "crlf"));
+}
+
+TEST(WorldReader, IntegratorNamesAreCaseInsensitive) {
+  std::string text = test::readText(dataPath("moveLeft.w"));
+  const std::pair<const char*, Integrator> names[] = {
+      {"euler", Integrator::Euler},   {"Rk4", Integrator::RK4},         {"midpoint", Integrator::Midpoint},
+      {"Symplectic", Integrator::Symplectic}, {"VERLET", Integrator::Verlet}, {"rk45", Integrator::RK45},
+      {"implicit", Integrator::Implicit}};
+  for (auto [name, integrator] : names) {
+    std::string renamed = name + text.substr(text.find('\n'));
+    EXPECT_EQ(parseWorld(renamed, "w").world.integrator, integrator) << name;
+  }
+}
+
+TEST(WorldWriter, CourseWorldsRoundTripBitIdentically) {
+  for (const CourseWorld& c : kCourseWorlds) {
+    SCOPED_TRACE(c.file);
+    WorldFile original = readWorldFile(dataPath(c.file));
+    std::string written = formatWorld(original.world, original.state);
+    WorldFile back = parseWorld(written, "written");
+    expectSameWorld(original, back);
+    EXPECT_EQ(formatWorld(back.world, back.state), written);
+  }
+}
+
+TEST(WorldWriter, ArbitraryDoublesRoundTripBitIdentically) {
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-300, 300);
+  auto any = [&] { return std::ldexp(unit(random), exponent(random)); };
+  auto positive = [&] { return std::fabs(any()) + 1e-300; };
+  World w;
+  w.integrator = Integrator::Verlet;
+  w.dt = positive();
+  w.n = 7;
+  w.kElastic = positive();
+  w.dElastic = 0;
+  w.kCollision = positive();
+  w.dCollision = positive();
+  w.mass = positive();
+  w.hasPlane = true;
+  w.plane = {any(), any(), 1.0 / 3, -0.0};
+  w.field.resolution = 3;
+  for (int i = 0; i < 3 * 27; ++i) w.field.forces.push_back(any());
+  State s;
+  for (double& value : s.y) value = unit(random) * 3;
+  s.y[5] = 5e-324;  // the smallest subnormal
+  std::string text = formatWorld(w, s);
+  WorldFile back = parseWorld(text, "random");
+  expectSameWorld({w, s}, back);
+  EXPECT_TRUE(std::signbit(back.world.plane.d));
+}
+
+TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
+  std::string dir = test::makeTempDir();
+  WorldFile f = readWorldFile(dataPath("jello.w"));
+  std::string path = dir + "/out.w";
+  writeWorldFile(path, f.world, f.state);
+  expectSameWorld(f, readWorldFile(path));
+  EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0) << "temporary file left behind";
+  EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+class MalformedWorld : public ::testing::TestWithParam<test::MalformedCase> {};
+
+TEST_P(MalformedWorld, IsRejectedNamingFileLineAndField) {
+  const test::MalformedCase& c = GetParam();
+  try {
+    parseWorld(c.text, "bad.w");
+    FAIL() << "accepted";
+  } catch (const WorldFileError& e) {
+    std::string message = e.what();
+    std::string prefix = "bad.w:" + std::to_string(c.line) + ": ";
+    EXPECT_EQ(message.rfind(prefix, 0), 0u) << message;
+    EXPECT_NE(message.find("(" + c.field), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_LT(message.size(), 300u) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, MalformedWorld, ::testing::ValuesIn(test::malformedCases()),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(WorldReader, UnreadablePathsGiveOneLineErrors) {
+  EXPECT_THROW(readWorldFile("/no/such/file.w"), WorldFileError);
+  try {
+    readWorldFile(JELLO_TEST_DATA);
+    FAIL() << "a directory was read";
+  } catch (const WorldFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("directory"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace jello

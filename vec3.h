@@ -1,0 +1,34 @@
+// vec3.h: a small 3-vector of doubles for the force terms.
+// Units follow the caller (metres, metres per second, newtons).
+#pragma once
+
+#include <cmath>
+
+namespace jello {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
+inline Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
+inline Vec3& operator+=(Vec3& a, Vec3 b) {
+  a.x += b.x;
+  a.y += b.y;
+  a.z += b.z;
+  return a;
+}
+inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+
+// Reads/writes point q of a flat xyz-interleaved array (3 doubles per point).
+inline Vec3 load(const double* xyz, int q) { return {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]}; }
+inline void store(double* xyz, int q, Vec3 a) {
+  xyz[3 * q] = a.x;
+  xyz[3 * q + 1] = a.y;
+  xyz[3 * q + 2] = a.z;
+}
+
+}  // namespace jello

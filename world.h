@@ -1,0 +1,96 @@
+// world.h: the parameters of a jello world and its state, and the .w file format
+// (SPEC.md section 1).
+//
+// Units: metres, seconds, kilograms, newtons. Stiffness in N/m, damping in N s/m.
+// Lattice index (i,j,k) maps to axes (x,y,z); point (i,j,k) is stored at
+// pointIndex(i,j,k) = i*64 + j*8 + k, in the file's order.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace jello {
+
+constexpr int kLatticeSize = 8;                                     // points per cube edge
+constexpr int kNumPoints = kLatticeSize * kLatticeSize * kLatticeSize;  // 512
+constexpr int kNumCoords = 3 * kNumPoints;                          // 1536 doubles per array
+constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);           // 1/7 m between neighbours
+constexpr double kBoxHalfSize = 2.0;                                // bounding box [-2,2]^3
+constexpr int kMaxResolution = 512;  // R^3 nodes * 24 bytes must fit in memory (3.2 GB here)
+
+constexpr int pointIndex(int i, int j, int k) {
+  return (i * kLatticeSize + j) * kLatticeSize + k;
+}
+
+// "[i][j][k]" for point q, as in the course's p[i][j][k].
+std::string latticeLabel(int q);
+
+enum class Integrator { Euler, RK4, Midpoint, Symplectic, Verlet, RK45, Implicit };
+
+// Canonical upper-case name, as written in world files.
+const char* integratorName(Integrator integrator);
+// Case-insensitive lookup; false when the name is not one of SPEC section 3.
+bool parseIntegratorName(std::string_view name, Integrator* out);
+
+// The plane a*x + b*y + c*z + d = 0, (a,b,c) != 0.
+struct Plane {
+  double a = 0, b = 0, c = 0, d = 0;
+};
+
+// Forces (newtons) on an R^3 grid spanning the box. Node (i,j,k) sits at
+// (-2 + 4i/(R-1), -2 + 4j/(R-1), -2 + 4k/(R-1)); its force is forces[3*(i*R*R + j*R + k) + axis].
+// R = 0: no field. R = 1: one uniform force inside the box.
+struct ForceField {
+  int resolution = 0;
+  std::vector<double> forces;
+};
+
+// Everything a world file fixes except the state. Read once, never changed by a run.
+struct World {
+  Integrator integrator = Integrator::RK4;
+  double dt = 0.001;  // s, > 0
+  int n = 1;          // steps per drawn frame, >= 1
+  double kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0;  // >= 0
+  double mass = 1.0 / kNumPoints;  // kg per point, > 0
+  bool hasPlane = false;
+  Plane plane;
+  ForceField field;
+};
+
+// Positions (m) and velocities (m/s) of the 512 points, each a flat xyz-interleaved array
+// of kNumCoords doubles: y[0 .. kNumCoords) positions, y[kNumCoords .. 2*kNumCoords) velocities.
+// One contiguous array so that integrators copy and combine whole states cheaply.
+struct State {
+  std::vector<double> y = std::vector<double>(2 * kNumCoords, 0.0);
+  double* p() { return y.data(); }
+  double* v() { return y.data() + kNumCoords; }
+  const double* p() const { return y.data(); }
+  const double* v() const { return y.data() + kNumCoords; }
+};
+
+// A malformed world file. what() is the one-line message "FILE:LINE: what is wrong (field)".
+class WorldFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct WorldFile {
+  World world;
+  State state;
+};
+
+// Parses the text of a world file; `name` is used in error messages. Throws WorldFileError.
+WorldFile parseWorld(std::string_view text, const std::string& name);
+// Reads and parses a world file. Throws WorldFileError (also for unreadable files).
+WorldFile readWorldFile(const std::string& path);
+
+// The text of a world file, numbers in shortest round-trip form: parseWorld of it gives back
+// bit-identical values.
+std::string formatWorld(const World& world, const State& state);
+// Writes formatWorld to `path` whole: a temporary file beside it, then a rename, so a reader
+// never sees half a file. Throws std::runtime_error with a one-line message on failure.
+void writeWorldFile(const std::string& path, const World& world, const State& state);
+
+}  // namespace jello
