@@ -165,6 +165,16 @@ const char* integratorName(Integrator integrator) {
   return kIntegratorNames[static_cast<int>(integrator)];
 }
 
+std::string integratorNameList() {
+  std::string list;
+  const std::size_t count = std::size(kIntegratorNames);
+  for (std::size_t i = 0; i < count; ++i) {
+    list += i == 0 ? "" : i + 1 == count ? " or " : ", ";
+    list += kIntegratorNames[i];
+  }
+  return list;
+}
+
 bool parseIntegratorName(std::string_view name, Integrator* out) {
   for (int i = 0; i < static_cast<int>(std::size(kIntegratorNames)); ++i) {
     std::string_view candidate = kIntegratorNames[i];
@@ -196,8 +206,7 @@ WorldFile parseWorld(std::string_view text, const std::string& name) {
                            " characters)", "integrator");
   }
   if (!parseIntegratorName(integrator, &w.integrator)) {
-    in.fail(in.line(), "unknown integrator '" + Parser::str(integrator) +
-                           "', expected EULER, RK4, MIDPOINT, SYMPLECTIC, VERLET, RK45 or IMPLICIT",
+    in.fail(in.line(), "unknown integrator '" + Parser::str(integrator) + "', expected " + integratorNameList(),
             "integrator");
   }
 

@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
                           ->check(CLI::Range(0LL, std::numeric_limits<long long>::max()));
   auto* timeOption = app.add_option("--time", time, "simulated seconds to run headless")->check(kFinitePositive);
   stepsOption->excludes(timeOption);
-  auto* integratorOption = app.add_option("--integrator", integrator, "EULER or RK4 (overrides the world file)");
+  auto* integratorOption = app.add_option("--integrator", integrator, "EULER or RK4, any case (overrides the world file)");
   auto* dtOption = app.add_option("--dt", dt, "time step in seconds (overrides the world file)")->check(kFinitePositive);
   auto* nOption = app.add_option("--n", n, "steps per drawn frame (overrides the world file)")
                       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
@@ -85,10 +85,8 @@ int main(int argc, char** argv) {
   if (*integratorOption) {
     jello::Integrator chosen;
     if (!jello::parseIntegratorName(integrator, &chosen)) {
-      std::fprintf(stderr,
-                   "jello: --integrator: unknown integrator '%s', expected EULER, RK4, MIDPOINT, "
-                   "SYMPLECTIC, VERLET, RK45 or IMPLICIT\n",
-                   integrator.c_str());
+      std::fprintf(stderr, "jello: --integrator: unknown integrator '%s', expected %s\n", integrator.c_str(),
+                   jello::integratorNameList().c_str());
       return jello::kExitBadInput;
     }
     run.integrator = chosen;

@@ -31,6 +31,8 @@ enum class Integrator { Euler, RK4, Midpoint, Symplectic, Verlet, RK45, Implicit
 
 // Canonical upper-case name, as written in world files.
 const char* integratorName(Integrator integrator);
+// "EULER, RK4, ... or IMPLICIT": every accepted name, for messages.
+std::string integratorNameList();
 // Case-insensitive lookup; false when the name is not one of SPEC section 3.
 bool parseIntegratorName(std::string_view name, Integrator* out);
 
