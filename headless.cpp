@@ -2,11 +2,14 @@
 
 #include "headless.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "integrators.h"
 #include "physics.h"
@@ -52,6 +55,16 @@ class Progress {
   Clock::time_point start_ = Clock::now();
 };
 
+// Why `path` cannot be written, or "" when it can: checked before a long run, not after it.
+std::string whyNotWritable(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) return "is a directory";
+  std::size_t slash = path.find_last_of('/');
+  std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (::access(dir.c_str(), W_OK) != 0) return std::string("cannot write into ") + dir + ": " + std::strerror(errno);
+  return {};
+}
+
 }  // namespace
 
 long long stepsForTime(double time, double dt) {
@@ -79,6 +92,14 @@ int runHeadless(const RunOptions& options) {
   long long steps = kDefaultFrames * world.n;
   if (options.steps) steps = *options.steps;
   if (options.time) steps = stepsForTime(*options.time, world.dt);
+
+  if (!options.dumpPath.empty()) {
+    std::string why = whyNotWritable(options.dumpPath);
+    if (!why.empty()) {
+      std::fprintf(stderr, "jello: --dump %s: %s\n", options.dumpPath.c_str(), why.c_str());
+      return kExitBadInput;
+    }
+  }
 
   const Model model = makeModel(world, file.state);
   State& state = file.state;

@@ -78,29 +78,27 @@ class Parser {
   int line() const { return line_; }
   std::size_t remainingBytes() const { return text_.size() - std::min(pos_, text_.size()); }
 
-  double number(int i, const std::string& field) const {
+  // Token i as a T, the whole token and nothing else; `kind` names T in messages.
+  template <class T>
+  T parsed(int i, const std::string& field, const char* kind) const {
     std::string_view t = tokens_[i];
-    double value = 0;
+    T value{};
     auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (ec == std::errc::result_out_of_range) fail(line_, "'" + str(t) + "' is out of range", field);
     if (ec != std::errc() || end != t.data() + t.size()) {
-      fail(line_, "'" + str(t) + "' is not a number", field);
+      fail(line_, "'" + str(t) + "' is not " + kind, field);
     }
+    return value;
+  }
+
+  double number(int i, const std::string& field) const {
+    double value = parsed<double>(i, field, "a number");
     if (std::isnan(value)) fail(line_, "NaN is not allowed", field);
     if (std::isinf(value)) fail(line_, "infinity is not allowed", field);
     return value;
   }
 
-  int integer(int i, const std::string& field) const {
-    std::string_view t = tokens_[i];
-    int value = 0;
-    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    if (ec == std::errc::result_out_of_range) fail(line_, "'" + str(t) + "' is out of range", field);
-    if (ec != std::errc() || end != t.data() + t.size()) {
-      fail(line_, "'" + str(t) + "' is not a whole number", field);
-    }
-    return value;
-  }
+  int integer(int i, const std::string& field) const { return parsed<int>(i, field, "a whole number"); }
 
   double positive(int i, const std::string& field) const {
     double value = number(i, field);

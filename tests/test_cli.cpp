@@ -112,6 +112,7 @@ struct UsageCase {
   const char* name;
   std::string args;
   const char* says;
+  bool ownWorld = false;  // the arguments name the world themselves; otherwise rotate.w is run
 };
 
 void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.args; }
@@ -120,9 +121,7 @@ class CliUsage : public ::testing::TestWithParam<UsageCase> {};
 
 TEST_P(CliUsage, ExitsTwoWithOneLine) {
   const UsageCase& c = GetParam();
-  // Every case runs rotate.w unless it names its own world.
-  std::string args = c.args.find(".w") == std::string::npos ? c.args + " '" + dataPath("rotate.w") + "'" : c.args;
-  test::CommandResult r = runJello(args);
+  test::CommandResult r = runJello(c.ownWorld ? c.args : c.args + " '" + dataPath("rotate.w") + "'");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
@@ -146,8 +145,10 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"word_steps", "--headless --steps many", "--steps"},
                       UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
                       UsageCase{"later_integrator", "--headless --integrator midpoint", "MIDPOINT is not available yet"},
-                      UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open"},
-                      UsageCase{"two_worlds", "--headless a.w b.w", "not expected"}),
+                      UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open", true},
+                      UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
+                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
+                      UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Cli, HelpAndVersion) {
