@@ -28,27 +28,33 @@ double secondsSince(Clock::time_point start) {
 // the run has taken long enough for a user to wonder. Silent when stderr is not a terminal.
 class Progress {
  public:
-  explicit Progress(long long total) : total_(total), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  Progress(long long totalSteps, const FrameObserver* frames)
+      : total_(totalSteps), frames_(frames), enabled_(::isatty(STDERR_FILENO) == 1) {}
 
   void update(long long done) {
-    if (!enabled_ || (done & 255) != 0) return;
+    if (!enabled_ || (done & 63) != 0) return;
     double elapsed = secondsSince(start_);
     if (elapsed < kQuietSeconds || elapsed - lastShown_ < kRefreshSeconds) return;
     lastShown_ = elapsed;
     double left = elapsed / done * (total_ - done);
-    std::fprintf(stderr, "\rstep %lld/%lld (%.0f%%), %.0f s left   ", done, total_,
-                 100.0 * done / total_, left);
+    if (frames_) {
+      std::fprintf(stderr, "\rframe %d, %.0f frames/s, step %lld/%lld, %.0f s left   ", frames_->framesDone(),
+                   frames_->framesDone() / elapsed, done, total_, left);
+    } else {
+      std::fprintf(stderr, "\rstep %lld/%lld (%.0f%%), %.0f s left   ", done, total_, 100.0 * done / total_, left);
+    }
     shown_ = true;
   }
 
   ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r%60s\r", "");
+    if (shown_) std::fprintf(stderr, "\r%70s\r", "");
   }
 
  private:
   static constexpr double kQuietSeconds = 1.0;
   static constexpr double kRefreshSeconds = 0.25;
   long long total_;
+  const FrameObserver* frames_;
   bool enabled_;
   bool shown_ = false;
   double lastShown_ = 0;
@@ -71,23 +77,29 @@ long long stepsForTime(double time, double dt) {
   return static_cast<long long>(std::ceil(time / dt * (1 - 1e-9)));
 }
 
-int runHeadless(const RunOptions& options) {
-  WorldFile file;
+bool loadRun(const RunOptions& options, WorldFile* out) {
   try {
-    file = readWorldFile(options.worldPath);
+    *out = readWorldFile(options.worldPath);
   } catch (const WorldFileError& e) {
     std::fprintf(stderr, "jello: %s\n", e.what());
-    return kExitBadInput;
+    return false;
   }
-  World& world = file.world;
+  World& world = out->world;
   if (options.integrator) world.integrator = *options.integrator;
   if (options.dt) world.dt = *options.dt;
   if (options.n) world.n = *options.n;
   if (!isImplemented(world.integrator)) {
     std::fprintf(stderr, "jello: integrator %s is not available yet (EULER and RK4 are)\n",
                  integratorName(world.integrator));
-    return kExitBadInput;
+    return false;
   }
+  return true;
+}
+
+int runHeadless(const RunOptions& options, FrameObserver* frames) {
+  WorldFile file;
+  if (!loadRun(options, &file)) return kExitBadInput;
+  const World& world = file.world;
 
   long long steps = kDefaultFrames * world.n;
   if (options.steps) steps = *options.steps;
@@ -104,8 +116,17 @@ int runHeadless(const RunOptions& options) {
   const Model model = makeModel(world, file.state);
   State& state = file.state;
   Workspace workspace;
-  Progress progress(steps);
+  Progress progress(steps, frames);
   Clock::time_point start = Clock::now();
+  try {
+    if (frames) {
+      frames->begin();
+      frames->frame(model, state);
+    }
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "jello: %s\n", e.what());
+    return kExitBadInput;
+  }
   for (long long s = 1; s <= steps; ++s) {
     step(model, world.integrator, world.dt, state, workspace);
     int bad = findDivergedPoint(state);
@@ -120,13 +141,23 @@ int runHeadless(const RunOptions& options) {
                    finite ? "is more than 100 m from the origin" : "is no longer finite");
       return kExitDiverged;
     }
+    if (frames && s % world.n == 0 && frames->wantsMore()) {
+      try {
+        frames->frame(model, state);
+      } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "jello: %s\n", e.what());
+        return kExitBadInput;
+      }
+    }
     progress.update(s);
   }
   double wall = secondsSince(start);
 
-  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step\n",
-              options.worldPath.c_str(), integratorName(world.integrator), world.dt, steps,
-              steps * world.dt, wall, steps > 0 ? wall * 1e6 / steps : 0.0);
+  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
+              integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
+              steps > 0 ? wall * 1e6 / steps : 0.0);
+  if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
+  std::printf("\n");
   std::fflush(stdout);
 
   if (!options.dumpPath.empty()) {

@@ -4,11 +4,12 @@
 #include <optional>
 #include <string>
 
+#include "physics.h"
 #include "world.h"
 
 namespace jello {
 
-// What the command line asks of a headless run; unset values come from the world file.
+// What the command line asks of a run; unset values come from the world file.
 struct RunOptions {
   std::string worldPath;
   std::optional<long long> steps;  // --steps N
@@ -24,15 +25,35 @@ constexpr int kExitOk = 0;
 constexpr int kExitDiverged = 1;
 constexpr int kExitBadInput = 2;
 
-// The default length of a headless run: 300 drawn frames of n steps each.
+// The default length of a run: 300 drawn frames of n steps each.
 constexpr long long kDefaultFrames = 300;
+
+// Receives the frames a viewer would draw: the state at step 0 and after every n steps.
+class FrameObserver {
+ public:
+  virtual ~FrameObserver() = default;
+  // Called once before the first frame (e.g. to claim the output folder). Throws
+  // std::runtime_error with a one-line message to stop the run with exit status 2.
+  virtual void begin() {}
+  // Throws std::runtime_error like begin().
+  virtual void frame(const Model& model, const State& state) = 0;
+  // False once the observer wants no more frames (the run itself goes on).
+  virtual bool wantsMore() const = 0;
+  virtual int framesDone() const = 0;
+  // How the summary line names the frames, e.g. "300 frames in animation/".
+  virtual std::string describe() const = 0;
+};
 
 // Number of steps that --time T asks for at step dt: the fewest that reach T (a relative slack
 // of 1e-9 keeps T = 1, dt = 0.001 at 1000 steps despite rounding).
 long long stepsForTime(double time, double dt);
 
-// Loads the world, runs it, prints the summary line on stdout (errors on stderr, one line each)
-// and returns the exit status.
-int runHeadless(const RunOptions& options);
+// Reads the world of `options` and applies its overrides. On bad input prints one line on
+// stderr and returns false.
+bool loadRun(const RunOptions& options, WorldFile* out);
+
+// Loads the world, runs it (handing its frames to `frames` when given), prints the summary
+// line on stdout (errors on stderr, one line each) and returns the exit status.
+int runHeadless(const RunOptions& options, FrameObserver* frames = nullptr);
 
 }  // namespace jello

@@ -44,8 +44,8 @@ bool isImplemented(Integrator integrator) {
   return integrator == Integrator::Euler || integrator == Integrator::RK4;
 }
 
-void step(const Model& model, Integrator integrator, double dt, State& state, Workspace& ws) {
-  DerivativeFn f = [&model](const double* y, double* dydt) { derivative(model, y, dydt); };
+void step(const Model& model, Integrator integrator, double dt, State& state, Workspace& ws, const Pull* pull) {
+  DerivativeFn f = [&model, pull](const double* y, double* dydt) { derivative(model, y, dydt, pull); };
   switch (integrator) {
     case Integrator::Euler:
       eulerStep(f, state.y, dt, ws);

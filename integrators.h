@@ -29,7 +29,9 @@ void rk4Step(const DerivativeFn& f, std::vector<double>& y, double dt, Workspace
 // True for the integrators this build can run.
 bool isImplemented(Integrator integrator);
 
-// Advances the jello state by one step of `integrator`; the integrator must be implemented.
-void step(const Model& model, Integrator integrator, double dt, State& state, Workspace& ws);
+// Advances the jello state by one step of `integrator` (which must be implemented), with the
+// user's pull when there is one.
+void step(const Model& model, Integrator integrator, double dt, State& state, Workspace& ws,
+          const Pull* pull = nullptr);
 
 }  // namespace jello

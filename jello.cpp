@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "graphics.h"
 #include "headless.h"
 #include "world.h"
 
@@ -24,6 +25,27 @@ const CLI::Validator kFinitePositive(
       return {};
     },
     "> 0");
+
+// "WxH" within the renderer's limits.
+bool parseSize(const std::string& text, int* width, int* height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return false;
+  if (w < jello::kMinPictureSize || h < jello::kMinPictureSize || w > jello::kMaxPictureSize ||
+      h > jello::kMaxPictureSize)
+    return false;
+  *width = w;
+  *height = h;
+  return true;
+}
+
+// "world/rotate.w" -> "rotate"
+std::string worldStem(const std::string& path) {
+  std::size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  std::size_t dot = name.rfind('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
 
 }  // namespace
 
@@ -53,13 +75,18 @@ int main(int argc, char** argv) {
                       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
   app.add_option("--dump", run.dumpPath, "write the final state as a world file");
 
+  jello::PictureOptions pictures;
+  std::string size;
+  auto* framesOption = app.add_option("--frames", pictures.framesDir,
+                                      "save JPEG frames DIR/0000.jpg, 0001.jpg, ... one per drawn frame");
+  app.add_option("--max-frames", pictures.maxFrames, "save at most this many frames (default 300)")
+      ->check(CLI::Range(1, jello::kMaxFrames));
+  auto* sizeOption = app.add_option("--size", size, "picture size WxH (default 640x480)");
+  app.add_flag("--overwrite", pictures.overwrite, "replace the frames a folder already holds");
+
   // Options of later milestones: recognised, so that a user learns they are coming.
   std::string unused;
-  int unusedCount = 0;
   CLI::Option* later[] = {
-      app.add_option("--frames", unused, "save JPEG frames into DIR (not available yet)"),
-      app.add_option("--max-frames", unusedCount, "at most this many frames (not available yet)"),
-      app.add_option("--size", unused, "picture size WxH (not available yet)"),
       app.add_flag("--check", "stability analysis (not available yet)"),
       app.add_option("--report", unused, "error against run time into DIR (not available yet)"),
       app.add_flag("--bench", "benchmark the world (not available yet)"),
@@ -96,8 +123,35 @@ int main(int argc, char** argv) {
   if (*dtOption) run.dt = dt;
   if (*nOption) run.n = n;
 
-  if (!headless) {
-    std::fprintf(stderr, "jello: the viewer is not available yet; running headless\n");
+  if (*sizeOption && !parseSize(size, &pictures.width, &pictures.height)) {
+    std::fprintf(stderr, "jello: --size: expected WxH with sides from %d to %d pixels, got '%s'\n",
+                 jello::kMinPictureSize, jello::kMaxPictureSize, size.c_str());
+    return jello::kExitBadInput;
   }
-  return jello::runHeadless(run);
+
+  if (!headless) {
+    std::string why;
+    if (jello::displayAvailable(&why)) {
+      if (!*framesOption) pictures.framesDir = "animation";
+      pictures.saveFromStart = framesOption->count() > 0;
+      return jello::runViewer(run, pictures);
+    }
+    if (!jello::graphicsBuilt()) {
+      std::fprintf(stderr, "jello: %s; running headless\n", why.c_str());
+      return jello::runHeadless(run);
+    }
+    if (!*framesOption) pictures.framesDir = jello::newFramesDir("animation", worldStem(run.worldPath));
+    std::fprintf(stderr, "jello: no display (%s); running headless, writing frames into %s/\n", why.c_str(),
+                 pictures.framesDir.c_str());
+  }
+  std::unique_ptr<jello::FrameObserver> frames;
+  if (!pictures.framesDir.empty()) {
+    try {
+      frames = jello::makeOffscreenFrames(pictures);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "jello: %s\n", e.what());
+      return jello::kExitBadInput;
+    }
+  }
+  return jello::runHeadless(run, frames.get());
 }

@@ -128,7 +128,9 @@ Vec3 fieldForce(const ForceField& field, Vec3 p) {
   return sum;
 }
 
-void computeForces(const Model& model, const double* p, const double* v, double* force) {
+Vec3 pullForce(const Pull& pull, Vec3 p) { return pull.stiffness * (pull.target - p); }
+
+void computeForces(const Model& model, const double* p, const double* v, double* force, const Pull* pull) {
   const World& w = model.world;
   std::fill(force, force + kNumCoords, 0.0);
   for (const Spring& s : model.springs) {
@@ -144,14 +146,15 @@ void computeForces(const Model& model, const double* p, const double* v, double*
     f += fieldForce(w.field, pq);
     store(force, q, load(force, q) + f);
   }
+  if (pull && pull->point >= 0) store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
 }
 
-void derivative(const Model& model, const double* y, double* dydt) {
+void derivative(const Model& model, const double* y, double* dydt, const Pull* pull) {
   const double* p = y;
   const double* v = y + kNumCoords;
   std::copy(v, v + kNumCoords, dydt);
   double* a = dydt + kNumCoords;
-  computeForces(model, p, v, a);
+  computeForces(model, p, v, a, pull);
   const double mass = model.world.mass;
   for (int c = 0; c < kNumCoords; ++c) a[c] /= mass;
 }

@@ -62,12 +62,23 @@ Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, doubl
 // The force field at p: trilinear inside the box (walls included), zero outside.
 Vec3 fieldForce(const ForceField& field, Vec3 p);
 
+// A user's pull on one point (the viewer's left-drag): a spring of rest length 0 from the point
+// to a target the user moves. point < 0: no pull.
+struct Pull {
+  int point = -1;
+  Vec3 target;           // m
+  double stiffness = 0;  // N/m
+};
+// F = stiffness (target - p) on the pulled point.
+Vec3 pullForce(const Pull& pull, Vec3 p);
+
 // Total force on every point (kNumCoords doubles, xyz-interleaved) for positions p and
-// velocities v.
-void computeForces(const Model& model, const double* p, const double* v, double* force);
+// velocities v, with the user's pull when there is one.
+void computeForces(const Model& model, const double* p, const double* v, double* force,
+                   const Pull* pull = nullptr);
 
 // The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass.
-void derivative(const Model& model, const double* y, double* dydt);
+void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr);
 
 constexpr double kDivergenceRadius = 100.0;  // m: a point further from the origin has diverged
 

@@ -75,15 +75,22 @@ std::string readText(const std::string& path) {
   return text.str();
 }
 
-CommandResult runJello(const std::string& args) {
+void removeTree(const std::string& dir) {
+  if (dir.rfind("/tmp/", 0) == 0 || dir.find("/jello-test-") != std::string::npos) {
+    std::system(("rm -rf '" + dir + "'").c_str());
+  }
+}
+
+CommandResult runJello(const std::string& args, const std::string& cwd, const std::string& env) {
   std::string dir = makeTempDir();
-  std::string command = std::string("'") + JELLO_BINARY + "' " + args + " >" + dir + "/out 2>" + dir + "/err </dev/null";
+  std::string command = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" + JELLO_BINARY + "' " + args +
+                        " >" + dir + "/out 2>" + dir + "/err </dev/null";
   int raw = std::system(command.c_str());
   CommandResult result;
   if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
   result.out = readText(dir + "/out");
   result.err = readText(dir + "/err");
-  std::system(("rm -rf '" + dir + "'").c_str());
+  removeTree(dir);
   return result;
 }
 

@@ -33,8 +33,12 @@ struct CommandResult {
   int status = -1;  // exit status, or -1 if the process did not exit normally
   std::string out, err;
 };
-// Runs the jello binary under test with `args` (a shell-quoted string).
-CommandResult runJello(const std::string& args);
+// Runs the jello binary under test with `args` (a shell-quoted string), in the working
+// directory `cwd` when one is given, with `env` (e.g. "env -u DISPLAY") before it.
+CommandResult runJello(const std::string& args, const std::string& cwd = "", const std::string& env = "");
+
+// Removes a directory tree made by makeTempDir.
+void removeTree(const std::string& dir);
 
 // One malformed world file: its text, and the line and field its error must name.
 struct MalformedCase {

@@ -172,7 +172,7 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   expectSameWorld(f, readWorldFile(path));
   EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0) << "temporary file left behind";
   EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
-  std::system(("rm -rf '" + dir + "'").c_str());
+  test::removeTree(dir);
 }
 
 class MalformedWorld : public ::testing::TestWithParam<test::MalformedCase> {};

@@ -1,0 +1,53 @@
+// frames.h: a numbered sequence of JPEG frames in a folder: DIR/0000.jpg, DIR/0001.jpg, ...
+// Never overwrites frames a user already has unless asked to.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "image.h"
+
+namespace jello {
+
+constexpr int kDefaultMaxFrames = 300;
+constexpr int kFrameDigits = 4;
+constexpr int kMaxFrames = 10000;  // what four digits can number
+
+class FrameError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class FrameSequence {
+ public:
+  FrameSequence(std::string dir, int maxFrames, bool overwrite);
+
+  // Makes the folder (and its parents) when missing. When it already holds frames (NNNN.jpg),
+  // refuses with a FrameError naming it, or, with overwrite, removes them so the new sequence
+  // has no stale tail. Throws FrameError with a one-line message.
+  void open();
+
+  // Writes the next frame; false once maxFrames have been written (nothing is written then).
+  bool save(const Image& image);
+
+  bool full() const { return written_ >= maxFrames_; }
+  int written() const { return written_; }
+  int maxFrames() const { return maxFrames_; }
+  const std::string& dir() const { return dir_; }
+  std::string pathOf(int frame) const;
+
+ private:
+  std::string dir_;
+  int maxFrames_;
+  bool overwrite_;
+  bool opened_ = false;
+  int written_ = 0;
+};
+
+// The number of files named like frames (NNNN.jpg) in dir; 0 when dir does not exist.
+int countFrames(const std::string& dir);
+
+// A folder name under `parent` that does not exist yet: parent/STEM-001, parent/STEM-002, ...
+std::string newFramesDir(const std::string& parent, const std::string& stem);
+
+}  // namespace jello

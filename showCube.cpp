@@ -1,0 +1,467 @@
+// showCube.cpp: the drawing code shared by the window and the offscreen renderer.
+//
+// Every call sets all the GL state it relies on, so that a frame does not depend on what was
+// drawn before it, nor on which of the two contexts draws it.
+
+#include "showCube.h"
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace jello {
+
+namespace {
+
+constexpr float kBackground[3] = {0.5f, 0.5f, 0.5f};
+constexpr float kJelly[3] = {0.86f, 0.18f, 0.24f};
+constexpr double kNear = 0.05, kFar = 100.0;
+constexpr int kLast = kLatticeSize - 1;
+
+// 5x7 dots per glyph, one byte per row, bit 4 the leftmost dot; ASCII 32 (space) to 95 (_).
+constexpr int kGlyphWidth = 5, kGlyphHeight = 7, kGlyphAdvance = 6;
+constexpr unsigned char kFont[64][kGlyphHeight] = {
+    {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}, {0x04, 0x04, 0x04, 0x04, 0x04, 0x00, 0x04},
+    {0x0A, 0x0A, 0x00, 0x00, 0x00, 0x00, 0x00}, {0x0A, 0x0A, 0x1F, 0x0A, 0x1F, 0x0A, 0x0A},
+    {0x04, 0x0F, 0x14, 0x0E, 0x05, 0x1E, 0x04}, {0x18, 0x19, 0x02, 0x04, 0x08, 0x13, 0x03},
+    {0x0C, 0x12, 0x14, 0x08, 0x15, 0x12, 0x0D}, {0x04, 0x04, 0x00, 0x00, 0x00, 0x00, 0x00},
+    {0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02}, {0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08},
+    {0x00, 0x04, 0x15, 0x0E, 0x15, 0x04, 0x00}, {0x00, 0x04, 0x04, 0x1F, 0x04, 0x04, 0x00},
+    {0x00, 0x00, 0x00, 0x00, 0x0C, 0x04, 0x08}, {0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00},
+    {0x00, 0x00, 0x00, 0x00, 0x00, 0x0C, 0x0C}, {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x00},
+    {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}, {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E},
+    {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}, {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E},
+    {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}, {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E},
+    {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}, {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08},
+    {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}, {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C},
+    {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}, {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x04, 0x08},
+    {0x02, 0x04, 0x08, 0x10, 0x08, 0x04, 0x02}, {0x00, 0x00, 0x1F, 0x00, 0x1F, 0x00, 0x00},
+    {0x08, 0x04, 0x02, 0x01, 0x02, 0x04, 0x08}, {0x0E, 0x11, 0x01, 0x02, 0x04, 0x00, 0x04},
+    {0x0E, 0x11, 0x01, 0x0D, 0x15, 0x15, 0x0E}, {0x0E, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11},
+    {0x1E, 0x11, 0x11, 0x1E, 0x11, 0x11, 0x1E}, {0x0E, 0x11, 0x10, 0x10, 0x10, 0x11, 0x0E},
+    {0x1C, 0x12, 0x11, 0x11, 0x11, 0x12, 0x1C}, {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x1F},
+    {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x10}, {0x0E, 0x11, 0x10, 0x17, 0x11, 0x11, 0x0F},
+    {0x11, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11}, {0x0E, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E},
+    {0x07, 0x02, 0x02, 0x02, 0x02, 0x12, 0x0C}, {0x11, 0x12, 0x14, 0x18, 0x14, 0x12, 0x11},
+    {0x10, 0x10, 0x10, 0x10, 0x10, 0x10, 0x1F}, {0x11, 0x1B, 0x15, 0x15, 0x11, 0x11, 0x11},
+    {0x11, 0x11, 0x19, 0x15, 0x13, 0x11, 0x11}, {0x0E, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E},
+    {0x1E, 0x11, 0x11, 0x1E, 0x10, 0x10, 0x10}, {0x0E, 0x11, 0x11, 0x11, 0x15, 0x12, 0x0D},
+    {0x1E, 0x11, 0x11, 0x1E, 0x14, 0x12, 0x11}, {0x0E, 0x11, 0x10, 0x0E, 0x01, 0x11, 0x0E},
+    {0x1F, 0x04, 0x04, 0x04, 0x04, 0x04, 0x04}, {0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E},
+    {0x11, 0x11, 0x11, 0x11, 0x11, 0x0A, 0x04}, {0x11, 0x11, 0x11, 0x15, 0x15, 0x15, 0x0A},
+    {0x11, 0x11, 0x0A, 0x04, 0x0A, 0x11, 0x11}, {0x11, 0x11, 0x11, 0x0A, 0x04, 0x04, 0x04},
+    {0x1F, 0x01, 0x02, 0x04, 0x08, 0x10, 0x1F}, {0x0E, 0x08, 0x08, 0x08, 0x08, 0x08, 0x0E},
+    {0x00, 0x10, 0x08, 0x04, 0x02, 0x01, 0x00}, {0x0E, 0x02, 0x02, 0x02, 0x02, 0x02, 0x0E},
+    {0x04, 0x0A, 0x11, 0x00, 0x00, 0x00, 0x00}, {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1F},
+};
+
+Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+void vertex(Vec3 p) { glVertex3d(p.x, p.y, p.z); }
+
+// Lattice point on face (axis, side) at face coordinates (u, v): index[axis] = side,
+// index[axis+1] = u, index[axis+2] = v (cyclically), so that d/du x d/dv points along +axis.
+int facePoint(int axis, int side, int u, int v) {
+  int index[3];
+  index[axis] = side;
+  index[(axis + 1) % 3] = u;
+  index[(axis + 2) % 3] = v;
+  return pointIndex(index[0], index[1], index[2]);
+}
+
+// The two triangles of every surface quad, wound counter-clockwise seen from outside the
+// cube at rest. Built once: the surface's connectivity never changes.
+const std::vector<std::array<int, 3>>& surfaceTriangles() {
+  static const std::vector<std::array<int, 3>> triangles = [] {
+    std::vector<std::array<int, 3>> t;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side : {0, kLast})
+        for (int u = 0; u < kLast; ++u)
+          for (int v = 0; v < kLast; ++v) {
+            int a = facePoint(axis, side, u, v), b = facePoint(axis, side, u + 1, v);
+            int c = facePoint(axis, side, u + 1, v + 1), d = facePoint(axis, side, u, v + 1);
+            if (side == kLast) {
+              t.push_back({a, b, c});
+              t.push_back({a, c, d});
+            } else {
+              t.push_back({a, c, b});
+              t.push_back({a, d, c});
+            }
+          }
+    return t;
+  }();
+  return triangles;
+}
+
+// 1, 2 or 5 times a power of ten, at least x: a legend scale that does not flicker with every
+// small change of the largest value.
+double niceCeiling(double x) {
+  if (!(x > 0)) return 1;
+  double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * decade >= x * (1 - 1e-12)) return m * decade;
+  return 10 * decade;
+}
+
+Vec3 lerp(Vec3 a, Vec3 b, double t) { return a + t * (b - a); }
+
+// Diverging map for strain in [-1, 1]: blue (compressed), white, red (stretched).
+Vec3 divergingColor(double t) {
+  t = std::clamp(t, -1.0, 1.0);
+  const Vec3 blue{0.15, 0.3, 0.9}, white{0.95, 0.95, 0.95}, red{0.9, 0.12, 0.1};
+  return t < 0 ? lerp(white, blue, -t) : lerp(white, red, t);
+}
+
+// Sequential map for a magnitude in [0, 1]: dark blue, cyan, yellow, red.
+Vec3 sequentialColor(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  const Vec3 stops[] = {{0.1, 0.1, 0.5}, {0.1, 0.75, 0.85}, {0.95, 0.9, 0.2}, {0.85, 0.1, 0.1}};
+  double x = t * 3;
+  int i = std::min(2, static_cast<int>(x));
+  return lerp(stops[i], stops[i + 1], x - i);
+}
+
+struct SurfaceColors {
+  std::vector<Vec3> color;  // per point
+  double scale = 1;         // the value at the end of the legend
+  const char* title = "";
+  bool diverging = false;
+};
+
+SurfaceColors colorsFor(const Model& model, const State& state, Coloring coloring) {
+  SurfaceColors out;
+  out.color.assign(kNumPoints, Vec3{kJelly[0], kJelly[1], kJelly[2]});
+  if (coloring == Coloring::Plain) return out;
+  std::vector<double> value(kNumPoints, 0.0);
+  if (coloring == Coloring::Strain) {
+    // Mean relative stretch of the springs meeting at each point.
+    std::vector<int> count(kNumPoints, 0);
+    for (const Spring& s : model.springs) {
+      double strain = (length(load(state.p(), s.a) - load(state.p(), s.b)) - s.rest) / s.rest;
+      value[s.a] += strain;
+      value[s.b] += strain;
+      ++count[s.a];
+      ++count[s.b];
+    }
+    double largest = 0;
+    for (int q = 0; q < kNumPoints; ++q) {
+      value[q] /= count[q];
+      largest = std::max(largest, std::fabs(value[q]));
+    }
+    out.scale = niceCeiling(std::max(largest, 1e-3));
+    out.title = "STRAIN";
+    out.diverging = true;
+    for (int q = 0; q < kNumPoints; ++q) out.color[q] = divergingColor(value[q] / out.scale);
+  } else {
+    std::vector<double> force(kNumCoords);
+    computeForces(model, state.p(), state.v(), force.data());
+    double largest = 0;
+    for (int q = 0; q < kNumPoints; ++q) {
+      value[q] = length(load(force.data(), q));
+      largest = std::max(largest, value[q]);
+    }
+    out.scale = niceCeiling(std::max(largest, 1e-6));
+    out.title = "FORCE N";
+    for (int q = 0; q < kNumPoints; ++q) out.color[q] = sequentialColor(value[q] / out.scale);
+  }
+  return out;
+}
+
+void setUpCamera(const Camera& camera, int width, int height) {
+  glViewport(0, 0, width, height);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluPerspective(kFieldOfView, static_cast<double>(width) / std::max(1, height), kNear, kFar);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  // Lights are placed in eye coordinates, so the lighting follows the camera.
+  const GLfloat key[] = {-0.4f, 0.6f, 1.0f, 0.0f}, fill[] = {0.6f, -0.2f, 0.6f, 0.0f};
+  glLightfv(GL_LIGHT0, GL_POSITION, key);
+  glLightfv(GL_LIGHT1, GL_POSITION, fill);
+  Vec3 eye = camera.eye();
+  gluLookAt(eye.x, eye.y, eye.z, 0, 0, 0, 0, 0, 1);
+}
+
+void setUpLighting() {
+  const GLfloat keyDiffuse[] = {0.85f, 0.85f, 0.85f, 1}, fillDiffuse[] = {0.3f, 0.3f, 0.35f, 1};
+  const GLfloat specular[] = {0.5f, 0.5f, 0.5f, 1}, ambient[] = {0.25f, 0.25f, 0.25f, 1};
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, keyDiffuse);
+  glLightfv(GL_LIGHT0, GL_SPECULAR, specular);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, fillDiffuse);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  const GLfloat shine[] = {0.3f, 0.3f, 0.3f, 1};
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, shine);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40);
+}
+
+// The 12 edges of the box [-2,2]^3, each as its two ends.
+const std::vector<std::array<Vec3, 2>>& boxEdges() {
+  static const std::vector<std::array<Vec3, 2>> edges = [] {
+    std::vector<std::array<Vec3, 2>> e;
+    const double h = kBoxHalfSize;
+    for (int axis = 0; axis < 3; ++axis)
+      for (double a : {-h, h})
+        for (double b : {-h, h}) {
+          double from[3], to[3];
+          from[axis] = -h;
+          to[axis] = h;
+          from[(axis + 1) % 3] = to[(axis + 1) % 3] = a;
+          from[(axis + 2) % 3] = to[(axis + 2) % 3] = b;
+          e.push_back({Vec3{from[0], from[1], from[2]}, Vec3{to[0], to[1], to[2]}});
+        }
+    return e;
+  }();
+  return edges;
+}
+
+void drawBox() {
+  glDisable(GL_LIGHTING);
+  glColor3f(0.92f, 0.92f, 0.92f);
+  glLineWidth(1.5f);
+  glBegin(GL_LINES);
+  for (const auto& [from, to] : boxEdges()) {
+    vertex(from);
+    vertex(to);
+  }
+  glEnd();
+}
+
+void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe) {
+  const auto& triangles = surfaceTriangles();
+  std::vector<Vec3> normal(kNumPoints);
+  for (const auto& t : triangles) {
+    Vec3 a = load(state.p(), t[0]), b = load(state.p(), t[1]), c = load(state.p(), t[2]);
+    Vec3 n = cross(b - a, c - a);  // area-weighted
+    for (int q : t) normal[q] += n;
+  }
+  for (Vec3& n : normal) {
+    double len;
+    n = direction(n, &len);
+  }
+  glEnable(GL_LIGHTING);
+  glShadeModel(GL_SMOOTH);
+  glPolygonMode(GL_FRONT_AND_BACK, wireframe ? GL_LINE : GL_FILL);
+  glLineWidth(1.0f);
+  glBegin(GL_TRIANGLES);
+  for (const auto& t : triangles)
+    for (int q : t) {
+      glColor3d(colors.color[q].x, colors.color[q].y, colors.color[q].z);
+      glNormal3d(normal[q].x, normal[q].y, normal[q].z);
+      vertex(load(state.p(), q));
+    }
+  glEnd();
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+void drawSprings(const Model& model, const State& state, const DrawOptions& options) {
+  if (!options.structural && !options.shear && !options.bend) return;
+  glDisable(GL_LIGHTING);
+  glLineWidth(1.0f);
+  glBegin(GL_LINES);
+  for (const Spring& s : model.springs) {
+    bool shown = (s.kind == SpringKind::Structural && options.structural) ||
+                 (s.kind == SpringKind::Shear && options.shear) || (s.kind == SpringKind::Bend && options.bend);
+    if (!shown) continue;
+    if (s.kind == SpringKind::Structural) glColor3f(0.2f, 0.9f, 0.95f);
+    if (s.kind == SpringKind::Shear) glColor3f(0.95f, 0.85f, 0.2f);
+    if (s.kind == SpringKind::Bend) glColor3f(0.85f, 0.3f, 0.9f);
+    vertex(load(state.p(), s.a));
+    vertex(load(state.p(), s.b));
+  }
+  glEnd();
+}
+
+// The polygon where the plane cuts the box: its crossings of the box's 12 edges, in order
+// around their centroid.
+std::vector<Vec3> planeInBox(const Plane& plane) {
+  const Vec3 n{plane.a, plane.b, plane.c};
+  std::vector<Vec3> points;
+  for (const auto& [p, q] : boxEdges()) {
+    double sp = dot(n, p) + plane.d, sq = dot(n, q) + plane.d;
+    // sp == sq: the edge lies in the plane (its ends come from the edges that meet it there)
+    // or parallel to it.
+    if (sp * sq > 0 || sp == sq) continue;
+    Vec3 x = lerp(p, q, sp / (sp - sq));
+    // A corner on the plane is found by each of its three edges: keep it once.
+    bool seen = std::any_of(points.begin(), points.end(), [&](Vec3 y) { return length(x - y) < 1e-9; });
+    if (!seen) points.push_back(x);
+  }
+  if (points.size() < 3) return {};
+  Vec3 centre;
+  for (Vec3 p : points) centre += p;
+  centre = (1.0 / points.size()) * centre;
+  double len;
+  Vec3 unitNormal = direction(n, &len);
+  Vec3 e1 = direction(points[0] - centre, &len);
+  Vec3 e2 = cross(unitNormal, e1);
+  std::sort(points.begin(), points.end(), [&](Vec3 p, Vec3 q) {
+    return std::atan2(dot(p - centre, e2), dot(p - centre, e1)) < std::atan2(dot(q - centre, e2), dot(q - centre, e1));
+  });
+  return points;
+}
+
+void drawPlane(const Plane& plane) {
+  std::vector<Vec3> polygon = planeInBox(plane);
+  if (polygon.empty()) return;
+  glDisable(GL_LIGHTING);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glColor4f(0.3f, 0.55f, 0.95f, 0.35f);
+  glBegin(GL_POLYGON);
+  for (Vec3 p : polygon) vertex(p);
+  glEnd();
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glColor3f(0.25f, 0.45f, 0.85f);
+  glBegin(GL_LINE_LOOP);
+  for (Vec3 p : polygon) vertex(p);
+  glEnd();
+}
+
+void drawPull(const State& state, const Pull& pull) {
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+  glColor3f(1.0f, 1.0f, 0.3f);
+  glLineWidth(2.0f);
+  glBegin(GL_LINES);
+  vertex(load(state.p(), pull.point));
+  vertex(pull.target);
+  glEnd();
+  glEnable(GL_DEPTH_TEST);
+}
+
+void beginPixels(int width, int height) {
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glLoadIdentity();
+  glOrtho(0, width, height, 0, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  glLoadIdentity();
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+}
+
+void endPixels() {
+  glEnable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPopMatrix();
+}
+
+std::string formatValue(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+void drawLegend(const SurfaceColors& colors, int width, int height) {
+  const int barWidth = 14, barHeight = std::min(160, height / 3), scale = 2;
+  const int x = width - barWidth - 70, y = height - barHeight - 20;
+  beginPixels(width, height);
+  glBegin(GL_QUADS);
+  const int steps = 32;
+  for (int i = 0; i < steps; ++i) {
+    double t0 = 1 - double(i) / steps, t1 = 1 - double(i + 1) / steps;  // top is the largest
+    Vec3 c0 = colors.diverging ? divergingColor(2 * t0 - 1) : sequentialColor(t0);
+    Vec3 c1 = colors.diverging ? divergingColor(2 * t1 - 1) : sequentialColor(t1);
+    double y0 = y + barHeight * double(i) / steps, y1 = y + barHeight * double(i + 1) / steps;
+    glColor3d(c0.x, c0.y, c0.z);
+    glVertex2d(x, y0);
+    glVertex2d(x + barWidth, y0);
+    glColor3d(c1.x, c1.y, c1.z);
+    glVertex2d(x + barWidth, y1);
+    glVertex2d(x, y1);
+  }
+  glEnd();
+  endPixels();
+  std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
+  std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
+  drawText(colors.title, x - 20, y - 22, width, height, scale, 1, 1, 1);
+  drawText(top, x + barWidth + 6, y - 2, width, height, scale, 1, 1, 1);
+  drawText(bottom, x + barWidth + 6, y + barHeight - 12, width, height, scale, 1, 1, 1);
+}
+
+}  // namespace
+
+Vec3 Camera::eye() const {
+  return {radius * std::cos(phi) * std::cos(theta), radius * std::sin(phi) * std::cos(theta),
+          radius * std::sin(theta)};
+}
+
+const char* coloringName(Coloring coloring) {
+  switch (coloring) {
+    case Coloring::Strain:
+      return "strain";
+    case Coloring::Force:
+      return "force";
+    default:
+      return "plain";
+  }
+}
+
+void drawScene(const Model& model, const State& state, const Camera& camera, const DrawOptions& options,
+               int width, int height, const Pull* pull) {
+  glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_NORMALIZE);
+  setUpLighting();
+  setUpCamera(camera, width, height);
+
+  drawBox();
+  SurfaceColors colors = colorsFor(model, state, options.coloring);
+  drawSurface(state, colors, options.wireframe);
+  drawSprings(model, state, options);
+  if (model.world.hasPlane) drawPlane(model.world.plane);
+  if (pull && pull->point >= 0) drawPull(state, *pull);
+  if (options.coloring != Coloring::Plain) drawLegend(colors, width, height);
+}
+
+int textWidth(const std::string& text, int scale) {
+  return static_cast<int>(text.size()) * kGlyphAdvance * scale;
+}
+
+void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r, float g, float b) {
+  beginPixels(width, height);
+  // A dark shadow one dot down and right keeps the text readable on any background.
+  for (int pass = 0; pass < 2; ++pass) {
+    int offset = pass == 0 ? scale : 0;
+    if (pass == 0) glColor3f(0.1f, 0.1f, 0.1f);
+    else glColor3f(r, g, b);
+    glBegin(GL_QUADS);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      int c = std::toupper(static_cast<unsigned char>(text[i]));
+      if (c < 32 || c > 95) c = '?';
+      const unsigned char* glyph = kFont[c - 32];
+      for (int row = 0; row < kGlyphHeight; ++row)
+        for (int col = 0; col < kGlyphWidth; ++col) {
+          if (!(glyph[row] & (0x10 >> col))) continue;
+          int px = x + offset + (static_cast<int>(i) * kGlyphAdvance + col) * scale;
+          int py = y + offset + row * scale;
+          glVertex2i(px, py);
+          glVertex2i(px + scale, py);
+          glVertex2i(px + scale, py + scale);
+          glVertex2i(px, py + scale);
+        }
+    }
+    glEnd();
+  }
+  endPixels();
+}
+
+}  // namespace jello

@@ -1,0 +1,50 @@
+// showCube.h: drawing the jello world with legacy fixed-function OpenGL, the one drawing code
+// that serves the GLUT window and the offscreen (OSMesa) renderer, so that a headless frame is
+// the picture a user would have seen. Needs a current GL context; knows nothing of GLUT.
+//
+// World units are metres; +z is up. Screen coordinates for text are pixels from the top-left.
+#pragma once
+
+#include <string>
+
+#include "physics.h"
+
+namespace jello {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFieldOfView = 72.0;  // degrees, vertical: the whole box at the default camera
+
+// A camera on a sphere around the origin, looking at it, +z up (SPEC.md section 5).
+// theta is the elevation above the xy-plane, phi the azimuth from +x (radians).
+struct Camera {
+  double radius = 6;
+  double theta = kPi / 6;
+  double phi = kPi / 6;
+  Vec3 eye() const;
+};
+
+// How the cube's surface is coloured; `c` in the viewer cycles through them.
+enum class Coloring { Plain, Strain, Force };
+const char* coloringName(Coloring coloring);
+
+struct DrawOptions {
+  bool wireframe = false;
+  bool structural = false, shear = false, bend = false;  // springs drawn as lines
+  Coloring coloring = Coloring::Plain;
+};
+
+// Clears and draws the whole scene into a width x height viewport: the box, the cube's lit,
+// smooth-shaded surface (or its wireframe), the springs asked for, the inclined plane clipped
+// to the box, the colour legend when the surface is coloured, and the pull line when a point
+// is pulled.
+void drawScene(const Model& model, const State& state, const Camera& camera,
+               const DrawOptions& options, int width, int height, const Pull* pull = nullptr);
+
+// Text in a small built-in bitmap font (upper case, digits, punctuation; lower case is drawn
+// as upper case), its top-left corner at pixel (x, y), `scale` pixels per font dot.
+void drawText(const std::string& text, int x, int y, int width, int height, int scale,
+              float r, float g, float b);
+// Width in pixels of `text` drawn at `scale`.
+int textWidth(const std::string& text, int scale);
+
+}  // namespace jello

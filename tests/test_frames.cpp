@@ -1,0 +1,242 @@
+// Pictures: the off-screen renderer, JPEG files, frame sequences, and --frames from the
+// command line (SPEC.md sections 4 and 5). Built only where GL and OSMesa are.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "frames.h"
+#include "image.h"
+#include "offscreen.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+using test::dataPath;
+
+struct Rgb {
+  int r, g, b;
+};
+
+Rgb pixel(const Image& image, int x, int y) {
+  const std::uint8_t* p = &image.rgb[(static_cast<std::size_t>(y) * image.width + x) * 3];
+  return {p[0], p[1], p[2]};
+}
+
+bool isBackground(Rgb c) { return std::abs(c.r - 128) <= 6 && std::abs(c.g - 128) <= 6 && std::abs(c.b - 128) <= 6; }
+
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+  EXPECT_EQ(a.rgb.size(), b.rgb.size());
+  double sum = 0;
+  for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
+  return sum / a.rgb.size();
+}
+
+Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+// Where a pinhole camera on the sphere (SPEC section 5: looking at the origin, +z up) puts a
+// point, in pixels from the top-left; computed here from first principles, not through GL.
+void projectToPixel(const Camera& camera, Vec3 point, int width, int height, double* x, double* y) {
+  double len;
+  Vec3 eye = camera.eye();
+  Vec3 forward = direction(-eye, &len);
+  Vec3 right = direction(cross(forward, {0, 0, 1}), &len);
+  Vec3 up = cross(right, forward);
+  Vec3 d = point - eye;
+  double f = 1 / std::tan(kFieldOfView * kPi / 360);
+  double aspect = double(width) / height;
+  double ndcX = f / aspect * dot(d, right) / dot(d, forward);
+  double ndcY = f * dot(d, up) / dot(d, forward);
+  *x = (ndcX + 1) / 2 * width;
+  *y = (1 - ndcY) / 2 * height;
+}
+
+Vec3 centroid(const State& s) {
+  Vec3 c;
+  for (int q = 0; q < kNumPoints; ++q) c += load(s.p(), q);
+  return (1.0 / kNumPoints) * c;
+}
+
+TEST(Offscreen, FrameOfAKnownStateIsAGreyPictureWithTheCubeWhereTheCameraPutsIt) {
+  WorldFile f = readWorldFile(dataPath("still.w"));
+  Model model = makeModel(f.world, f.state);
+  OffscreenRenderer renderer(320, 240);
+  std::string dir = test::makeTempDir();
+  writeJpeg(dir + "/frame.jpg", renderer.render(model, f.state, Camera{}, DrawOptions{}));
+  Image image = readJpeg(dir + "/frame.jpg");
+  test::removeTree(dir);
+  ASSERT_EQ(image.width, 320);
+  ASSERT_EQ(image.height, 240);
+  EXPECT_TRUE(isBackground(pixel(image, 3, 236)));
+  EXPECT_TRUE(isBackground(pixel(image, 316, 120)));
+
+  for (Camera camera : {Camera{}, Camera{8, 0.3, -2.0}, Camera{5, -0.4, 2.5}}) {
+    Image view = renderer.render(model, f.state, camera, DrawOptions{});
+    double x, y;
+    projectToPixel(camera, centroid(f.state), 320, 240, &x, &y);
+    ASSERT_TRUE(x >= 0 && x < 320 && y >= 0 && y < 240) << x << "," << y;
+    Rgb c = pixel(view, int(x), int(y));
+    EXPECT_FALSE(isBackground(c)) << "camera phi=" << camera.phi << ": " << c.r << " " << c.g << " " << c.b;
+    EXPECT_GT(c.r, c.g + 40) << "the jelly is red";
+    // A point well outside the cube's image is background.
+    projectToPixel(camera, centroid(f.state) + Vec3{0, 0, 1.5}, 320, 240, &x, &y);
+    EXPECT_TRUE(isBackground(pixel(view, int(x), int(y)))) << "camera phi=" << camera.phi;
+  }
+}
+
+TEST(Offscreen, ColouringsAndSpringsChangeThePicture) {
+  WorldFile f = readWorldFile(dataPath("jello.w"));  // starts stretched
+  Model model = makeModel(f.world, f.state);
+  OffscreenRenderer renderer(320, 240);
+  Image plain = renderer.render(model, f.state, Camera{}, DrawOptions{});
+  DrawOptions options;
+  for (Coloring coloring : {Coloring::Strain, Coloring::Force}) {
+    options.coloring = coloring;
+    EXPECT_GT(meanAbsoluteDifference(plain, renderer.render(model, f.state, Camera{}, options)), 0.5)
+        << coloringName(coloring);
+  }
+  options = DrawOptions{};
+  options.structural = options.shear = options.bend = true;
+  options.wireframe = true;
+  EXPECT_GT(meanAbsoluteDifference(plain, renderer.render(model, f.state, Camera{}, options)), 0.5);
+}
+
+TEST(Offscreen, RefusesSizesOutOfRange) {
+  EXPECT_THROW(OffscreenRenderer(8, 480), std::runtime_error);
+  EXPECT_THROW(OffscreenRenderer(640, 100000), std::runtime_error);
+}
+
+TEST(Jpeg, RoundTripKeepsSizeAndPixelsClose) {
+  Image image;
+  image.width = 64;
+  image.height = 48;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) image.rgb.insert(image.rgb.end(), {std::uint8_t(x * 4), std::uint8_t(y * 5), 90});
+  std::string dir = test::makeTempDir();
+  writeJpeg(dir + "/a.jpg", image);
+  Image back = readJpeg(dir + "/a.jpg");
+  EXPECT_EQ(back.width, 64);
+  EXPECT_EQ(back.height, 48);
+  EXPECT_LT(meanAbsoluteDifference(image, back), 3);
+  EXPECT_THROW(writeJpeg(dir + "/missing/a.jpg", image), std::runtime_error);
+  test::writeText(dir + "/not.jpg", "plain text");
+  EXPECT_THROW(readJpeg(dir + "/not.jpg"), std::runtime_error);
+  test::removeTree(dir);
+}
+
+Image tiny(std::uint8_t shade) {
+  Image image;
+  image.width = image.height = 16;
+  image.rgb.assign(16 * 16 * 3, shade);
+  return image;
+}
+
+TEST(FrameSequence, NumbersFromZeroAndStopsAtTheMost) {
+  std::string dir = test::makeTempDir() ;
+  FrameSequence frames(dir + "/a/b/", 3, false);
+  for (int i = 0; i < 5; ++i) frames.save(tiny(10));
+  EXPECT_EQ(frames.written(), 3);
+  EXPECT_TRUE(frames.full());
+  EXPECT_EQ(countFrames(dir + "/a/b"), 3);
+  for (const char* name : {"0000.jpg", "0001.jpg", "0002.jpg"}) {
+    EXPECT_NO_THROW(readJpeg(dir + "/a/b/" + name)) << name;
+  }
+  test::removeTree(dir);
+}
+
+TEST(FrameSequence, NeverOverwritesUnlessAskedAndThenLeavesNoStaleTail) {
+  std::string dir = test::makeTempDir();
+  FrameSequence first(dir, 5, false);
+  for (int i = 0; i < 5; ++i) first.save(tiny(200));
+  std::string before = test::readText(dir + "/0004.jpg");
+  FrameSequence second(dir, 5, false);
+  EXPECT_THROW(second.save(tiny(10)), FrameError);
+  EXPECT_EQ(test::readText(dir + "/0004.jpg"), before);
+  EXPECT_EQ(countFrames(dir), 5);
+  FrameSequence third(dir, 2, true);
+  third.save(tiny(10));
+  third.save(tiny(10));
+  EXPECT_EQ(countFrames(dir), 2) << "frames 0002-0004 of the old sequence were left behind";
+  EXPECT_LT(readJpeg(dir + "/0000.jpg").rgb[0], 50);
+  test::writeText(dir + "/notes.txt", "mine");
+  FrameSequence fourth(dir, 2, true);
+  fourth.open();
+  EXPECT_EQ(test::readText(dir + "/notes.txt"), "mine") << "only frames are replaced";
+  test::removeTree(dir);
+}
+
+TEST(FrameSequence, NewFolderNamesDoNotExistYet) {
+  std::string dir = test::makeTempDir();
+  EXPECT_EQ(newFramesDir(dir, "rotate"), dir + "/rotate-001");
+  ::mkdir((dir + "/rotate-001").c_str(), 0777);
+  EXPECT_EQ(newFramesDir(dir, "rotate"), dir + "/rotate-002");
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, HeadlessFramesAreNumberedCappedAndNeverOverwritten) {
+  std::string dir = test::makeTempDir();
+  std::string frames = dir + "/out frames";
+  std::string args = "--headless --steps 30 --max-frames 5 --frames '" + frames + "' '" + dataPath("rotate.w") + "'";
+  test::CommandResult r = test::runJello(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("5 frames in " + frames + "/"), std::string::npos) << r.out;
+  EXPECT_EQ(countFrames(frames), 5);
+  Image first = readJpeg(frames + "/0000.jpg");
+  EXPECT_EQ(first.width, 640);
+  EXPECT_EQ(first.height, 480);
+  std::string before = test::readText(frames + "/0003.jpg");
+
+  test::CommandResult again = test::runJello(args);
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+  EXPECT_EQ(std::count(again.err.begin(), again.err.end(), '\n'), 1) << again.err;
+  EXPECT_EQ(again.out, "");
+  EXPECT_EQ(test::readText(frames + "/0003.jpg"), before);
+
+  test::CommandResult replaced = test::runJello("--overwrite --size 320x240 " + args);
+  EXPECT_EQ(replaced.status, 0) << replaced.err;
+  EXPECT_EQ(readJpeg(frames + "/0000.jpg").width, 320);
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, FramesOfRotateChangeOverTime) {
+  std::string dir = test::makeTempDir();
+  test::CommandResult r =
+      test::runJello("--headless --n 300 --steps 900 --frames '" + dir + "' '" + dataPath("rotate.w") + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(countFrames(dir), 4);  // steps 0, 300, 600, 900
+  Image a = readJpeg(dir + "/0000.jpg"), b = readJpeg(dir + "/0001.jpg"), c = readJpeg(dir + "/0003.jpg");
+  EXPECT_GT(meanAbsoluteDifference(a, b), 0.2);
+  EXPECT_GT(meanAbsoluteDifference(b, c), 0.2);
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, WithoutADisplayItRunsHeadlessIntoANewFolderItNames) {
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("animation/rotate-001"), std::string::npos) << r.err;
+  EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 3);
+  test::CommandResult again = test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(countFrames(dir + "/animation/rotate-002"), 3);
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, BadSizeIsRefused) {
+  for (const char* size : {"640", "0x480", "640x480x3", "axb", "20000x20"}) {
+    test::CommandResult r = test::runJello(std::string("--headless --size ") + size + " --frames /tmp/never '" +
+                                           dataPath("rotate.w") + "'");
+    EXPECT_EQ(r.status, 2) << size;
+    EXPECT_NE(r.err.find("--size"), std::string::npos) << r.err;
+  }
+  struct stat info;
+  EXPECT_NE(::stat("/tmp/never", &info), 0);
+}
+
+}  // namespace
+}  // namespace jello
