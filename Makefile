@@ -4,7 +4,7 @@ SANITIZE_DIR ?= build-sanitize
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
 
-.PHONY: all deps run test test-sanitize clean
+.PHONY: all deps run test test-sanitize animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -17,8 +17,22 @@ $(BUILD_DIR)/Makefile: CMakeLists.txt tests/CMakeLists.txt
 deps:
 	@scripts/install-deps
 
+# The window where a display exists; otherwise frames, in a new folder that jello names.
 run: deps all
-	./jello --headless $(WORLD)
+	./jello $(WORLD)
+
+# 300 frames of world/rotate.w in animation/, and an animated GIF of them where ffmpeg or
+# ImageMagick is installed.
+animation: all
+	./jello --headless --overwrite --frames animation $(WORLD)
+	@if command -v ffmpeg >/dev/null; then \
+	  ffmpeg -y -loglevel error -framerate 30 -i animation/%04d.jpg \
+	    -vf "fps=15,scale=320:-1:flags=lanczos,split[a][b];[a]palettegen[p];[b][p]paletteuse" animation/jello.gif && \
+	  echo "animation/jello.gif"; \
+	elif convert -version 2>/dev/null | grep -q ImageMagick; then \
+	  convert -delay 7 -loop 0 $$(ls animation/*.jpg | awk 'NR % 2 == 1') -resize 320x240 -layers Optimize animation/jello.gif && \
+	  echo "animation/jello.gif"; \
+	else echo "no ffmpeg or ImageMagick: frames only"; fi
 
 test: deps all
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
@@ -27,7 +41,8 @@ test: deps all
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_SANITIZE=ON
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
-	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS)
+	cd $(SANITIZE_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+		ctest --output-on-failure -j $(JOBS)
 
 clean:
 	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) jello

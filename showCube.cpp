@@ -368,8 +368,11 @@ std::string formatValue(double v) {
 }
 
 void drawLegend(const SurfaceColors& colors, int width, int height) {
-  const int barWidth = 14, barHeight = std::min(160, height / 3), scale = 2;
-  const int x = width - barWidth - 70, y = height - barHeight - 20;
+  const int barWidth = 14, barHeight = std::min(160, height / 3), scale = 2, margin = 12, gap = 6;
+  std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
+  std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
+  int labels = std::max({textWidth(top, scale), textWidth(bottom, scale), textWidth(colors.title, scale) - barWidth});
+  const int x = width - margin - labels - gap - barWidth, y = height - barHeight - 20;
   beginPixels(width, height);
   glBegin(GL_QUADS);
   const int steps = 32;
@@ -387,11 +390,9 @@ void drawLegend(const SurfaceColors& colors, int width, int height) {
   }
   glEnd();
   endPixels();
-  std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
-  std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
-  drawText(colors.title, x - 20, y - 22, width, height, scale, 1, 1, 1);
-  drawText(top, x + barWidth + 6, y - 2, width, height, scale, 1, 1, 1);
-  drawText(bottom, x + barWidth + 6, y + barHeight - 12, width, height, scale, 1, 1, 1);
+  drawText(colors.title, x, y - 22, width, height, scale, 1, 1, 1);
+  drawText(top, x + barWidth + gap, y - 2, width, height, scale, 1, 1, 1);
+  drawText(bottom, x + barWidth + gap, y + barHeight - 12, width, height, scale, 1, 1, 1);
 }
 
 }  // namespace

@@ -49,10 +49,13 @@ TEST(Cli, TimeIsConvertedToSteps) {
 }
 
 TEST(Cli, WithoutADisplayItSaysSoAndRunsHeadless) {
-  test::CommandResult r = runJello("--steps 5 '" + dataPath("rotate.w") + "'");
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = runJello("--steps 5 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("DISPLAY is not set"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("steps=5 "), std::string::npos) << r.out;
+  test::removeTree(dir);
 }
 
 TEST(Cli, DumpHoldsTheFinalStateBitForBitAndTheOverrides) {
