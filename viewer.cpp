@@ -30,6 +30,7 @@ constexpr int kGrabPixels = 40;                // how near the cursor a grabbed 
 constexpr double kMinPullStiffness = 100;      // N/m
 constexpr double kMessageSeconds = 4;
 constexpr double kMaxCatchUpSeconds = 0.1;     // real-time pacing never steps more than this at once
+constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
 constexpr int kEscape = 27;
 
 double seconds(Clock::time_point from, Clock::time_point to) {
@@ -171,7 +172,10 @@ void advance() {
   }
   v.lastGood = v.state;
   const Pull* pull = v.pull.point >= 0 ? &v.pull : nullptr;
+  const Clock::time_point start = Clock::now();
   for (int i = 0; i < count; ++i) {
+    // A machine too slow for real time runs as fast as it can, but stays responsive.
+    if (v.realTime && (i & 15) == 15 && seconds(start, Clock::now()) > kFrameBudgetSeconds) break;
     step(v.model, v.integrator, v.dt, v.state, v.workspace, pull);
     ++v.steps;
     ++v.rateSteps;
