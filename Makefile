@@ -8,7 +8,7 @@ WORLD ?= world/rotate.w
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
-	cp -f $(BUILD_DIR)/jello ./jello
+	cp -f $(BUILD_DIR)/jello $(BUILD_DIR)/createWorld .
 
 $(BUILD_DIR)/Makefile: CMakeLists.txt tests/CMakeLists.txt
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
@@ -45,4 +45,4 @@ test-sanitize: deps
 		ctest --output-on-failure -j $(JOBS)
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) jello
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) jello createWorld

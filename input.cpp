@@ -315,11 +315,15 @@ std::string formatWorld(const World& w, const State& state) {
   return out;
 }
 
-void writeWorldFile(const std::string& path, const World& world, const State& state) {
+void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite) {
   std::string text = formatWorld(world, state);
   std::string temp = path + ".tmp.XXXXXX";
   int fd = ::mkstemp(temp.data());
   if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+  auto fail = [&](int error, const std::string& what) {
+    ::unlink(temp.c_str());
+    throw std::runtime_error(path + ": " + what + (error ? std::string(": ") + std::strerror(error) : ""));
+  };
   std::size_t done = 0;
   while (done < text.size()) {
     ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
@@ -327,8 +331,7 @@ void writeWorldFile(const std::string& path, const World& world, const State& st
     if (wrote <= 0) {
       int error = errno;
       ::close(fd);
-      ::unlink(temp.c_str());
-      throw std::runtime_error(path + ": cannot write: " + std::strerror(error));
+      fail(error, "cannot write");
     }
     done += static_cast<std::size_t>(wrote);
   }
@@ -336,11 +339,17 @@ void writeWorldFile(const std::string& path, const World& world, const State& st
   mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
-  if (::close(fd) != 0 || ::rename(temp.c_str(), path.c_str()) != 0) {
-    int error = errno;
-    ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": cannot write: " + std::strerror(error));
+  if (::close(fd) != 0) fail(errno, "cannot write");
+  if (overwrite) {
+    if (::rename(temp.c_str(), path.c_str()) != 0) fail(errno, "cannot write");
+    return;
   }
+  // link() refuses an existing name: no window between looking and writing.
+  if (::link(temp.c_str(), path.c_str()) != 0) {
+    int error = errno;
+    fail(error == EEXIST ? 0 : error, error == EEXIST ? "already exists" : "cannot write");
+  }
+  ::unlink(temp.c_str());
 }
 
 }  // namespace jello

@@ -92,7 +92,9 @@ WorldFile readWorldFile(const std::string& path);
 // bit-identical values.
 std::string formatWorld(const World& world, const State& state);
 // Writes formatWorld to `path` whole: a temporary file beside it, then a rename, so a reader
-// never sees half a file. Throws std::runtime_error with a one-line message on failure.
-void writeWorldFile(const std::string& path, const World& world, const State& state);
+// never sees half a file. Without `overwrite`, an existing `path` is left untouched and the
+// write fails (the check and the write are one atomic step). Throws std::runtime_error with a
+// one-line message on failure.
+void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite = true);
 
 }  // namespace jello

@@ -1,0 +1,289 @@
+// createWorld.cpp: a command-line world builder, so that a world is made without editing C.
+//
+//   createWorld [options] -o FILE     builds a world file
+//   createWorld --describe WORLD      says what a world is
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "describe.h"
+#include "physics.h"
+#include "worldbuilder.h"
+
+namespace {
+
+using jello::Vec3;
+
+constexpr int kExitOk = 0;
+constexpr int kExitBadInput = 2;
+constexpr const char* kVersion = "createWorld 0.1.0";
+
+const CLI::Validator kFinite(
+    [](std::string& text) -> std::string {
+      double value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value)) return "must be a finite number, got " + text;
+      return {};
+    },
+    "finite");
+
+const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      double value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0)) {
+        return "must be a finite number > 0, got " + text;
+      }
+      return {};
+    },
+    "> 0");
+
+const CLI::Validator kNonNegative(
+    [](std::string& text) -> std::string {
+      double value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0) {
+        return "must be a finite number >= 0, got " + text;
+      }
+      return {};
+    },
+    ">= 0");
+
+Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "createWorld: %s\n", message.c_str());
+  return kExitBadInput;
+}
+
+void warn(const std::string& message) { std::fprintf(stderr, "createWorld: warning: %s\n", message.c_str()); }
+
+// Warnings for a world that will run, but perhaps not as its maker meant.
+void warnAbout(const jello::World& world, const jello::State& state) {
+  int outside = 0;
+  for (int c = 0; c < jello::kNumCoords; ++c)
+    if (std::fabs(state.p()[c]) > jello::kBoxHalfSize) ++outside;
+  if (outside) warn("the cube starts partly outside the box [-2,2]^3: the walls will push it in");
+  if (world.hasPlane) {
+    jello::Model model = jello::makeModel(world, state);
+    const jello::Plane& pl = world.plane;
+    int across = 0;
+    for (int q = 0; q < jello::kNumPoints; ++q) {
+      Vec3 p = jello::load(state.p(), q);
+      if ((pl.a * p.x + pl.b * p.y + pl.c * p.z + pl.d) * model.planeSide < 0) ++across;
+    }
+    if (across) {
+      warn("the cube starts across the inclined plane (" + std::to_string(across) +
+           " points on the far side of its centroid's side): the plane will push them back");
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "createWorld: builds a jello world file (SPEC section 1). Start from the defaults (the course's "
+      "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
+      "what the options say.",
+      "createWorld"};
+  app.set_version_flag("--version", kVersion);
+
+  std::string output, describe, preset, from;
+  bool force = false;
+  app.add_option("-o,--output", output, "the world file to write")->type_name("FILE");
+  auto* describeOption = app.add_option("--describe", describe, "print what WORLD is, and exit")->type_name("WORLD");
+  app.add_flag("--force", force, "replace FILE when it exists");
+  auto* presetOption = app.add_option("--preset", preset, "start from a course world")->type_name("NAME")
+                           ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
+  auto* fromOption = app.add_option("--from", from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
+  presetOption->excludes(fromOption);
+
+  std::string integrator;
+  double dt = 0, kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0, mass = 0;
+  int n = 0;
+  std::vector<double> plane;
+  auto* integratorOption = app.add_option("--integrator", integrator, "EULER, RK4, ... (any case)")->type_name("NAME")->group("Parameters");
+  auto* dtOption = app.add_option("--dt", dt, "time step, s")->type_name("DT")->check(kPositive)->group("Parameters");
+  auto* nOption = app.add_option("--n", n, "steps per drawn frame")->type_name("N")
+                      ->check(CLI::Range(1, std::numeric_limits<int>::max()))
+                      ->group("Parameters");
+  auto* kElasticOption = app.add_option("--k-elastic", kElastic, "spring stiffness, N/m")->type_name("K")->check(kNonNegative)->group("Parameters");
+  auto* dElasticOption = app.add_option("--d-elastic", dElastic, "spring damping, N s/m")->type_name("D")->check(kNonNegative)->group("Parameters");
+  auto* kCollisionOption =
+      app.add_option("--k-collision", kCollision, "collision stiffness, N/m")->type_name("K")->check(kNonNegative)->group("Parameters");
+  auto* dCollisionOption =
+      app.add_option("--d-collision", dCollision, "collision damping, N s/m")->type_name("D")->check(kNonNegative)->group("Parameters");
+  auto* massOption = app.add_option("--mass", mass, "mass of each of the 512 points, kg")->type_name("KG")->check(kPositive)->group("Parameters");
+  auto* planeOption = app.add_option("--plane", plane, "inclined plane a x + b y + c z + d = 0")->type_name("A B C D")
+                          ->expected(4)
+                          ->check(kFinite)
+                          ->group("Parameters");
+  auto* noPlaneOption = app.add_flag("--no-plane", "no inclined plane")->group("Parameters");
+  planeOption->excludes(noPlaneOption);
+
+  int resolution = 0;
+  std::vector<double> uniform;
+  double swirl = 0, radial = 0;
+  std::string expression, fieldFrom;
+  auto* resolutionOption = app.add_option("--field-resolution", resolution, "field grid R (R^3 nodes; 0: no field)")->type_name("R")
+                               ->check(CLI::Range(0, jello::kMaxResolution))
+                               ->group("Force field");
+  auto* uniformOption =
+      app.add_option("--field-uniform", uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->check(kFinite)->group("Force field");
+  auto* swirlOption =
+      app.add_option("--field-swirl", swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->check(kFinite)->group("Force field");
+  auto* radialOption =
+      app.add_option("--field-radial", radial, "radial: F = S (x, y, z)")->type_name("S")->check(kFinite)->group("Force field");
+  auto* expressionOption =
+      app.add_option("--field-expr", expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")->type_name("'FX; FY; FZ'")->group("Force field");
+  auto* fieldFromOption = app.add_option("--field-from", fieldFrom, "copy the field of WORLD")->type_name("WORLD")->group("Force field");
+  std::vector<CLI::Option*> fieldSources = {uniformOption, swirlOption, radialOption, expressionOption, fieldFromOption};
+  for (CLI::Option* a : fieldSources)
+    for (CLI::Option* b : fieldSources)
+      if (a != b) a->excludes(b);
+  fieldFromOption->excludes(resolutionOption);
+
+  double cubeSize = 1;
+  std::vector<double> center, rotation, velocity, spin, skew;
+  auto* sizeOption = app.add_option("--cube-size", cubeSize, "edge of the cube at rest, m (default 1)")->type_name("L")
+                         ->check(kPositive)
+                         ->group("Initial state");
+  auto* centerOption = app.add_option("--center", center, "centre of the cube X Y Z, m (default: corner at the origin)")->type_name("X Y Z")
+                           ->expected(3)
+                           ->check(kFinite)
+                           ->group("Initial state");
+  auto* rotateOption = app.add_option("--rotate", rotation, "turn the cube about x, then y, then z, degrees")->type_name("AX AY AZ")
+                           ->expected(3)
+                           ->check(kFinite)
+                           ->group("Initial state");
+  auto* velocityOption = app.add_option("--velocity", velocity, "velocity of every point VX VY VZ, m/s")->type_name("VX VY VZ")
+                             ->expected(3)
+                             ->check(kFinite)
+                             ->group("Initial state");
+  auto* spinOption = app.add_option("--spin", spin, "rigid angular velocity WX WY WZ about the centre, rad/s")->type_name("WX WY WZ")
+                         ->expected(3)
+                         ->check(kFinite)
+                         ->group("Initial state");
+  auto* skewOption = app.add_option("--skew-corner", skew, "displace corner p[7][7][7] by DX DY DZ, m")->type_name("DX DY DZ")
+                         ->expected(3)
+                         ->check(kFinite)
+                         ->group("Initial state");
+  sizeOption->excludes(fromOption);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see createWorld --help)");
+  }
+
+  try {
+    if (*describeOption) {
+      if (!output.empty()) return fail("--describe reads a world; it does not go with -o");
+      jello::WorldFile file = jello::readWorldFile(describe);
+      std::printf("%s\n%s", describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
+      return kExitOk;
+    }
+    if (output.empty()) return fail("say where to write the world: -o FILE (see createWorld --help)");
+
+    jello::Recipe recipe = jello::defaultRecipe();
+    if (*presetOption) recipe = jello::coursePreset(preset);
+    if (*fromOption) {
+      jello::WorldFile base = jello::readWorldFile(from);
+      recipe.world = base.world;
+      recipe.field.source = jello::FieldRecipe::Source::Given;
+      recipe.field.given = base.world.field;
+      recipe.state.from = base.state;
+    }
+
+    jello::World& w = recipe.world;
+    if (*integratorOption && !jello::parseIntegratorName(integrator, &w.integrator)) {
+      return fail("--integrator: unknown integrator '" + integrator + "', expected " + jello::integratorNameList());
+    }
+    if (*dtOption) w.dt = dt;
+    if (*nOption) w.n = n;
+    if (*kElasticOption) w.kElastic = kElastic;
+    if (*dElasticOption) w.dElastic = dElastic;
+    if (*kCollisionOption) w.kCollision = kCollision;
+    if (*dCollisionOption) w.dCollision = dCollision;
+    if (*massOption) w.mass = mass;
+    if (*noPlaneOption) w.hasPlane = false;
+    if (*planeOption) {
+      if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return fail("--plane: the normal (a, b, c) must not be zero");
+      w.hasPlane = true;
+      w.plane = {plane[0], plane[1], plane[2], plane[3]};
+    }
+
+    using Source = jello::FieldRecipe::Source;
+    jello::FieldRecipe& field = recipe.field;
+    bool newSource = false;
+    for (CLI::Option* option : fieldSources) newSource = newSource || option->count() > 0;
+    if (newSource && field.source == Source::Given) field.resolution = 30;  // a --from world's field is replaced
+    if (*resolutionOption) {
+      if (field.source == Source::Given && !newSource) {
+        return fail("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
+      }
+      field.resolution = resolution;
+      if (field.source == Source::None) field.source = Source::Uniform;  // a zero field, as the course writes
+    }
+    if (*uniformOption) {
+      field.source = Source::Uniform;
+      field.uniform = toVec3(uniform);
+    }
+    if (*swirlOption) {
+      field.source = Source::Swirl;
+      field.strength = swirl;
+    }
+    if (*radialOption) {
+      field.source = Source::Radial;
+      field.strength = radial;
+    }
+    if (*expressionOption) {
+      field.source = Source::Expression;
+      field.expression = expression;
+    }
+    if (*fieldFromOption) {
+      field.source = Source::Given;
+      field.given = jello::readWorldFile(fieldFrom).world.field;
+    }
+
+    jello::StateRecipe& state = recipe.state;
+    if (*sizeOption) state.cubeSize = cubeSize;
+    if (*centerOption) state.center = toVec3(center);
+    if (*rotateOption) state.rotateDegrees = toVec3(rotation);
+    if (*velocityOption) state.velocity = toVec3(velocity);
+    if (*spinOption) state.spin = toVec3(spin);
+    if (*skewOption) state.skewCorner = toVec3(skew);
+
+    w.field = jello::buildField(field);
+    jello::State initial = jello::buildState(state);
+
+    // What is written must read back: the reader is the judge of a world.
+    jello::parseWorld(jello::formatWorld(w, initial), output);
+    warnAbout(w, initial);
+    try {
+      jello::writeWorldFile(output, w, initial, force);
+    } catch (const std::runtime_error& e) {
+      std::string message = e.what();
+      if (message.find("already exists") != std::string::npos) message += "; add --force to replace it";
+      return fail(message);
+    }
+    std::string fieldSummary = "no field";
+    if (w.field.resolution > 0) {
+      fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) + " field (R=" +
+                     std::to_string(w.field.resolution) + ")";
+    }
+    std::printf("wrote %s: %s dt=%g, %s, %s\n", output.c_str(), jello::integratorName(w.integrator), w.dt,
+                fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
+    return kExitOk;
+  } catch (const jello::WorldFileError& e) {
+    return fail(e.what());
+  } catch (const jello::RecipeError& e) {
+    return fail(e.what());
+  }
+}

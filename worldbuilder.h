@@ -1,0 +1,67 @@
+// worldbuilder.h: making world files from a recipe (createWorld), and the course's five worlds
+// as presets.
+//
+// Units: metres, seconds, kilograms, newtons; angles in degrees; angular velocity in rad/s.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "vec3.h"
+#include "world.h"
+
+namespace jello {
+
+// How the force field is made. Node positions are those of SPEC section 1.
+struct FieldRecipe {
+  enum class Source { None, Uniform, Swirl, Radial, Expression, Given };
+  Source source = Source::None;
+  int resolution = 30;  // the course's
+  Vec3 uniform;         // N, Uniform
+  double strength = 0;  // N/m: Swirl F = s (-y, x, 0), Radial F = s (x, y, z)
+  std::string expression;  // Expression: "fx; fy; fz" in x, y, z (muparser syntax)
+  ForceField given;        // Given: this field as it is (e.g. copied from another world)
+};
+
+// How the initial state is made: the lattice of a cube of edge cubeSize, its corner p[0][0][0]
+// at the origin (the course's [0,1]^3) unless centred elsewhere, then rotated about its centre,
+// its corner p[7][7][7] displaced, given a velocity and a spin about its centre. With `from`,
+// the lattice is replaced by that state and the same steps act on it (about its centroid).
+struct StateRecipe {
+  std::optional<State> from;
+  double cubeSize = 1;           // m
+  std::optional<Vec3> center;    // m
+  Vec3 rotateDegrees;            // about x, then y, then z
+  Vec3 skewCorner;               // m, added to p[7][7][7]
+  std::optional<Vec3> velocity;  // m/s, every point (with `from`, unset keeps its velocities)
+  Vec3 spin;                     // rad/s, rigid rotation about the centre
+};
+
+struct Recipe {
+  World world;
+  FieldRecipe field;
+  StateRecipe state;
+};
+
+// A recipe that cannot be built; what() is one line.
+class RecipeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The defaults of createWorld: the course's springs and mass, RK4 at dt = 1 ms, a cube on
+// [0,1]^3 at rest, no plane, no field.
+Recipe defaultRecipe();
+
+// The course world `name` (jello, rotate, moveLeft, skewedCorner, gravity) as a recipe, with
+// exact values (1/512 kg, positions i/7) where the course files hold six decimals.
+// Throws RecipeError for an unknown name.
+Recipe coursePreset(const std::string& name);
+
+// The field of a recipe. Throws RecipeError (bad expression: the library's message).
+ForceField buildField(const FieldRecipe& recipe);
+// The initial state of a recipe.
+State buildState(const StateRecipe& recipe);
+
+}  // namespace jello
