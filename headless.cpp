@@ -88,11 +88,6 @@ bool loadRun(const RunOptions& options, WorldFile* out) {
   if (options.integrator) world.integrator = *options.integrator;
   if (options.dt) world.dt = *options.dt;
   if (options.n) world.n = *options.n;
-  if (!isImplemented(world.integrator)) {
-    std::fprintf(stderr, "jello: integrator %s is not available yet (EULER and RK4 are)\n",
-                 integratorName(world.integrator));
-    return false;
-  }
   return true;
 }
 
@@ -115,7 +110,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
 
   const Model model = makeModel(world, file.state);
   State& state = file.state;
-  Workspace workspace;
+  Stepper stepper(world.integrator, options.tolerances);
   Progress progress(steps, frames);
   Clock::time_point start = Clock::now();
   try {
@@ -128,7 +123,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     return kExitBadInput;
   }
   for (long long s = 1; s <= steps; ++s) {
-    step(model, world.integrator, world.dt, state, workspace);
+    stepper.step(model, state, world.dt);
     int bad = findDivergedPoint(state);
     if (bad >= 0) {
       Vec3 p = load(state.p(), bad), v = load(state.v(), bad);

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "integrators.h"
 #include "physics.h"
 #include "world.h"
 
@@ -18,6 +19,7 @@ struct RunOptions {
   std::optional<double> dt;  // s
   std::optional<int> n;
   std::string dumpPath;  // empty: no dump
+  Tolerances tolerances;  // RK45's error control
 };
 
 // Exit statuses of SPEC.md section 4.

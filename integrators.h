@@ -1,37 +1,78 @@
-// integrators.h: time steppers (SPEC.md section 2, "Time stepping").
+// integrators.h: time steppers (SPEC.md sections 2 and 3).
 //
-// An integrator sees only the derivative dy/dt = f(y) of a flat state vector y; it knows
-// nothing of springs or walls. For the jello, y = [p; v] (State::y) and f is derivative().
-// One step advances time by dt (seconds).
+// An integrator sees only an ODE system: the derivative dy/dt = f(y) of a flat state vector y
+// and, for IMPLICIT, the Jacobian of the accelerations. For the jello, y = [p; v] (State::y):
+// the integrators that treat positions and velocities differently (SYMPLECTIC, VERLET,
+// IMPLICIT) take the first half of y as positions and the second as velocities. One step
+// advances time by dt (seconds); RK45 takes as many adaptive substeps as it needs within it.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include "jacobian.h"
 #include "physics.h"
 #include "world.h"
 
 namespace jello {
 
-// f(y, dydt): writes the derivative of y into dydt; both hold the same number of doubles.
-using DerivativeFn = std::function<void(const double* y, double* dydt)>;
-
-// Buffers reused from step to step, so that a step allocates nothing once they are sized.
-struct Workspace {
-  std::vector<double> k1, k2, k3, k4, temp;
+struct OdeSystem {
+  // Writes f(y) into dydt; both hold the same number of doubles.
+  std::function<void(const double* y, double* dydt)> derivative;
+  // For y = [p; v]: the Jacobians of the accelerations with respect to p and to v. Needed by
+  // IMPLICIT only.
+  std::function<void(const double* y, AccelerationJacobian& jacobian)> jacobian;
 };
 
-// Explicit Euler: y += dt f(y). For the jello that is p += dt v_old, v += dt a(p_old, v_old).
-void eulerStep(const DerivativeFn& f, std::vector<double>& y, double dt, Workspace& ws);
-// Classic fourth-order Runge-Kutta.
-void rk4Step(const DerivativeFn& f, std::vector<double>& y, double dt, Workspace& ws);
+// The jello's system: derivative() and accelerationJacobian() of `model`, with `pull` if any.
+OdeSystem jelloSystem(const Model& model, const Pull* pull = nullptr);
 
-// True for the integrators this build can run.
-bool isImplemented(Integrator integrator);
+// Error control of RK45: a substep is accepted when its estimated local error, per component,
+// is within atol + rtol * |y| in the root-mean-square sense.
+struct Tolerances {
+  double rtol = 1e-6;
+  double atol = 1e-9;
+};
 
-// Advances the jello state by one step of `integrator` (which must be implemented), with the
-// user's pull when there is one.
-void step(const Model& model, Integrator integrator, double dt, State& state, Workspace& ws,
-          const Pull* pull = nullptr);
+// What the steps cost.
+struct StepStats {
+  long long steps = 0;        // accepted (sub)steps
+  long long rejected = 0;     // RK45's rejected substeps
+  long long evaluations = 0;  // derivative evaluations
+  long long jacobians = 0;    // Jacobian assemblies (IMPLICIT)
+  long long newtonIterations = 0;
+};
+
+// Derivative evaluations one step costs (RK45: per attempted substep; IMPLICIT: per Newton
+// iteration, plus one Jacobian each).
+int evaluationsPerStep(Integrator integrator);
+// The theoretical order of convergence.
+int orderOf(Integrator integrator);
+
+// Advances a state one step at a time with one integrator, reusing its buffers: a step
+// allocates nothing once they are sized (IMPLICIT's sparse solver excepted).
+class Stepper {
+ public:
+  explicit Stepper(Integrator integrator, Tolerances tolerances = {});
+  ~Stepper();
+  Stepper(Stepper&&) noexcept;
+  Stepper& operator=(Stepper&&) noexcept;
+
+  void step(const OdeSystem& system, std::vector<double>& y, double dt);
+  // The jello: one step of the model, with the user's pull if any.
+  void step(const Model& model, State& state, double dt, const Pull* pull = nullptr);
+
+  Integrator integrator() const { return integrator_; }
+  const StepStats& stats() const { return stats_; }
+
+ private:
+  struct Buffers;
+  Integrator integrator_;
+  Tolerances tolerances_;
+  StepStats stats_;
+  std::unique_ptr<Buffers> buffers_;
+  double rk45Step_ = 0;  // RK45's last successful substep, the first guess of the next step
+};
 
 }  // namespace jello

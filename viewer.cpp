@@ -4,7 +4,6 @@
 
 #include <GL/freeglut.h>
 #include <GL/glu.h>
-#include <X11/Xlib.h>
 
 #include <chrono>
 #include <cmath>
@@ -41,7 +40,7 @@ struct Viewer {
   Model model;
   State state;
   State lastGood;  // the state before the current frame's steps, shown if they diverge
-  Workspace workspace;
+  Stepper stepper;
   Integrator integrator;
   double dt;
   int n;
@@ -71,10 +70,11 @@ struct Viewer {
   std::string message;
   Clock::time_point messageTime;
 
-  Viewer(const WorldFile& file, const PictureOptions& pictures)
+  Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
         state(file.state),
         lastGood(file.state),
+        stepper(file.world.integrator, run.tolerances),
         integrator(file.world.integrator),
         dt(file.world.dt),
         n(file.world.n),
@@ -176,7 +176,7 @@ void advance() {
   for (int i = 0; i < count; ++i) {
     // A machine too slow for real time runs as fast as it can, but stays responsive.
     if (v.realTime && (i & 15) == 15 && seconds(start, Clock::now()) > kFrameBudgetSeconds) break;
-    step(v.model, v.integrator, v.dt, v.state, v.workspace, pull);
+    v.stepper.step(v.model, v.state, v.dt, pull);
     ++v.steps;
     ++v.rateSteps;
     int bad = findDivergedPoint(v.state);
@@ -338,25 +338,10 @@ void motion(int x, int y) {
 
 bool graphicsBuilt() { return true; }
 
-bool displayAvailable(std::string* why) {
-  const char* name = std::getenv("DISPLAY");
-  if (!name || !*name) {
-    *why = "DISPLAY is not set";
-    return false;
-  }
-  Display* display = XOpenDisplay(nullptr);
-  if (!display) {
-    *why = std::string("cannot open display ") + name;
-    return false;
-  }
-  XCloseDisplay(display);
-  return true;
-}
-
 int runViewer(const RunOptions& run, const PictureOptions& pictures) {
   WorldFile file;
   if (!loadRun(run, &file)) return kExitBadInput;
-  Viewer v(file, pictures);
+  Viewer v(file, run, pictures);
 
   int argc = 1;
   char name[] = "jello";

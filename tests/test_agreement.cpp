@@ -24,8 +24,8 @@ TEST_P(Agreement, TwoThousandStepsMatchTheReference) {
   WorldFile f = readWorldFile(test::dataPath(c.world));
   Model model = makeModel(f.world, f.state);
   const double dt = c.dt > 0 ? c.dt : f.world.dt;
-  Workspace ws;
-  for (int s = 0; s < 2000; ++s) step(model, c.integrator, dt, f.state, ws);
+  Stepper stepper(c.integrator);
+  for (int s = 0; s < 2000; ++s) stepper.step(model, f.state, dt);
   std::vector<double> expected = test::readExpectedPositions(c.expected);
   double rms = test::rmsDistance(f.state.p(), expected.data());
   std::printf("%s: RMS distance to the reference %.3e m\n", c.expected, rms);

@@ -1,0 +1,161 @@
+// jacobian.cpp: analytic derivatives of the force terms, assembled as sparse matrices.
+
+#include "jacobian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace jello {
+
+namespace {
+
+Eigen::Vector3d col(Vec3 a) { return {a.x, a.y, a.z}; }
+
+// The shared pattern and the index of every block in it.
+void buildPattern(const Model& model, AccelerationJacobian* out) {
+  std::vector<Eigen::Triplet<double>> entries;
+  auto block = [&](int row, int column) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) entries.emplace_back(3 * row + i, 3 * column + j, 0.0);
+  };
+  std::vector<std::pair<int, int>> blocks;
+  for (const Spring& s : model.springs)
+    for (auto [row, column] : {std::pair{s.a, s.a}, {s.a, s.b}, {s.b, s.a}, {s.b, s.b}}) blocks.push_back({row, column});
+  for (int q = 0; q < kNumPoints; ++q) blocks.push_back({q, q});
+  for (auto [row, column] : blocks) block(row, column);
+  SparseMatrix pattern(kNumCoords, kNumCoords);
+  pattern.setFromTriplets(entries.begin(), entries.end());
+  pattern.makeCompressed();
+  out->dAdp = pattern;
+  out->dAdv = pattern;
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  auto find = [&](int row, int column) {
+    const int* at = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
+    return static_cast<int>(at - inner);
+  };
+  out->blockStart.clear();
+  for (auto [row, column] : blocks) {
+    std::array<int, 3> start;
+    for (int j = 0; j < 3; ++j) start[j] = find(3 * row, 3 * column + j);
+    out->blockStart.push_back(start);
+  }
+  out->diagonal.resize(kNumCoords);
+  for (int i = 0; i < kNumCoords; ++i) out->diagonal[i] = find(i, i);
+}
+
+void addBlock(double* values, const std::array<int, 3>& start, const Mat3& block, double scale) {
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) values[start[j] + i] += scale * block(i, j);
+}
+
+}  // namespace
+
+void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Mat3* dFdL, Mat3* dFdw) {
+  double len;
+  Eigen::Vector3d u = col(direction(L, &len));
+  if (len == 0) {
+    dFdL->setZero();
+    dFdw->setZero();
+    return;
+  }
+  Eigen::Vector3d w = col(relVel);
+  Mat3 uu = u * u.transpose();
+  Mat3 P = Mat3::Identity() - uu;
+  *dFdL = -k * (uu + (1 - rest / len) * P) - (d / len) * (u * (P * w).transpose() + u.dot(w) * P);
+  *dFdw = -d * uu;
+}
+
+void wallJacobian(Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
+  dFdp->setZero();
+  dFdv->setZero();
+  const double coord[3] = {p.x, p.y, p.z};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::fabs(coord[axis]) <= kBoxHalfSize) continue;
+    (*dFdp)(axis, axis) -= k;
+    (*dFdv)(axis, axis) -= d;
+  }
+}
+
+void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
+  Vec3 normal{plane.a, plane.b, plane.c};
+  double s = dot(normal, p) + plane.d;
+  if (!(s * side < 0)) {
+    dFdp->setZero();
+    dFdv->setZero();
+    return;
+  }
+  Eigen::Vector3d n = col(normal);
+  Mat3 nn = n * n.transpose() / n.squaredNorm();
+  *dFdp = -k * nn;
+  *dFdv = -d * nn;
+}
+
+Mat3 fieldJacobian(const ForceField& field, Vec3 p) {
+  Mat3 J = Mat3::Zero();
+  const int r = field.resolution;
+  if (r < 2 || std::fabs(p.x) > kBoxHalfSize || std::fabs(p.y) > kBoxHalfSize || std::fabs(p.z) > kBoxHalfSize)
+    return J;
+  const double coord[3] = {p.x, p.y, p.z};
+  const double perMetre = (r - 1) / (2 * kBoxHalfSize);  // dt/dx of the cell coordinate
+  int cell[3];
+  double t[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    double g = (coord[axis] + kBoxHalfSize) * (r - 1) / (2 * kBoxHalfSize);
+    cell[axis] = std::clamp(static_cast<int>(std::floor(g)), 0, r - 2);
+    t[axis] = g - cell[axis];
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    const int bit[3] = {(corner >> 2) & 1, (corner >> 1) & 1, corner & 1};
+    double factor[3], slope[3];
+    for (int a = 0; a < 3; ++a) {
+      factor[a] = bit[a] ? t[a] : 1 - t[a];
+      slope[a] = bit[a] ? perMetre : -perMetre;
+    }
+    std::size_t node = (static_cast<std::size_t>(cell[0] + bit[0]) * r + (cell[1] + bit[1])) * r + (cell[2] + bit[2]);
+    Eigen::Vector3d f(field.forces[3 * node], field.forces[3 * node + 1], field.forces[3 * node + 2]);
+    Eigen::Vector3d dw(slope[0] * factor[1] * factor[2], factor[0] * slope[1] * factor[2],
+                       factor[0] * factor[1] * slope[2]);
+    J += f * dw.transpose();
+  }
+  return J;
+}
+
+void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
+                          AccelerationJacobian* out) {
+  if (out->blockStart.size() != 4 * model.springs.size() + kNumPoints) buildPattern(model, out);
+  const World& w = model.world;
+  const double perMass = 1.0 / w.mass;
+  double* dp = out->dAdp.valuePtr();
+  double* dv = out->dAdv.valuePtr();
+  std::fill(dp, dp + out->dAdp.nonZeros(), 0.0);
+  std::fill(dv, dv + out->dAdv.nonZeros(), 0.0);
+  std::size_t slot = 0;
+  Mat3 dFdL, dFdw;
+  for (const Spring& s : model.springs) {
+    springJacobian(load(p, s.a) - load(p, s.b), load(v, s.a) - load(v, s.b), w.kElastic, w.dElastic, s.rest, &dFdL,
+                   &dFdw);
+    for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
+      addBlock(dp, out->blockStart[slot], dFdL, sign * perMass);
+      addBlock(dv, out->blockStart[slot], dFdw, sign * perMass);
+      ++slot;
+    }
+  }
+  Mat3 wallP, wallV, planeP, planeV;
+  for (int q = 0; q < kNumPoints; ++q, ++slot) {
+    Vec3 pq = load(p, q);
+    wallJacobian(pq, w.kCollision, w.dCollision, &wallP, &wallV);
+    Mat3 blockP = wallP + fieldJacobian(w.field, pq), blockV = wallV;
+    if (w.hasPlane) {
+      planeJacobian(w.plane, model.planeSide, pq, w.kCollision, w.dCollision, &planeP, &planeV);
+      blockP += planeP;
+      blockV += planeV;
+    }
+    if (pull && pull->point == q) blockP -= pull->stiffness * Mat3::Identity();
+    addBlock(dp, out->blockStart[slot], blockP, perMass);
+    addBlock(dv, out->blockStart[slot], blockV, perMass);
+  }
+}
+
+}  // namespace jello
