@@ -151,6 +151,14 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
               integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
               steps > 0 ? wall * 1e6 / steps : 0.0);
+  const StepStats& stats = stepper.stats();
+  if (world.integrator == Integrator::RK45) {
+    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps, stats.rejected,
+                stats.evaluations);
+  }
+  if (world.integrator == Integrator::Implicit) {
+    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations, stats.evaluations + stats.jacobians);
+  }
   if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
   std::printf("\n");
   std::fflush(stdout);

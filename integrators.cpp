@@ -28,6 +28,10 @@ constexpr double kA[kStages][kStages] = {
 constexpr double kErrorWeights[kStages] = {71.0 / 57600,  0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
                                            22.0 / 525, -1.0 / 40};
 constexpr double kSafety = 0.9, kMinShrink = 0.2, kMaxGrowth = 5.0;
+// A PI step-size controller (Gustafsson; the exponents of Hairer's DOPRI5): the last accepted
+// error damps the oscillation of the step at the stability limit of a stiff world, where a
+// plain controller alternates between too long (rejected) and too short.
+constexpr double kErrorExponent = 0.17, kPreviousErrorExponent = 0.04, kSmallestPreviousError = 1e-4;
 
 // Newton's iterations of IMPLICIT: stop when the update is this small against the velocities,
 // or after this many.
@@ -202,8 +206,12 @@ void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
           ++stats_.steps;
           break;
         }
-        double factor = norm == 0 ? kMaxGrowth : std::clamp(kSafety * std::pow(norm, -0.2), kMinShrink, kMaxGrowth);
+        double factor =
+            norm == 0 ? kMaxGrowth
+                      : std::clamp(kSafety * std::pow(norm, -kErrorExponent) * std::pow(rk45Error_, kPreviousErrorExponent),
+                                   kMinShrink, kMaxGrowth);
         if (norm <= 1) {
+          rk45Error_ = std::max(norm, kSmallestPreviousError);
           y.swap(b.next);
           std::swap(b.k[0], b.k[kStages - 1]);  // first same as last
           t = last ? dt : t + h;

@@ -72,7 +72,8 @@ class Stepper {
   Tolerances tolerances_;
   StepStats stats_;
   std::unique_ptr<Buffers> buffers_;
-  double rk45Step_ = 0;  // RK45's last successful substep, the first guess of the next step
+  double rk45Step_ = 0;   // RK45's last successful substep, the first guess of the next step
+  double rk45Error_ = 1;  // RK45's last accepted error norm, for the step-size controller
 };
 
 }  // namespace jello

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "graphics.h"
 #include "headless.h"
+#include "report.h"
 #include "world.h"
 
 namespace {
@@ -69,7 +71,7 @@ int main(int argc, char** argv) {
                           ->check(CLI::Range(0LL, std::numeric_limits<long long>::max()));
   auto* timeOption = app.add_option("--time", time, "simulated seconds to run headless")->check(kFinitePositive);
   stepsOption->excludes(timeOption);
-  auto* integratorOption = app.add_option("--integrator", integrator, "EULER or RK4, any case (overrides the world file)");
+  auto* integratorOption = app.add_option("--integrator", integrator, "EULER, RK4, MIDPOINT, SYMPLECTIC, VERLET, RK45 or IMPLICIT, any case (overrides the world file)");
   auto* dtOption = app.add_option("--dt", dt, "time step in seconds (overrides the world file)")->check(kFinitePositive);
   auto* nOption = app.add_option("--n", n, "steps per drawn frame (overrides the world file)")
                       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
@@ -82,13 +84,24 @@ int main(int argc, char** argv) {
   app.add_option("--max-frames", pictures.maxFrames, "save at most this many frames (default 300)")
       ->check(CLI::Range(1, jello::kMaxFrames));
   auto* sizeOption = app.add_option("--size", size, "picture size WxH (default 640x480)");
-  app.add_flag("--overwrite", pictures.overwrite, "replace the frames a folder already holds");
+  app.add_flag("--overwrite", pictures.overwrite, "replace the frames (or the report) a folder already holds");
+
+  jello::ReportOptions report;
+  std::string integratorList;
+  auto* reportOption =
+      app.add_option("--report", report.dir, "error against run time for the world into DIR (CSV, plot, summary), then exit")
+          ->type_name("DIR");
+  auto* integratorsOption =
+      app.add_option("--integrators", integratorList, "with --report: the integrators to study, e.g. EULER,RK4 (default all)")
+          ->type_name("LIST");
+  app.add_option("--tolerance", report.visualTolerance, "with --report: the visual tolerance, m RMS (default 1e-4)")
+      ->check(kFinitePositive);
+  app.add_option("--rtol", run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->check(kFinitePositive);
+  app.add_option("--atol", run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->check(kFinitePositive);
 
   // Options of later milestones: recognised, so that a user learns they are coming.
-  std::string unused;
   CLI::Option* later[] = {
       app.add_flag("--check", "stability analysis (not available yet)"),
-      app.add_option("--report", unused, "error against run time into DIR (not available yet)"),
       app.add_flag("--bench", "benchmark the world (not available yet)"),
   };
 
@@ -122,6 +135,30 @@ int main(int argc, char** argv) {
   if (*timeOption) run.time = time;
   if (*dtOption) run.dt = dt;
   if (*nOption) run.n = n;
+
+  if (*reportOption) {
+    if (*stepsOption || *framesOption) {
+      std::fprintf(stderr, "jello: --report runs to --time T (default 1 s); it takes no --steps or --frames\n");
+      return jello::kExitBadInput;
+    }
+    if (*timeOption) report.time = time;
+    report.overwrite = pictures.overwrite;
+    std::stringstream names(integratorList);
+    for (std::string name; std::getline(names, name, ',');) {
+      jello::Integrator chosen;
+      if (!jello::parseIntegratorName(name, &chosen)) {
+        std::fprintf(stderr, "jello: --integrators: unknown integrator '%s', expected %s\n", name.c_str(),
+                     jello::integratorNameList().c_str());
+        return jello::kExitBadInput;
+      }
+      report.integrators.push_back(chosen);
+    }
+    return jello::runReport(run, report);
+  }
+  if (*integratorsOption) {
+    std::fprintf(stderr, "jello: --integrators goes with --report\n");
+    return jello::kExitBadInput;
+  }
 
   if (*sizeOption && !parseSize(size, &pictures.width, &pictures.height)) {
     std::fprintf(stderr, "jello: --size: expected WxH with sides from %d to %d pixels, got '%s'\n",
