@@ -170,6 +170,8 @@ int main(int argc, char** argv) {
                          ->expected(3)
                          ->check(kFinite)
                          ->group("Initial state");
+  bool insideOut = false;
+  app.add_flag("--inside-out", insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
   sizeOption->excludes(fromOption);
 
   try {
@@ -259,6 +261,7 @@ int main(int argc, char** argv) {
     if (*velocityOption) state.velocity = toVec3(velocity);
     if (*spinOption) state.spin = toVec3(spin);
     if (*skewOption) state.skewCorner = toVec3(skew);
+    state.insideOut = insideOut;
 
     w.field = jello::buildField(field);
     jello::State initial = jello::buildState(state);

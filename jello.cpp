@@ -10,6 +10,7 @@
 #include "graphics.h"
 #include "headless.h"
 #include "report.h"
+#include "stability.h"
 #include "world.h"
 
 namespace {
@@ -99,9 +100,13 @@ int main(int argc, char** argv) {
   app.add_option("--rtol", run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->check(kFinitePositive);
   app.add_option("--atol", run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->check(kFinitePositive);
 
+  bool json = false;
+  auto* checkOption = app.add_flag("--check", "stability analysis: the largest stable dt of every integrator, and "
+                                              "a verdict on the world's own; then exit");
+  app.add_flag("--json", json, "with --check: print the analysis as one JSON object");
+
   // Options of later milestones: recognised, so that a user learns they are coming.
   CLI::Option* later[] = {
-      app.add_flag("--check", "stability analysis (not available yet)"),
       app.add_flag("--bench", "benchmark the world (not available yet)"),
   };
 
@@ -135,6 +140,17 @@ int main(int argc, char** argv) {
   if (*timeOption) run.time = time;
   if (*dtOption) run.dt = dt;
   if (*nOption) run.n = n;
+
+  if (*checkOption) {
+    jello::WorldFile file;
+    if (!jello::loadRun(run, &file)) return jello::kExitBadInput;
+    jello::StabilityReport analysis = jello::analyseStability(file.world, file.state);
+    std::fputs((json ? jello::stabilityJson(run.worldPath, file.world, analysis)
+                     : jello::stabilityText(run.worldPath, file.world, analysis))
+                   .c_str(),
+               stdout);
+    return jello::kExitOk;
+  }
 
   if (*reportOption) {
     if (*stepsOption || *framesOption) {

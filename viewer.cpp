@@ -12,7 +12,9 @@
 #include <string>
 
 #include "graphics.h"
+#include "guard.h"
 #include "integrators.h"
+#include "stability.h"
 #include "showCube.h"
 
 namespace jello {
@@ -38,6 +40,7 @@ double seconds(Clock::time_point from, Clock::time_point to) {
 
 struct Viewer {
   Model model;
+  State initial;
   State state;
   State lastGood;  // the state before the current frame's steps, shown if they diverge
   Stepper stepper;
@@ -52,6 +55,7 @@ struct Viewer {
   int width, height;
   bool paused = false, diverged = false, realTime = false, saving = false;
   FrameSequence frames;
+  DivergenceGuard guard{model, initial};
 
   // Mouse: right-drag turns the camera, left-drag pulls the nearest surface point.
   int lastX = 0, lastY = 0;
@@ -72,6 +76,7 @@ struct Viewer {
 
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
+        initial(file.state),
         state(file.state),
         lastGood(file.state),
         stepper(file.world.integrator, run.tolerances),
@@ -179,16 +184,18 @@ void advance() {
     v.stepper.step(v.model, v.state, v.dt, pull);
     ++v.steps;
     ++v.rateSteps;
-    int bad = findDivergedPoint(v.state);
-    if (bad >= 0) {
-      char text[200];
-      std::snprintf(text, sizeof text, "diverged at step %lld (t=%.6g s) with %s dt=%g: paused; try a smaller --dt",
-                    v.steps, v.time(), integratorName(v.integrator), v.dt);
+    // The energy test only without a pull, which adds energy of its own.
+    bool lastOfFrame = i + 1 == count;
+    std::string wrong = findDivergedPoint(v.state) >= 0 || (lastOfFrame && !pull) ? v.guard.check(v.state, v.time()) : "";
+    if (!wrong.empty()) {
+      World world = v.model.world;
+      world.dt = v.dt;
+      world.integrator = v.integrator;
+      v.say(divergenceMessage(world, v.initial, v.steps, v.time(), wrong) + " (paused)");
       v.state = v.lastGood;
       v.steps -= i + 1;
       v.diverged = true;
       v.paused = true;
-      v.say(text);
       break;
     }
   }
@@ -317,8 +324,12 @@ void mouse(int button, int buttonState, int x, int y) {
   v.lastY = y;
   if (button == GLUT_RIGHT_BUTTON) v.rotating = buttonState == GLUT_DOWN;
   if (button == GLUT_LEFT_BUTTON) {
-    if (buttonState == GLUT_DOWN) grab(v, x, y);
-    else v.pull.point = -1;
+    if (buttonState == GLUT_DOWN) {
+      grab(v, x, y);
+    } else if (v.pull.point >= 0) {
+      v.pull.point = -1;
+      v.guard.restart(v.state, v.time());  // the pull's work is the world's energy now
+    }
   }
 }
 

@@ -198,12 +198,13 @@ State buildState(const StateRecipe& recipe) {
   const bool turned = recipe.rotateDegrees.x != 0 || recipe.rotateDegrees.y != 0 || recipe.rotateDegrees.z != 0;
   for (int q = 0; q < kNumPoints; ++q) {
     Vec3 r = load(s.p(), q) - centre;
+    if (recipe.insideOut) r = -r;
     if (turned) {
       r = rotate(r, recipe.rotateDegrees);
       store(s.v(), q, rotate(load(s.v(), q), recipe.rotateDegrees));
     }
     // Unmoved points keep their exact coordinates (no round trip through the centre).
-    if (turned || recipe.center) store(s.p(), q, target + r);
+    if (turned || recipe.center || recipe.insideOut) store(s.p(), q, target + r);
   }
   // Each step below touches the state only when asked to, so that a world taken --from another
   // comes back bit for bit (even its signed zeros) when nothing else is asked.

@@ -33,6 +33,7 @@ struct StateRecipe {
   double cubeSize = 1;           // m
   std::optional<Vec3> center;    // m
   Vec3 rotateDegrees;            // about x, then y, then z
+  bool insideOut = false;        // reflected through its centre: every face faces in
   Vec3 skewCorner;               // m, added to p[7][7][7]
   std::optional<Vec3> velocity;  // m/s, every point (with `from`, unset keeps its velocities)
   Vec3 spin;                     // rad/s, rigid rotation about the centre

@@ -133,8 +133,7 @@ TEST_P(CliUsage, ExitsTwoWithOneLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliUsage,
-    ::testing::Values(UsageCase{"check", "--check", "--check is not available yet"},
-                      UsageCase{"bench", "--bench", "--bench is not available yet"},
+    ::testing::Values(                      UsageCase{"bench", "--bench", "--bench is not available yet"},
                       UsageCase{"unknown_option", "--headless --fast", "--fast"},
                       UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
                       UsageCase{"negative_steps", "--headless --steps -3", "--steps"},

@@ -179,6 +179,11 @@ std::vector<OptionCase> optionCases() {
          EXPECT_NEAR(v.y, 1, 1e-15);
          EXPECT_EQ(v.z, 0);
        }},
+      {"inside_out", "--inside-out", {"positions"}, [](const WorldFile& f) {
+         // p[0][0][0] and p[7][7][7] trade places.
+         EXPECT_NEAR(load(f.state.p(), 0).x, 1, 1e-15);
+         EXPECT_NEAR(load(f.state.p(), pointIndex(7, 7, 7)).z, 0, 1e-15);
+       }},
       {"skew_corner", "--skew-corner 0.1 0 -0.05", {"positions"}, [](const WorldFile& f) {
          Vec3 p = load(f.state.p(), pointIndex(7, 7, 7));
          EXPECT_NEAR(p.x, 1.1, 1e-15);
@@ -335,27 +340,53 @@ TEST(Describe, RecognisesTheCourseFields) {
   EXPECT_EQ(classifyField(buildField(radial)).kind, FieldKind::General);
 }
 
-// The commands in world/README.md make the showcase worlds exactly, and each world runs.
-TEST(ShowcaseWorlds, AreMadeByTheCommandsInTheReadmeAndRun) {
-  std::ifstream readme(std::string(JELLO_SOURCE_DIR) + "/world/README.md");
-  ASSERT_TRUE(readme) << "world/README.md";
+// The commands in world/README.md and world/stress/README.md make their worlds exactly.
+TEST(ShowcaseWorlds, AreMadeByTheCommandsInTheirReadmes) {
   std::string dir = test::makeTempDir();
   int made = 0;
-  for (std::string line; std::getline(readme, line);) {
-    const std::string prefix = "    ./createWorld ";
-    if (line.rfind(prefix, 0) != 0) continue;
-    std::size_t out = line.rfind(" -o world/");
-    ASSERT_NE(out, std::string::npos) << line;
-    std::string name = line.substr(out + 10);
-    Result r = createWorld(line.substr(prefix.size(), out - prefix.size()) + " -o '" + dir + "/" + name + "'");
-    ASSERT_EQ(r.status, 0) << line << "\n" << r.err;
-    EXPECT_EQ(test::readText(dir + "/" + name), test::readText(std::string(JELLO_SOURCE_DIR) + "/world/" + name))
-        << name << " is not what its command makes";
-    test::CommandResult run = test::runJello("--headless --time 1 '" + std::string(JELLO_SOURCE_DIR) + "/world/" + name + "'");
-    EXPECT_EQ(run.status, 0) << name << ": " << run.err;
-    ++made;
+  for (const char* folder : {"world/", "world/stress/"}) {
+    std::ifstream readme(std::string(JELLO_SOURCE_DIR) + "/" + folder + "README.md");
+    ASSERT_TRUE(readme) << folder << "README.md";
+    for (std::string line; std::getline(readme, line);) {
+      const std::string prefix = "    ./createWorld ";
+      if (line.rfind(prefix, 0) != 0) continue;
+      std::size_t out = line.rfind(" -o " + std::string(folder));
+      ASSERT_NE(out, std::string::npos) << line;
+      std::string name = line.substr(out + 4 + std::string(folder).size());
+      Result r = createWorld(line.substr(prefix.size(), out - prefix.size()) + " -o '" + dir + "/" + name + "'");
+      ASSERT_EQ(r.status, 0) << line << "\n" << r.err;
+      EXPECT_EQ(test::readText(dir + "/" + name), test::readText(std::string(JELLO_SOURCE_DIR) + "/" + folder + name))
+          << folder << name << " is not what its command makes";
+      ++made;
+    }
   }
-  EXPECT_GE(made, 4);
+  EXPECT_GE(made, 13);
+  test::removeTree(dir);
+}
+
+// Each showcase world runs; each stress world runs to the end with finite results or stops
+// with status 1 and the message, within seconds.
+TEST(ShowcaseWorlds, RunOrStopCleanly) {
+  std::string dir = test::makeTempDir();
+  for (const char* folder : {"world/", "world/stress/"}) {
+    std::string list = dir + "/list";
+    std::system(("ls '" + std::string(JELLO_SOURCE_DIR) + "/" + folder + "' | grep '[.]w$' > '" + list + "'").c_str());
+    std::istringstream names(test::readText(list));
+    for (std::string name; std::getline(names, name);) {
+      std::string path = std::string(JELLO_SOURCE_DIR) + "/" + folder + name, dump = dir + "/" + name;
+      test::CommandResult run = test::runJello("--headless --time 0.05 --dump '" + dump + "' '" + path + "'");
+      EXPECT_TRUE(run.status == 0 || run.status == 1) << name << ": " << run.status << " " << run.err;
+      EXPECT_EQ(run.out.find("nan"), std::string::npos) << name;
+      if (run.status == 0) {
+        EXPECT_NO_THROW(readWorldFile(dump)) << name << ": the dump must be a finite world";
+      } else {
+        EXPECT_EQ(std::string(folder), "world/stress/") << name << " is a showcase: it must run";
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+        EXPECT_NE(run.err.find("diverged at step"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("try --dt"), std::string::npos) << run.err;
+      }
+    }
+  }
   test::removeTree(dir);
 }
 

@@ -1,0 +1,291 @@
+// stability.cpp: predicted stable steps from the linearised forces.
+
+#include "stability.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "integrators.h"
+#include "jacobian.h"
+
+namespace jello {
+
+const std::vector<Integrator> kExplicitIntegrators = {Integrator::Euler,  Integrator::Symplectic, Integrator::Midpoint,
+                                                      Integrator::Verlet, Integrator::RK4,        Integrator::RK45};
+
+namespace {
+
+constexpr double kWallPress = 1e-3;    // m: how far the face is pressed into the wall
+constexpr double kRigid = 1e-9;        // |omega^2| below this fraction of the largest: a rigid motion
+constexpr double kLargestStep = 1.0;   // s: no limit beyond this is reported
+// A mode counts as bounded when it grows by less than a factor of 2 over kHorizon: explicit
+// Euler amplifies an undamped slow mode (a field's slight restoring force, say) at any step,
+// but by so little that no run would see it.
+constexpr double kHorizon = 10.0;  // s
+constexpr int kBisections = 60;
+constexpr double kNearLimit = 0.8;     // below this fraction of the limit a step is safely stable
+
+// Spectral radius of the one-step map of x'' = -w2 x - c x' under `integrator` at step h,
+// found by stepping the two unit states with the integrator's own code.
+double spectralRadius(Integrator integrator, const Mode& mode, double h) {
+  OdeSystem system;
+  system.derivative = [&mode](const double* y, double* dydt) {
+    dydt[0] = y[1];
+    dydt[1] = -mode.omegaSquared * y[0] - mode.damping * y[1];
+  };
+  // RK45 with tolerances that accept any step: one Dormand-Prince step of exactly h.
+  const Tolerances accept{1e300, 1e300};
+  double m[2][2];
+  for (int column = 0; column < 2; ++column) {
+    std::vector<double> y{column == 0 ? 1.0 : 0.0, column == 1 ? 1.0 : 0.0};
+    Stepper stepper(integrator, accept);
+    stepper.step(system, y, h);
+    m[0][column] = y[0];
+    m[1][column] = y[1];
+  }
+  double trace = m[0][0] + m[1][1], det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  std::complex<double> root = std::sqrt(std::complex<double>(trace * trace / 4 - det));
+  return std::max(std::abs(trace / 2 + root), std::abs(trace / 2 - root));
+}
+
+bool stableAt(Integrator integrator, const Mode& mode, double h) {
+  double radius = spectralRadius(integrator, mode, h);
+  return std::isfinite(radius) && radius <= std::pow(2.0, h / kHorizon) * (1 + 1e-12);
+}
+
+double modeLimit(Integrator integrator, const Mode& mode) {
+  if (stableAt(integrator, mode, kLargestStep)) return kLargestStep;
+  double low = 0, high = kLargestStep;
+  for (int i = 0; i < kBisections; ++i) {
+    double middle = low == 0 ? high / 2 : std::sqrt(low * high);
+    (stableAt(integrator, mode, middle) ? low : high) = middle;
+    if (low > 0 && high / low < 1 + 1e-6) break;
+  }
+  return low;
+}
+
+std::string number(double x) {
+  if (std::isinf(x)) return "unbounded";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
+
+Linearisation linearise(const Model& model, const State& state) {
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
+  Eigen::MatrixXd stiffness(jacobian.dAdp), damping(jacobian.dAdv);
+  stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness);
+  const Eigen::MatrixXd& phi = solver.eigenvectors();
+  const Eigen::MatrixXd dampingTimesPhi = damping * phi;
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < phi.cols(); ++i) {
+    double w2 = -solver.eigenvalues()[i];
+    if (w2 < -rigid) {
+      ++out.growing;
+      continue;
+    }
+    if (w2 <= rigid) continue;
+    double c = -phi.col(i).dot(dampingTimesPhi.col(i));
+    out.modes.push_back({w2, c});
+    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(w2));
+    out.lowestDamping = std::min(out.lowestDamping, c);
+    out.highestDamping = std::max(out.highestDamping, c);
+  }
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
+double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
+  if (integrator == Integrator::Implicit) return INFINITY;
+  // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
+  std::map<std::pair<long long, long long>, Mode> distinct;
+  for (const Mode& m : modes) {
+    auto key = std::pair{std::llround(std::log(m.omegaSquared) * 1e9), std::llround(m.damping * 1e6)};
+    distinct.emplace(key, m);
+  }
+  double limit = kLargestStep;
+  for (const auto& [key, mode] : distinct) {
+    // A mode already stable at the current limit cannot lower it.
+    if (stableAt(integrator, mode, limit)) continue;
+    limit = std::min(limit, modeLimit(integrator, mode));
+  }
+  return limit;
+}
+
+State restState() {
+  State s;
+  for (int i = 0; i < kLatticeSize; ++i)
+    for (int j = 0; j < kLatticeSize; ++j)
+      for (int k = 0; k < kLatticeSize; ++k)
+        store(s.p(), pointIndex(i, j, k), kRestSpacing * Vec3{double(i), double(j), double(k)});
+  return s;
+}
+
+State faceOnWallState() {
+  State s = restState();
+  for (int q = 0; q < kNumPoints; ++q) s.p()[3 * q] += -kBoxHalfSize - kWallPress;
+  return s;
+}
+
+double StabilityReport::critical(Integrator integrator) const {
+  auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), integrator);
+  if (at == kExplicitIntegrators.end()) return INFINITY;
+  return criticalRest[static_cast<std::size_t>(at - kExplicitIntegrators.begin())];
+}
+
+StabilityReport analyseStability(const World& world, const State& initial) {
+  StabilityReport report;
+  Model model = makeModel(world, initial);
+  report.initial = linearise(model, initial);
+  report.rest = linearise(model, restState());
+  Linearisation wall = linearise(model, faceOnWallState());
+  for (Integrator integrator : kExplicitIntegrators) {
+    report.criticalInitial.push_back(criticalStep(integrator, report.initial.modes));
+    report.criticalRest.push_back(criticalStep(integrator, report.rest.modes));
+    report.criticalFaceOnWall.push_back(criticalStep(integrator, wall.modes));
+  }
+  return report;
+}
+
+double predictedLimit(const World& world, const State& initial, Integrator integrator) {
+  if (integrator == Integrator::Implicit) return INFINITY;
+  Model model = makeModel(world, initial);
+  return std::min(criticalStep(integrator, linearise(model, initial).modes),
+                  criticalStep(integrator, linearise(model, faceOnWallState()).modes));
+}
+
+std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
+                              const std::string& reason) {
+  char head[160];
+  std::snprintf(head, sizeof head, "diverged at step %lld (t=%.6g s): ", step, time);
+  std::string out = head + reason + "; ";
+  const char* name = integratorName(world.integrator);
+  double limit = predictedLimit(world, initial, world.integrator);
+  if (!std::isfinite(limit)) {
+    return out + "dt=" + number(world.dt) + " with " + name + ", which has no stability limit; try a smaller --dt";
+  }
+  if (world.dt > limit) {
+    return out + "dt=" + number(world.dt) + " exceeds " + name + "'s stable limit " + number(limit) +
+           " for this world; try --dt " + number(suggestedStep(limit)) + " or --integrator IMPLICIT";
+  }
+  return out + "dt=" + number(world.dt) + " is within " + name + "'s predicted limit " + number(limit) +
+         " for this world, but the motion left it (a harder contact than a face on a wall?); try --dt " +
+         number(suggestedStep(world.dt)) + " or --integrator IMPLICIT";
+}
+
+Verdict verdictFor(double dt, double critical) {
+  if (dt > critical) return Verdict::Unstable;
+  if (dt > kNearLimit * critical) return Verdict::NearLimit;
+  return Verdict::Stable;
+}
+
+const char* verdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Stable:
+      return "stable";
+    case Verdict::NearLimit:
+      return "within 20% of the limit";
+    default:
+      return "unstable";
+  }
+}
+
+double suggestedStep(double critical) {
+  double target = kNearLimit * critical;
+  double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * decade <= target) return m * decade;
+  return decade;
+}
+
+std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping rates %.3g to %.3g 1/s\n",
+                r.rest.modes.size(), r.rest.highestFrequency, r.rest.highestFrequency / (2 * 3.14159265358979),
+                r.rest.lowestDamping, r.rest.highestDamping);
+  out += line;
+  std::snprintf(line, sizeof line,
+                "  at the initial state: highest frequency %.4g rad/s, damping rates %.3g to %.3g 1/s\n",
+                r.initial.highestFrequency, r.initial.lowestDamping, r.initial.highestDamping);
+  out += line;
+  if (r.initial.growing) {
+    out += "  " + std::to_string(r.initial.growing) +
+           " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
+           "field): physics, not numerics\n";
+  }
+  out += "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    Integrator integrator = kExplicitIntegrators[i];
+    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(integrator),
+                  number(r.criticalRest[i]).c_str(), number(r.criticalInitial[i]).c_str(),
+                  number(r.criticalFaceOnWall[i]).c_str());
+    out += line;
+  }
+  out += "  IMPLICIT     unbounded (A-stable)\n\n";
+  double critical = r.critical(world.integrator);
+  Verdict verdict = verdictFor(world.dt, critical);
+  out += "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
+         verdictName(verdict);
+  if (std::isfinite(critical)) {
+    std::snprintf(line, sizeof line, " (%.0f%% of the limit %s)", 100 * world.dt / critical, number(critical).c_str());
+    out += line;
+  }
+  out += "\n";
+  if (verdict != Verdict::Stable && std::isfinite(critical)) {
+    out += "  try --dt " + number(suggestedStep(critical)) + " or --integrator IMPLICIT\n";
+  }
+  auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
+  if (at != kExplicitIntegrators.end()) {
+    std::size_t i = static_cast<std::size_t>(at - kExplicitIntegrators.begin());
+    if (world.dt > r.criticalInitial[i]) {
+      out += "  at the initial state the limit is " + number(r.criticalInitial[i]) +
+             " s: the start's deformation may destabilise this step for a while\n";
+    }
+    if (world.dt > r.criticalFaceOnWall[i]) {
+      out += "  while a face presses on a wall the limit is " + number(r.criticalFaceOnWall[i]) +
+             " s: contact may destabilise this step\n";
+    }
+  }
+  return out;
+}
+
+std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  nlohmann::json j;
+  j["world"] = worldPath;
+  j["dt"] = world.dt;
+  j["integrator"] = integratorName(world.integrator);
+  j["modes"] = r.rest.modes.size();
+  j["highest_frequency"] = r.rest.highestFrequency;
+  j["damping_rates"] = {r.rest.lowestDamping, r.rest.highestDamping};
+  j["initial_state"] = {{"highest_frequency", r.initial.highestFrequency},
+                        {"damping_rates", {r.initial.lowestDamping, r.initial.highestDamping}},
+                        {"growing_modes", r.initial.growing}};
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    Integrator integrator = kExplicitIntegrators[i];
+    j["integrators"][integratorName(integrator)] = {{"critical_dt", finite(r.critical(integrator))},
+                                                     {"initial_state", finite(r.criticalInitial[i])},
+                                                     {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
+  }
+  j["integrators"]["IMPLICIT"] = {{"critical_dt", nullptr}, {"unbounded", true}};
+  double critical = r.critical(world.integrator);
+  j["verdict"] = verdictName(verdictFor(world.dt, critical));
+  j["critical_dt"] = finite(critical);
+  return j.dump(2) + "\n";
+}
+
+}  // namespace jello

@@ -1,0 +1,80 @@
+// stability.h: the largest stable step of every integrator for a world, predicted from the
+// linearised forces (jello --check, the runtime guard's message, createWorld --describe).
+//
+// The accelerations are linearised at a state: dA/dp (N/m per kg, i.e. 1/s^2) and dA/dv (1/s).
+// The symmetric part of dA/dp is diagonalised; each mode i has a frequency omega_i
+// (dA/dp phi = -omega^2 phi) and a damping rate c_i = -phi^T dA/dv phi, so that it moves as
+// x'' = -omega^2 x - c x'. An integrator is stable at dt when the one-step map of every such
+// mode, computed by running the integrator itself on it, has spectral radius at most 1.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "physics.h"
+#include "world.h"
+
+namespace jello {
+
+// Integrators with a bounded stable step (IMPLICIT, A-stable, has none).
+extern const std::vector<Integrator> kExplicitIntegrators;
+
+struct Mode {
+  double omegaSquared;  // 1/s^2
+  double damping;       // 1/s
+};
+
+struct Linearisation {
+  std::vector<Mode> modes;    // the oscillating ones, omega > 0
+  int growing = 0;            // modes with negative stiffness (buckling): physical, not numerical
+  double highestFrequency = 0;  // rad/s
+  double lowestDamping = 0, highestDamping = 0;  // 1/s, over the modes
+};
+
+// The modes of the world linearised at `state` (its springs, and the collision springs active
+// there). Takes about a second: a dense symmetric eigensolver on 1536 unknowns.
+Linearisation linearise(const Model& model, const State& state);
+
+// The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT.
+double criticalStep(Integrator integrator, const std::vector<Mode>& modes);
+
+// The rest lattice, and the rest lattice with its x = min face pressed 1 mm into the wall
+// x = -2 (64 collision springs active), both at rest.
+State restState();
+State faceOnWallState();
+
+struct StabilityReport {
+  Linearisation rest, initial;
+  std::vector<double> criticalRest, criticalInitial, criticalFaceOnWall;  // by kExplicitIntegrators
+  // The headline limit: at rest, the state every damped world settles towards (a deformed start
+  // or a contact may lower it for a while: see criticalInitial, criticalFaceOnWall). Infinite
+  // for IMPLICIT.
+  double critical(Integrator integrator) const;
+};
+
+// The whole analysis of a world (about three seconds).
+StabilityReport analyseStability(const World& world, const State& initial);
+
+enum class Verdict { Stable, NearLimit, Unstable };
+// Stable below 80% of the limit, NearLimit within 20% of it, Unstable beyond it.
+Verdict verdictFor(double dt, double critical);
+const char* verdictName(Verdict verdict);
+
+// The human report of jello --check, and its JSON.
+std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& report);
+std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& report);
+
+// The limit that matters when a run has diverged: the smaller of the limits at the initial
+// state and with a face on a wall (two eigensolves, a few seconds).
+double predictedLimit(const World& world, const State& initial, Integrator integrator);
+
+// The one-line diagnosis of a diverged run, without the "jello: " prefix: where, why, and
+// what to change, e.g. "diverged at step 812 (t=0.0812 s): <reason>; dt=1e-4 exceeds RK4's
+// stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT".
+std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
+                              const std::string& reason);
+
+// A step to suggest: 80% of the predicted limit, rounded down to 1, 2 or 5 times a power of 10.
+double suggestedStep(double critical);
+
+}  // namespace jello

@@ -1,0 +1,154 @@
+// Stability: predicted largest stable steps against real runs; the runtime guard; no NaN from
+// degenerate geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "guard.h"
+#include "integrators.h"
+#include "jacobian.h"
+#include "stability.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+// The largest dt at which a real run of `time` seconds stays plausible (the runtime guard,
+// checked every step), by bisection between a third and three times `guess`.
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+  auto stable = [&](double dt) {
+    State s = start;
+    Stepper stepper(integrator);
+    DivergenceGuard guard(model, start);
+    for (long i = 1, n = std::lround(time / dt); i <= n; ++i) {
+      stepper.step(model, s, dt);
+      if (!guard.check(s, i * dt).empty()) return false;
+    }
+    return true;
+  };
+  double low = guess / 3, high = guess * 3;
+  if (!stable(low) || stable(high)) return NAN;
+  for (int i = 0; i < 9; ++i) {  // to within 0.5%
+    double middle = std::sqrt(low * high);
+    (stable(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+struct PredictionCase {
+  const char* world;  // under tests/data or world/stress
+  double time;        // s of real runs
+};
+
+void PrintTo(const PredictionCase& c, std::ostream* os) { *os << c.world; }
+
+class Prediction : public ::testing::TestWithParam<PredictionCase> {};
+
+TEST_P(Prediction, WithinThreeQuartersAndElevenTenthsOfTheObservedLimit) {
+  const PredictionCase& c = GetParam();
+  std::string path = std::string(c.world).find('/') == std::string::npos
+                         ? test::dataPath(c.world)
+                         : std::string(JELLO_SOURCE_DIR) + "/" + c.world;
+  WorldFile f = readWorldFile(path);
+  Model model = makeModel(f.world, f.state);
+  Linearisation rest = linearise(model, restState());
+  for (Integrator integrator : {Integrator::Euler, Integrator::RK4}) {
+    double predicted = criticalStep(integrator, rest.modes);  // --check's headline limit
+    double observed = observedLimit(model, f.state, integrator, c.time, predicted);
+    std::printf("%s %s: predicted %.4g s, observed %.4g s, ratio %.3f\n", c.world, integratorName(integrator), predicted,
+                observed, predicted / observed);
+    ASSERT_TRUE(std::isfinite(observed)) << "no limit between a third and three times the prediction";
+    EXPECT_GE(predicted / observed, 0.75) << integratorName(integrator);
+    EXPECT_LE(predicted / observed, 1.1) << integratorName(integrator);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, Prediction,
+                         ::testing::Values(PredictionCase{"rotate.w", 0.2}, PredictionCase{"jello.w", 0.05},
+                                           PredictionCase{"world/stress/stiff-2e4.w", 0.05},
+                                           PredictionCase{"world/stress/damped-5.w", 0.02}),
+                         [](const auto& info) {
+                           std::string name = info.param.world;
+                           name = name.substr(name.rfind('/') + 1);
+                           for (char& ch : name) if (ch == '.' || ch == '-') ch = '_';
+                           return name;
+                         });
+
+TEST(Stability, ModesOfTheRestLatticeScaleWithStiffnessAndDamping) {
+  // At rest the damping is proportional to the stiffness (every spring has d/k = 0.25/500), so
+  // every mode's damping rate is omega^2 d/k, and explicit Euler's limit is d/k for all of them.
+  World w = test::springsOnlyWorld();
+  Model model = makeModel(w, restState());
+  Linearisation modes = linearise(model, restState());
+  EXPECT_EQ(modes.growing, 0);
+  EXPECT_GT(modes.modes.size(), 1500u);  // 1536 less the 6 rigid motions
+  for (const Mode& m : modes.modes) ASSERT_NEAR(m.damping, m.omegaSquared * w.dElastic / w.kElastic, 1e-6 * m.damping);
+  EXPECT_NEAR(criticalStep(Integrator::Euler, modes.modes), w.dElastic / w.kElastic, 1e-6);
+  EXPECT_TRUE(std::isinf(criticalStep(Integrator::Implicit, modes.modes)));
+  // Symplectic Euler on an undamped mode: stable exactly while omega dt <= 2.
+  Mode undamped{1e6, 0};
+  EXPECT_NEAR(criticalStep(Integrator::Symplectic, {undamped}), 2e-3, 1e-8);
+  // RK4 on the imaginary axis: up to 2*sqrt(2).
+  EXPECT_NEAR(criticalStep(Integrator::RK4, {undamped}), 2 * std::sqrt(2.0) / 1e3, 1e-7);
+}
+
+TEST(Stability, VerdictsAndSuggestions) {
+  EXPECT_EQ(verdictFor(0.5, 1), Verdict::Stable);
+  EXPECT_EQ(verdictFor(0.9, 1), Verdict::NearLimit);
+  EXPECT_EQ(verdictFor(1.2, 1), Verdict::Unstable);
+  EXPECT_EQ(suggestedStep(6.6e-5), 5e-5);
+  EXPECT_EQ(suggestedStep(1e-3), 5e-4);
+}
+
+TEST(Guard, PassesPhysicsAndCatchesABlowUp) {
+  WorldFile f = readWorldFile(test::dataPath("gravity.w"));  // a field that does work
+  Model model = makeModel(f.world, f.state);
+  DivergenceGuard guard(model, f.state);
+  State s = f.state;
+  Stepper stepper(Integrator::RK4);
+  for (int i = 1; i <= 3000; ++i) {
+    stepper.step(model, s, f.world.dt);
+    ASSERT_EQ(guard.check(s, i * f.world.dt), "") << "step " << i;
+  }
+  State fast = s;
+  for (int c = 0; c < kNumCoords; ++c) fast.v()[c] *= 30;
+  EXPECT_NE(guard.check(fast, 0.3).find("energy"), std::string::npos);
+  fast.p()[5] = NAN;
+  EXPECT_NE(guard.check(fast, 0.3).find("no longer finite"), std::string::npos);
+}
+
+// Zero-length springs, points exactly on walls and on the plane, and points beyond two walls:
+// every force and every derivative stays finite.
+TEST(Degenerate, GeometryGivesNoNaN) {
+  World w = test::springsOnlyWorld();
+  w.hasPlane = true;
+  w.plane = {1, 1, 1, -1};
+  w.field.resolution = 2;
+  w.field.forces.assign(24, 0.01);
+  State s = test::restLattice();
+  Model model = makeModel(w, s);
+  store(s.p(), pointIndex(7, 7, 7), load(s.p(), pointIndex(6, 7, 7)));  // a zero-length spring
+  store(s.p(), pointIndex(0, 0, 0), {-2, 0.5, 0.5});                    // exactly on a wall
+  store(s.p(), pointIndex(0, 0, 1), {1.0 / 3, 1.0 / 3, 1.0 / 3});       // on the plane
+  store(s.p(), pointIndex(0, 0, 2), {2.5, -2.5, 2});                    // beyond two walls, on a third
+  store(s.p(), pointIndex(0, 0, 3), {2, 2, 2});                         // the box's corner
+  for (int c = 0; c < kNumCoords; ++c) s.v()[c] = 0.1 * ((c % 7) - 3);
+  std::vector<double> force(kNumCoords);
+  computeForces(model, s.p(), s.v(), force.data());
+  for (double f : force) ASSERT_TRUE(std::isfinite(f));
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, s.p(), s.v(), nullptr, &jacobian);
+  for (Eigen::Index i = 0; i < jacobian.dAdp.nonZeros(); ++i) {
+    ASSERT_TRUE(std::isfinite(jacobian.dAdp.valuePtr()[i]));
+    ASSERT_TRUE(std::isfinite(jacobian.dAdv.valuePtr()[i]));
+  }
+  for (Integrator integrator : {Integrator::Euler, Integrator::RK4, Integrator::RK45, Integrator::Implicit}) {
+    State t = s;
+    Stepper stepper(integrator);
+    for (int i = 0; i < 20; ++i) stepper.step(model, t, 1e-4);
+    EXPECT_EQ(findDivergedPoint(t), -1) << integratorName(integrator);
+  }
+}
+
+}  // namespace
+}  // namespace jello
