@@ -12,6 +12,7 @@
 
 #include "describe.h"
 #include "physics.h"
+#include "stability.h"
 #include "worldbuilder.h"
 
 namespace {
@@ -61,6 +62,13 @@ void warn(const std::string& message) { std::fprintf(stderr, "createWorld: warni
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
 void warnAbout(const jello::World& world, const jello::State& state) {
+  double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
+  if (world.dt > limit) {
+    char text[200];
+    std::snprintf(text, sizeof text, "dt=%g exceeds %s's stable limit %.3g s for this world: it will diverge; try --dt %g",
+                  world.dt, jello::integratorName(world.integrator), limit, jello::suggestedStep(limit));
+    warn(text);
+  }
   int outside = 0;
   for (int c = 0; c < jello::kNumCoords; ++c)
     if (std::fabs(state.p()[c]) > jello::kBoxHalfSize) ++outside;

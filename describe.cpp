@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "physics.h"
+#include "stability.h"
 
 namespace jello {
 
@@ -199,6 +200,13 @@ std::string describeWorld(const World& w, const State& state) {
     out += across ? format(", %d points across it\n", across) : "\n";
   } else {
     out += "plane       none\n";
+  }
+  double limit = criticalStep(w.integrator, lineariseAtRest(w).modes);
+  if (std::isfinite(limit)) {
+    out += format("stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
+                  integratorName(w.integrator), w.dt, verdictName(verdictFor(w.dt, limit)), 100 * w.dt / limit, limit);
+  } else {
+    out += format("stability   %s: no step limit\n", integratorName(w.integrator));
   }
   return out;
 }

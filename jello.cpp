@@ -104,6 +104,10 @@ int main(int argc, char** argv) {
   auto* checkOption = app.add_flag("--check", "stability analysis: the largest stable dt of every integrator, and "
                                               "a verdict on the world's own; then exit");
   app.add_flag("--json", json, "with --check: print the analysis as one JSON object");
+  std::string mapDir;
+  auto* mapOption = app.add_option("--map", mapDir, "with --check: kElastic against dt, predicted and observed "
+                                                    "stable regions, into DIR (CSV, plot)")
+                        ->type_name("DIR");
 
   // Options of later milestones: recognised, so that a user learns they are coming.
   CLI::Option* later[] = {
@@ -144,6 +148,10 @@ int main(int argc, char** argv) {
   if (*checkOption) {
     jello::WorldFile file;
     if (!jello::loadRun(run, &file)) return jello::kExitBadInput;
+    if (*mapOption) {
+      return jello::writeStabilityMap(mapDir, run.worldPath, file.world, file.state, *timeOption ? time : 0.1,
+                                      pictures.overwrite);
+    }
     jello::StabilityReport analysis = jello::analyseStability(file.world, file.state);
     std::fputs((json ? jello::stabilityJson(run.worldPath, file.world, analysis)
                      : jello::stabilityText(run.worldPath, file.world, analysis))
@@ -152,6 +160,10 @@ int main(int argc, char** argv) {
     return jello::kExitOk;
   }
 
+  if (*mapOption && !*checkOption) {
+    std::fprintf(stderr, "jello: --map goes with --check\n");
+    return jello::kExitBadInput;
+  }
   if (*reportOption) {
     if (*stepsOption || *framesOption) {
       std::fprintf(stderr, "jello: --report runs to --time T (default 1 s); it takes no --steps or --frames\n");

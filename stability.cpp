@@ -9,8 +9,14 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "guard.h"
 #include "integrators.h"
 #include "jacobian.h"
 
@@ -107,6 +113,36 @@ Linearisation linearise(const Model& model, const State& state) {
   return out;
 }
 
+Linearisation lineariseAtRest(const World& world) {
+  // Eigenvalues of the lattice with unit stiffness and unit mass, computed once.
+  static const Eigen::VectorXd unitLattice = [] {
+    World unit;
+    unit.kElastic = 1;
+    unit.mass = 1;
+    Model model = makeModel(unit, restState());
+    AccelerationJacobian jacobian;
+    accelerationJacobian(model, restState().p(), restState().v(), nullptr, &jacobian);
+    Eigen::MatrixXd stiffness(jacobian.dAdp);
+    stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
+    return Eigen::VectorXd(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly).eigenvalues());
+  }();
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * unitLattice.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
+    double mu = -unitLattice[i];
+    if (mu <= rigid) continue;
+    Mode m{mu * world.kElastic / world.mass, mu * world.dElastic / world.mass};
+    if (m.omegaSquared <= 0) continue;
+    out.modes.push_back(m);
+    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(m.omegaSquared));
+    out.lowestDamping = std::min(out.lowestDamping, m.damping);
+    out.highestDamping = std::max(out.highestDamping, m.damping);
+  }
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
   if (integrator == Integrator::Implicit) return INFINITY;
   // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
@@ -149,7 +185,7 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   StabilityReport report;
   Model model = makeModel(world, initial);
   report.initial = linearise(model, initial);
-  report.rest = linearise(model, restState());
+  report.rest = lineariseAtRest(world);
   Linearisation wall = linearise(model, faceOnWallState());
   for (Integrator integrator : kExplicitIntegrators) {
     report.criticalInitial.push_back(criticalStep(integrator, report.initial.modes));
@@ -183,6 +219,104 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
   return out + "dt=" + number(world.dt) + " is within " + name + "'s predicted limit " + number(limit) +
          " for this world, but the motion left it (a harder contact than a face on a wall?); try --dt " +
          number(suggestedStep(world.dt)) + " or --integrator IMPLICIT";
+}
+
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+  auto stable = [&](double dt) {
+    State s = start;
+    Stepper stepper(integrator);
+    DivergenceGuard guard(model, start);
+    for (long i = 1, n = std::lround(time / dt); i <= n; ++i) {
+      stepper.step(model, s, dt);
+      if (!guard.check(s, i * dt).empty()) return false;
+    }
+    return true;
+  };
+  double low = guess / 3, high = guess * 3;
+  if (!stable(low) || stable(high)) return NAN;
+  for (int i = 0; i < 9; ++i) {
+    double middle = std::sqrt(low * high);
+    (stable(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
+                      double time, bool overwrite) {
+  struct stat info {};
+  if (::stat(dir.c_str(), &info) != 0 && ::mkdir(dir.c_str(), 0777) != 0) {
+    std::fprintf(stderr, "jello: --map %s: cannot make the folder\n", dir.c_str());
+    return 2;
+  }
+  if (::stat((dir + "/stability-map.csv").c_str(), &info) == 0 && !overwrite) {
+    std::fprintf(stderr, "jello: --map %s already holds a stability map; choose another folder, or add --overwrite\n",
+                 dir.c_str());
+    return 2;
+  }
+  const double base = world.kElastic > 0 ? world.kElastic : 500;
+  const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint, Integrator::RK4};
+  std::ostringstream csv, data;
+  csv << "kElastic,integrator,predicted_dt,observed_dt\n";
+  std::map<std::string, std::string> predictedRows, observedRows;
+  for (int e = -3; e <= 3; ++e) {
+    World w = world;
+    w.kElastic = base * std::pow(2.0, e);
+    Linearisation rest = lineariseAtRest(w);
+    Model model = makeModel(w, initial);
+    for (Integrator integrator : kExplicitIntegrators) {
+      double predicted = criticalStep(integrator, rest.modes);
+      bool measured = std::find(observed.begin(), observed.end(), integrator) != observed.end();
+      double seen = measured ? observedLimit(model, initial, integrator, time, predicted) : NAN;
+      char line[160];
+      std::snprintf(line, sizeof line, "%.6g,%s,%.6g,%s\n", w.kElastic, integratorName(integrator), predicted,
+                    std::isnan(seen) ? "" : number(seen).c_str());
+      csv << line;
+      std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, predicted);
+      predictedRows[integratorName(integrator)] += line;
+      if (!std::isnan(seen)) {
+        std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, seen);
+        observedRows[integratorName(integrator)] += line;
+      }
+    }
+    if (::isatty(2)) std::fprintf(stderr, "\rmap: kElastic %g done   ", w.kElastic);
+  }
+  if (::isatty(2)) std::fprintf(stderr, "\r%40s\r", "");
+  std::ostringstream gp;
+  gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png again.\n";
+  std::string plots;
+  int style = 0;
+  for (const auto& [name, rows] : predictedRows) {
+    std::string lt = " lt " + std::to_string(++style);  // one colour an integrator
+    gp << "$P_" << name << " << EOD\n" << rows << "EOD\n";
+    plots += (plots.empty() ? "" : ", ") + std::string("$P_") + name + " with lines lw 2" + lt + " title '" + name +
+             " predicted'";
+    if (observedRows.count(name)) {
+      gp << "$O_" << name << " << EOD\n" << observedRows[name] << "EOD\n";
+      plots += ", $O_" + name + " with points pt 7 ps 1.3" + lt + " title '" + name + " observed'";
+    }
+  }
+  gp << "set terminal pngcairo size 960,640 font ',11'\nset output 'stability-map.png'\n"
+     << "set title '" << worldPath << ": largest stable step against spring stiffness (stable below each line)'\n"
+     << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key outside right top\n"
+     << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
+     << world.kElastic << " " << world.dt << "\ne\n";
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"stability-map.csv", csv.str()},
+                                   {"stability-map.gp", gp.str()}}) {
+    std::ofstream out(dir + "/" + name);
+    out << text;
+    if (!out) {
+      std::fprintf(stderr, "jello: %s/%s: cannot write\n", dir.c_str(), name.c_str());
+      return 2;
+    }
+  }
+  std::string quoted = "'";
+  for (char c : dir) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  quoted += "'";
+  bool drawn = std::system(("cd " + quoted + " && gnuplot stability-map.gp 2>/dev/null").c_str()) == 0;
+  if (!drawn) std::fprintf(stderr, "jello: gnuplot is not installed or failed: stability-map.png was not drawn\n");
+  std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
+              drawn ? ", stability-map.png" : "");
+  return 0;
 }
 
 Verdict verdictFor(double dt, double critical) {

@@ -35,6 +35,12 @@ struct Linearisation {
 // there). Takes about a second: a dense symmetric eigensolver on 1536 unknowns.
 Linearisation linearise(const Model& model, const State& state);
 
+// The modes of the rest lattice (restState()) for the world's springs. At rest every spring's
+// stiffness and damping act along the same direction, so the damping is the stiffness times
+// dElastic/kElastic and one eigenvalue solve of the lattice, done once and scaled, gives them:
+// milliseconds after the first call.
+Linearisation lineariseAtRest(const World& world);
+
 // The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT.
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes);
 
@@ -73,6 +79,17 @@ double predictedLimit(const World& world, const State& initial, Integrator integ
 // stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT".
 std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
                               const std::string& reason);
+
+// The largest dt at which real runs of `time` seconds from `start` stay plausible (the runtime
+// guard, every step), by bisection to 0.5% between a third and three times `guess`; NaN when
+// the limit is not in that range.
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess);
+
+// jello --check --map DIR: kElastic swept against dt, the predicted and the observed (real
+// runs of `time` seconds, by bisection) largest stable step per integrator; writes
+// DIR/stability-map.csv, .gp and .png. Returns the exit status.
+int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
+                      double time, bool overwrite);
 
 // A step to suggest: 80% of the predicted limit, rounded down to 1, 2 or 5 times a power of 10.
 double suggestedStep(double critical);

@@ -9,31 +9,10 @@
 #include "jacobian.h"
 #include "stability.h"
 #include "test_support.h"
+#include <nlohmann/json.hpp>
 
 namespace jello {
 namespace {
-
-// The largest dt at which a real run of `time` seconds stays plausible (the runtime guard,
-// checked every step), by bisection between a third and three times `guess`.
-double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
-  auto stable = [&](double dt) {
-    State s = start;
-    Stepper stepper(integrator);
-    DivergenceGuard guard(model, start);
-    for (long i = 1, n = std::lround(time / dt); i <= n; ++i) {
-      stepper.step(model, s, dt);
-      if (!guard.check(s, i * dt).empty()) return false;
-    }
-    return true;
-  };
-  double low = guess / 3, high = guess * 3;
-  if (!stable(low) || stable(high)) return NAN;
-  for (int i = 0; i < 9; ++i) {  // to within 0.5%
-    double middle = std::sqrt(low * high);
-    (stable(middle) ? low : high) = middle;
-  }
-  return low;
-}
 
 struct PredictionCase {
   const char* world;  // under tests/data or world/stress
@@ -51,7 +30,7 @@ TEST_P(Prediction, WithinThreeQuartersAndElevenTenthsOfTheObservedLimit) {
                          : std::string(JELLO_SOURCE_DIR) + "/" + c.world;
   WorldFile f = readWorldFile(path);
   Model model = makeModel(f.world, f.state);
-  Linearisation rest = linearise(model, restState());
+  Linearisation rest = lineariseAtRest(f.world);
   for (Integrator integrator : {Integrator::Euler, Integrator::RK4}) {
     double predicted = criticalStep(integrator, rest.modes);  // --check's headline limit
     double observed = observedLimit(model, f.state, integrator, c.time, predicted);
@@ -83,6 +62,11 @@ TEST(Stability, ModesOfTheRestLatticeScaleWithStiffnessAndDamping) {
   EXPECT_EQ(modes.growing, 0);
   EXPECT_GT(modes.modes.size(), 1500u);  // 1536 less the 6 rigid motions
   for (const Mode& m : modes.modes) ASSERT_NEAR(m.damping, m.omegaSquared * w.dElastic / w.kElastic, 1e-6 * m.damping);
+  // The fast path, from the scaled unit lattice, gives the same modes.
+  Linearisation fast = lineariseAtRest(w);
+  ASSERT_EQ(fast.modes.size(), modes.modes.size());
+  EXPECT_NEAR(fast.highestFrequency, modes.highestFrequency, 1e-9 * modes.highestFrequency);
+  EXPECT_NEAR(criticalStep(Integrator::RK4, fast.modes), criticalStep(Integrator::RK4, modes.modes), 1e-9);
   EXPECT_NEAR(criticalStep(Integrator::Euler, modes.modes), w.dElastic / w.kElastic, 1e-6);
   EXPECT_TRUE(std::isinf(criticalStep(Integrator::Implicit, modes.modes)));
   // Symplectic Euler on an undamped mode: stable exactly while omega dt <= 2.
@@ -148,6 +132,40 @@ TEST(Degenerate, GeometryGivesNoNaN) {
     for (int i = 0; i < 20; ++i) stepper.step(model, t, 1e-4);
     EXPECT_EQ(findDivergedPoint(t), -1) << integratorName(integrator);
   }
+}
+
+}  // namespace
+}  // namespace jello
+
+namespace jello {
+namespace {
+
+TEST(CheckCommand, TextJsonAndMap) {
+  test::CommandResult text = test::runJello("--check '" + test::dataPath("rotate.w") + "'");
+  ASSERT_EQ(text.status, 0) << text.err;
+  for (const char* part : {"highest frequency", "EULER ", "RK4 ", "IMPLICIT     unbounded", "the world's dt 0.001 with RK4: stable"})
+    EXPECT_NE(text.out.find(part), std::string::npos) << part << "\n" << text.out;
+
+  test::CommandResult json = test::runJello("--check --json --dt 0.002 '" + test::dataPath("rotate.w") + "'");
+  ASSERT_EQ(json.status, 0) << json.err;
+  nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["dt"].get<double>(), 0.002);
+  double rk4 = j["integrators"]["RK4"]["critical_dt"].get<double>();
+  EXPECT_GT(rk4, 0.001);
+  EXPECT_LT(rk4, 0.002);
+  EXPECT_EQ(j["verdict"], "unstable");
+  EXPECT_TRUE(j["integrators"]["IMPLICIT"]["critical_dt"].is_null());
+  for (const char* name : {"EULER", "SYMPLECTIC", "MIDPOINT", "VERLET", "RK45"})
+    EXPECT_GT(j["integrators"][name]["critical_dt"].get<double>(), 0) << name;
+
+  std::string dir = test::makeTempDir();
+  test::CommandResult map = test::runJello("--check --map '" + dir + "/map' --time 0.02 '" + test::dataPath("rotate.w") + "'");
+  ASSERT_EQ(map.status, 0) << map.err;
+  std::string csv = test::readText(dir + "/map/stability-map.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "kElastic,integrator,predicted_dt,observed_dt");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 7 * 6);
+  EXPECT_GT(test::readText(dir + "/map/stability-map.png").size(), 1000u);
+  test::removeTree(dir);
 }
 
 }  // namespace
