@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "describe.h"
 #include "physics.h"
 #include "stability.h"
@@ -17,39 +18,14 @@
 
 namespace {
 
+using jello::kFinite;
+using jello::kNonNegative;
+using jello::kPositive;
 using jello::Vec3;
 
 constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;
 constexpr const char* kVersion = "createWorld 0.1.0";
-
-const CLI::Validator kFinite(
-    [](std::string& text) -> std::string {
-      double value = 0;
-      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value)) return "must be a finite number, got " + text;
-      return {};
-    },
-    "finite");
-
-const CLI::Validator kPositive(
-    [](std::string& text) -> std::string {
-      double value = 0;
-      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0)) {
-        return "must be a finite number > 0, got " + text;
-      }
-      return {};
-    },
-    "> 0");
-
-const CLI::Validator kNonNegative(
-    [](std::string& text) -> std::string {
-      double value = 0;
-      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0) {
-        return "must be a finite number >= 0, got " + text;
-      }
-      return {};
-    },
-    ">= 0");
 
 Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli.h"
 #include "graphics.h"
 #include "headless.h"
 #include "report.h"
@@ -17,17 +18,6 @@ namespace {
 
 constexpr const char* kVersion = "jello 0.1.0";
 constexpr const char* kDefaultWorld = "world/rotate.w";
-
-// CLI11's PositiveNumber lets "inf" through; a step or a duration must be finite.
-const CLI::Validator kFinitePositive(
-    [](std::string& text) -> std::string {
-      double value = 0;
-      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0)) {
-        return "must be a finite number > 0, got " + text;
-      }
-      return {};
-    },
-    "> 0");
 
 // "WxH" within the renderer's limits.
 bool parseSize(const std::string& text, int* width, int* height) {
@@ -70,10 +60,10 @@ int main(int argc, char** argv) {
   app.add_flag("--headless", headless, "run without a window");
   auto* stepsOption = app.add_option("--steps", steps, "steps to run headless (default 300 frames of n steps)")
                           ->check(CLI::Range(0LL, std::numeric_limits<long long>::max()));
-  auto* timeOption = app.add_option("--time", time, "simulated seconds to run headless")->check(kFinitePositive);
+  auto* timeOption = app.add_option("--time", time, "simulated seconds to run headless")->check(jello::kPositive);
   stepsOption->excludes(timeOption);
   auto* integratorOption = app.add_option("--integrator", integrator, "EULER, RK4, MIDPOINT, SYMPLECTIC, VERLET, RK45 or IMPLICIT, any case (overrides the world file)");
-  auto* dtOption = app.add_option("--dt", dt, "time step in seconds (overrides the world file)")->check(kFinitePositive);
+  auto* dtOption = app.add_option("--dt", dt, "time step in seconds (overrides the world file)")->check(jello::kPositive);
   auto* nOption = app.add_option("--n", n, "steps per drawn frame (overrides the world file)")
                       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
   app.add_option("--dump", run.dumpPath, "write the final state as a world file");
@@ -96,9 +86,9 @@ int main(int argc, char** argv) {
       app.add_option("--integrators", integratorList, "with --report: the integrators to study, e.g. EULER,RK4 (default all)")
           ->type_name("LIST");
   app.add_option("--tolerance", report.visualTolerance, "with --report: the visual tolerance, m RMS (default 1e-4)")
-      ->check(kFinitePositive);
-  app.add_option("--rtol", run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->check(kFinitePositive);
-  app.add_option("--atol", run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->check(kFinitePositive);
+      ->check(jello::kPositive);
+  app.add_option("--rtol", run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->check(jello::kPositive);
+  app.add_option("--atol", run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->check(jello::kPositive);
 
   bool json = false;
   auto* checkOption = app.add_flag("--check", "stability analysis: the largest stable dt of every integrator, and "

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "physics.h"
+#include "plot.h"
 
 namespace jello {
 
@@ -82,12 +83,6 @@ State measure(const Model& model, const State& start, double time, Tolerances to
   row->wallSeconds = best;
   row->diverged = run.diverged;
   return run.end;
-}
-
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
 }
 
 double rms(const State& a, const State& b, double* largest) {
@@ -411,8 +406,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     std::fprintf(stderr, "jello: %s\n", e.what());
     return kExitBadInput;
   }
-  std::string plot = "cd " + shellQuoted(options.dir) + " && gnuplot report.gp 2>/dev/null";
-  bool drawn = std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(plot.c_str()) == 0;
+  bool drawn = runGnuplot(options.dir, "report.gp");
   if (!drawn) std::fprintf(stderr, "jello: gnuplot is not installed or failed: report.png was not drawn\n");
 
   std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",

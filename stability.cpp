@@ -19,6 +19,7 @@
 #include "guard.h"
 #include "integrators.h"
 #include "jacobian.h"
+#include "plot.h"
 
 namespace jello {
 
@@ -309,10 +310,7 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
       return 2;
     }
   }
-  std::string quoted = "'";
-  for (char c : dir) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  quoted += "'";
-  bool drawn = std::system(("cd " + quoted + " && gnuplot stability-map.gp 2>/dev/null").c_str()) == 0;
+  bool drawn = runGnuplot(dir, "stability-map.gp");
   if (!drawn) std::fprintf(stderr, "jello: gnuplot is not installed or failed: stability-map.png was not drawn\n");
   std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
               drawn ? ", stability-map.png" : "");

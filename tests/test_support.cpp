@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stability.h"
 #include "vec3.h"
 
 namespace jello::test {
@@ -34,14 +35,7 @@ double rmsDistance(const double* a, const double* b) {
   return std::sqrt(sum / kNumPoints);
 }
 
-State restLattice() {
-  State state;
-  for (int i = 0; i < kLatticeSize; ++i)
-    for (int j = 0; j < kLatticeSize; ++j)
-      for (int k = 0; k < kLatticeSize; ++k)
-        store(state.p(), pointIndex(i, j, k), kRestSpacing * Vec3{double(i), double(j), double(k)});
-  return state;
-}
+State restLattice() { return restState(); }
 
 World springsOnlyWorld() {
   World w;

@@ -1,0 +1,29 @@
+// cli.h: CLI11 validators shared by jello and createWorld. CLI11's own number checks let
+// "inf" and "nan" through; a world's numbers must be finite.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <string>
+
+namespace jello {
+
+// A validator for finite numbers that also pass `accept`, described by `rule` ("> 0").
+template <class Accept>
+CLI::Validator finiteNumber(const std::string& rule, Accept accept) {
+  return CLI::Validator(
+      [rule, accept](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !accept(value)) {
+          return "must be a finite number" + (rule.empty() ? std::string() : " " + rule) + ", got " + text;
+        }
+        return {};
+      },
+      rule.empty() ? "finite" : rule);
+}
+
+inline const CLI::Validator kFinite = finiteNumber("", [](double) { return true; });
+inline const CLI::Validator kPositive = finiteNumber("> 0", [](double v) { return v > 0; });
+inline const CLI::Validator kNonNegative = finiteNumber(">= 0", [](double v) { return v >= 0; });
+
+}  // namespace jello
