@@ -158,15 +158,8 @@ int main(int argc, char** argv) {
   app.add_flag("--inside-out", insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
   sizeOption->excludes(fromOption);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return fail(std::string(e.what()) + " (see createWorld --help)");
-  }
+  int status = 0;
+  if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
 
   try {
     if (*describeOption) {

@@ -104,16 +104,8 @@ int main(int argc, char** argv) {
       app.add_flag("--bench", "benchmark the world (not available yet)"),
   };
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "jello: %s (see jello --help)\n", e.what());
-    return jello::kExitBadInput;
-  }
+  int status = 0;
+  if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
 
   for (CLI::Option* option : later) {
     if (option->count() > 0) {
