@@ -96,14 +96,4 @@ bool FrameSequence::save(const Image& image) {
 
 int countFrames(const std::string& dir) { return static_cast<int>(frameNames(dir).size()); }
 
-std::string newFramesDir(const std::string& parent, const std::string& stem) {
-  for (int i = 1;; ++i) {
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, "-%03d", i);
-    std::string candidate = parent + "/" + stem + suffix;
-    struct stat info {};
-    if (::stat(candidate.c_str(), &info) != 0) return candidate;
-  }
-}
-
 }  // namespace jello

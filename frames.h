@@ -47,7 +47,5 @@ class FrameSequence {
 // The number of files named like frames (NNNN.jpg) in dir; 0 when dir does not exist.
 int countFrames(const std::string& dir);
 
-// A folder name under `parent` that does not exist yet: parent/STEM-001, parent/STEM-002, ...
-std::string newFramesDir(const std::string& parent, const std::string& stem);
 
 }  // namespace jello

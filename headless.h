@@ -50,6 +50,9 @@ class FrameObserver {
 // of 1e-9 keeps T = 1, dt = 0.001 at 1000 steps despite rounding).
 long long stepsForTime(double time, double dt);
 
+// A folder name under `parent` that does not exist yet: parent/STEM-001, parent/STEM-002, ...
+std::string newFramesDir(const std::string& parent, const std::string& stem);
+
 // Reads the world of `options` and applies its overrides. On bad input prints one line on
 // stderr and returns false.
 bool loadRun(const RunOptions& options, WorldFile* out);
