@@ -25,6 +25,8 @@ xvfb=$!
 for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 [ -s "$work/display" ] || fail "Xvfb did not start"
 export DISPLAY=":$(head -1 "$work/display")"
+for _ in $(seq 100); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
+xdotool getmouselocation >/dev/null 2>&1 || fail "Xvfb on $DISPLAY does not answer"
 
 # Waits up to 15 s for a shell condition.
 wait_for() { for _ in $(seq 150); do eval "$1" && return 0; sleep 0.1; done; return 1; }
@@ -34,10 +36,13 @@ cd "$work"
 # In a sanitized build, the GLX driver that the window dlopens keeps its buffers to exit and is
 # unloaded by then, so LeakSanitizer cannot name (or be told to ignore) it: leaks are checked
 # in the off-screen runs, not in the window's.
-ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$jello" --max-frames 5000 "$world" >out 2>err &
-app=$!
-wait_for 'window=$(xdotool search --name "^Jello cube$" 2>/dev/null | head -1); [ -n "$window" ]' ||
-  fail "no window titled 'Jello cube'"
+start_jello() {
+  ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$jello" --max-frames 5000 "$world" >out 2>err &
+  app=$!
+  wait_for 'window=$(xdotool search --name "^Jello cube$" 2>/dev/null | head -1); [ -n "$window" ]'
+}
+# Once more if the first start found no window (a display that was still settling, seen once).
+start_jello || { kill "$app" 2>/dev/null; wait "$app" 2>/dev/null; start_jello; } || fail "no window titled 'Jello cube'"
 key() { xdotool key --window "$window" "$@"; }
 
 # The classic keys, none of which may upset the viewer.
