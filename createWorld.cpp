@@ -49,18 +49,9 @@ void warnAbout(const jello::World& world, const jello::State& state) {
   for (int c = 0; c < jello::kNumCoords; ++c)
     if (std::fabs(state.p()[c]) > jello::kBoxHalfSize) ++outside;
   if (outside) warn("the cube starts partly outside the box [-2,2]^3: the walls will push it in");
-  if (world.hasPlane) {
-    jello::Model model = jello::makeModel(world, state);
-    const jello::Plane& pl = world.plane;
-    int across = 0;
-    for (int q = 0; q < jello::kNumPoints; ++q) {
-      Vec3 p = jello::load(state.p(), q);
-      if ((pl.a * p.x + pl.b * p.y + pl.c * p.z + pl.d) * model.planeSide < 0) ++across;
-    }
-    if (across) {
-      warn("the cube starts across the inclined plane (" + std::to_string(across) +
-           " points on the far side of its centroid's side): the plane will push them back");
-    }
+  if (int across = jello::pointsAcrossPlane(jello::makeModel(world, state), state)) {
+    warn("the cube starts across the inclined plane (" + std::to_string(across) +
+         " points on the far side of its centroid's side): the plane will push them back");
   }
 }
 

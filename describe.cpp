@@ -190,11 +190,7 @@ std::string describeWorld(const World& w, const State& state) {
   if (w.hasPlane) {
     const Plane& pl = w.plane;
     Model model = makeModel(w, state);
-    int across = 0;
-    for (int q = 0; q < kNumPoints; ++q) {
-      double s = pl.a * state.p()[3 * q] + pl.b * state.p()[3 * q + 1] + pl.c * state.p()[3 * q + 2] + pl.d;
-      if (s * model.planeSide < 0) ++across;
-    }
+    int across = pointsAcrossPlane(model, state);
     out += "plane       " + planeEquation(pl) +
            format("; the cube starts on its %s side", model.planeSide > 0 ? "positive" : "negative");
     out += across ? format(", %d points across it\n", across) : "\n";

@@ -76,23 +76,6 @@ OdeSystem jelloSystem(const Model& model, const Pull* pull) {
   return system;
 }
 
-int evaluationsPerStep(Integrator integrator) {
-  switch (integrator) {
-    case Integrator::Euler:
-    case Integrator::Symplectic:
-    case Integrator::Implicit:
-      return 1;
-    case Integrator::Midpoint:
-    case Integrator::Verlet:
-      return 2;
-    case Integrator::RK4:
-      return 4;
-    case Integrator::RK45:
-      return 6;
-  }
-  return 1;
-}
-
 int orderOf(Integrator integrator) {
   switch (integrator) {
     case Integrator::Midpoint:

@@ -44,9 +44,6 @@ struct StepStats {
   long long newtonIterations = 0;
 };
 
-// Derivative evaluations one step costs (RK45: per attempted substep; IMPLICIT: per Newton
-// iteration, plus one Jacobian each).
-int evaluationsPerStep(Integrator integrator);
 // The theoretical order of convergence.
 int orderOf(Integrator integrator);
 

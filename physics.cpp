@@ -102,6 +102,17 @@ Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, doubl
   return collisionForce(L, v, k, d);
 }
 
+int pointsAcrossPlane(const Model& model, const State& state) {
+  if (!model.world.hasPlane) return 0;
+  const Plane& pl = model.world.plane;
+  int across = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 p = load(state.p(), q);
+    if ((pl.a * p.x + pl.b * p.y + pl.c * p.z + pl.d) * model.planeSide < 0) ++across;
+  }
+  return across;
+}
+
 Vec3 fieldForce(const ForceField& field, Vec3 p) {
   const int r = field.resolution;
   if (r == 0) return {};

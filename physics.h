@@ -59,6 +59,8 @@ Vec3 wallForce(Vec3 p, Vec3 v, double k, double d);
 // Collision spring to the projection on the plane when the point is strictly on the side of
 // sign -side (side = Model::planeSide).
 Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d);
+// How many points of `state` are strictly on the far side of the model's plane (0 without one).
+int pointsAcrossPlane(const Model& model, const State& state);
 // The force field at p: trilinear inside the box (walls included), zero outside.
 Vec3 fieldForce(const ForceField& field, Vec3 p);
 

@@ -60,8 +60,6 @@ constexpr unsigned char kFont[64][kGlyphHeight] = {
     {0x04, 0x0A, 0x11, 0x00, 0x00, 0x00, 0x00}, {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1F},
 };
 
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-
 void vertex(Vec3 p) { glVertex3d(p.x, p.y, p.z); }
 
 // Lattice point on face (axis, side) at face coordinates (u, v): index[axis] = side,

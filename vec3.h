@@ -22,6 +22,7 @@ inline Vec3& operator+=(Vec3& a, Vec3 b) {
 }
 inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
 // Reads/writes point q of a flat xyz-interleaved array (3 doubles per point).
 inline Vec3 load(const double* xyz, int q) { return {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]}; }

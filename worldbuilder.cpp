@@ -53,8 +53,6 @@ Vec3 rotate(Vec3 v, Vec3 degrees) {
   return v;
 }
 
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-
 }  // namespace
 
 Recipe defaultRecipe() {

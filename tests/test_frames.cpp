@@ -35,8 +35,6 @@ double meanAbsoluteDifference(const Image& a, const Image& b) {
   return sum / a.rgb.size();
 }
 
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-
 // Where a pinhole camera on the sphere (SPEC section 5: looking at the origin, +z up) puts a
 // point, in pixels from the top-left; computed here from first principles, not through GL.
 void projectToPixel(const Camera& camera, Vec3 point, int width, int height, double* x, double* y) {

@@ -12,8 +12,6 @@
 namespace jello {
 namespace {
 
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-
 // The rest lattice centred on the origin, every point jittered, drifting and spinning.
 State tumblingCube(unsigned seed, double jitter) {
   State state = test::restLattice();
