@@ -57,14 +57,14 @@ bool fitsPattern(const ForceField& field, Vec3 (*pattern)(Vec3), double* strengt
   const std::size_t nodes = field.forces.size() / 3;
   double num = 0, den = 0;
   for (std::size_t node = 0; node < nodes; ++node) {
-    Vec3 g = pattern(nodePosition(node, r)), f = load(field.forces.data(), static_cast<int>(node));
+    Vec3 g = pattern(nodePosition(node, r)), f = field.node(node);
     num += dot(f, g);
     den += dot(g, g);
   }
   if (den == 0) return false;
   *strength = num / den;
   for (std::size_t node = 0; node < nodes; ++node) {
-    Vec3 g = pattern(nodePosition(node, r)), f = load(field.forces.data(), static_cast<int>(node));
+    Vec3 g = pattern(nodePosition(node, r)), f = field.node(node);
     Vec3 misfit = f - *strength * g;
     if (std::max({std::fabs(misfit.x), std::fabs(misfit.y), std::fabs(misfit.z)}) > kFileRounding) return false;
   }
@@ -102,9 +102,9 @@ FieldShape classifyField(const ForceField& field) {
   if (nodes == 0) return shape;
   shape.smallest = INFINITY;
   bool zero = true, uniform = true;
-  Vec3 first = load(f.data(), 0);
+  Vec3 first = field.node(0);
   for (std::size_t node = 0; node < nodes; ++node) {
-    Vec3 v = load(f.data(), static_cast<int>(node));
+    Vec3 v = field.node(node);
     double magnitude = length(v);
     shape.smallest = std::min(shape.smallest, magnitude);
     shape.largest = std::max(shape.largest, magnitude);

@@ -1,6 +1,7 @@
 // graphics.h: what the command line needs of the pictures: the GLUT window, and frames rendered
-// off-screen. A build without the GL development packages links nographics.cpp instead, whose
-// functions say so; the physics never depends on either.
+// off-screen. They live in a shared library, libjello_graphics.so, which jello loads only when
+// a run needs pictures: a headless run without --frames loads no GL, GLUT, X11 or JPEG
+// library, and a build without the GL development packages has no such library at all.
 #pragma once
 
 #include <memory>
@@ -23,9 +24,7 @@ struct PictureOptions {
   int width = 640, height = 480;
 };
 
-// False when this build has no GL.
-bool graphicsBuilt();
-
+// In libjello_graphics.so:
 // True when a window can be opened; otherwise why not, in a few words.
 bool displayAvailable(std::string* why);
 
@@ -35,5 +34,20 @@ std::unique_ptr<FrameObserver> makeOffscreenFrames(const PictureOptions& picture
 
 // Opens the viewer (SPEC.md section 5) on the world of `run`; returns the exit status.
 int runViewer(const RunOptions& run, const PictureOptions& pictures);
+
+// The library's functions, as jello finds them after loading it.
+struct GraphicsApi {
+  bool (*displayAvailable)(std::string* why);
+  std::unique_ptr<FrameObserver> (*makeOffscreenFrames)(const PictureOptions& pictures);
+  int (*runViewer)(const RunOptions& run, const PictureOptions& pictures);
+};
+// The library's one exported entry point; its name is kGraphicsEntry.
+extern "C" const GraphicsApi* jelloGraphicsApi();
+constexpr const char* kGraphicsEntry = "jelloGraphicsApi";
+constexpr const char* kGraphicsLibrary = "libjello_graphics.so";
+
+// In jello: loads the library (once) from the executable's folder or the build folder. nullptr,
+// with the reason in a few words in *why, when this build has none or it cannot be loaded.
+const GraphicsApi* loadGraphics(std::string* why);
 
 }  // namespace jello

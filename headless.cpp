@@ -139,6 +139,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     std::fprintf(stderr, "jello: %s\n", e.what());
     return kExitBadInput;
   }
+  std::printf("%s\n", sceneLine(model.scene, world).c_str());
   for (long long s = 1; s <= steps; ++s) {
     stepper.step(model, state, world.dt);
     // Every step: the cheap test of SPEC (non-finite, 100 m); every drawn frame, but not more

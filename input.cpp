@@ -127,11 +127,11 @@ class Parser {
   std::array<std::string_view, kMaxTokensKept> tokens_{};
 };
 
-void readPoints(Parser& in, double* xyz, const std::string& what) {
+void readPoints(Parser& in, double* points, const std::string& what) {
   for (int q = 0; q < kNumPoints; ++q) {
     std::string field = what + latticeLabel(q);
     in.record(3, field);
-    for (int axis = 0; axis < 3; ++axis) xyz[3 * q + axis] = in.number(axis, field);
+    for (int axis = 0; axis < 3; ++axis) points[coordIndex(q, axis)] = in.number(axis, field);
   }
 }
 
@@ -309,8 +309,11 @@ std::string formatWorld(const World& w, const State& state) {
   out += std::to_string(w.field.resolution) + '\n';
   const std::vector<double>& f = w.field.forces;
   for (std::size_t i = 0; i + 2 < f.size(); i += 3) appendLine(out, {f[i], f[i + 1], f[i + 2]});
-  for (const double* xyz : {state.p(), state.v()}) {
-    for (int q = 0; q < kNumPoints; ++q) appendLine(out, {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
+  for (const double* points : {state.p(), state.v()}) {
+    for (int q = 0; q < kNumPoints; ++q) {
+      Vec3 a = load(points, q);
+      appendLine(out, {a.x, a.y, a.z});
+    }
   }
   return out;
 }

@@ -17,7 +17,7 @@ void buildPattern(const Model& model, AccelerationJacobian* out) {
   std::vector<Eigen::Triplet<double>> entries;
   auto block = [&](int row, int column) {
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) entries.emplace_back(3 * row + i, 3 * column + j, 0.0);
+      for (int j = 0; j < 3; ++j) entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
   };
   std::vector<std::pair<int, int>> blocks;
   for (const Spring& s : model.springs)
@@ -35,19 +35,20 @@ void buildPattern(const Model& model, AccelerationJacobian* out) {
     const int* at = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
     return static_cast<int>(at - inner);
   };
-  out->blockStart.clear();
+  out->blockSlots.clear();
   for (auto [row, column] : blocks) {
-    std::array<int, 3> start;
-    for (int j = 0; j < 3; ++j) start[j] = find(3 * row, 3 * column + j);
-    out->blockStart.push_back(start);
+    BlockSlots slots;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) slots[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
+    out->blockSlots.push_back(slots);
   }
   out->diagonal.resize(kNumCoords);
   for (int i = 0; i < kNumCoords; ++i) out->diagonal[i] = find(i, i);
 }
 
-void addBlock(double* values, const std::array<int, 3>& start, const Mat3& block, double scale) {
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) values[start[j] + i] += scale * block(i, j);
+void addBlock(double* values, const BlockSlots& slots, const Mat3& block, double scale) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) values[slots[3 * i + j]] += scale * block(i, j);
 }
 
 }  // namespace
@@ -114,7 +115,7 @@ Mat3 fieldJacobian(const ForceField& field, Vec3 p) {
       slope[a] = bit[a] ? perMetre : -perMetre;
     }
     std::size_t node = (static_cast<std::size_t>(cell[0] + bit[0]) * r + (cell[1] + bit[1])) * r + (cell[2] + bit[2]);
-    Eigen::Vector3d f(field.forces[3 * node], field.forces[3 * node + 1], field.forces[3 * node + 2]);
+    Eigen::Vector3d f = col(field.node(node));
     Eigen::Vector3d dw(slope[0] * factor[1] * factor[2], factor[0] * slope[1] * factor[2],
                        factor[0] * factor[1] * slope[2]);
     J += f * dw.transpose();
@@ -124,7 +125,7 @@ Mat3 fieldJacobian(const ForceField& field, Vec3 p) {
 
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out) {
-  if (out->blockStart.size() != 4 * model.springs.size() + kNumPoints) buildPattern(model, out);
+  if (out->blockSlots.size() != 4 * model.springs.size() + kNumPoints) buildPattern(model, out);
   const World& w = model.world;
   const double perMass = 1.0 / w.mass;
   double* dp = out->dAdp.valuePtr();
@@ -137,8 +138,8 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
     springJacobian(load(p, s.a) - load(p, s.b), load(v, s.a) - load(v, s.b), w.kElastic, w.dElastic, s.rest, &dFdL,
                    &dFdw);
     for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
-      addBlock(dp, out->blockStart[slot], dFdL, sign * perMass);
-      addBlock(dv, out->blockStart[slot], dFdw, sign * perMass);
+      addBlock(dp, out->blockSlots[slot], dFdL, sign * perMass);
+      addBlock(dv, out->blockSlots[slot], dFdw, sign * perMass);
       ++slot;
     }
   }
@@ -153,8 +154,8 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
       blockV += planeV;
     }
     if (pull && pull->point == q) blockP -= pull->stiffness * Mat3::Identity();
-    addBlock(dp, out->blockStart[slot], blockP, perMass);
-    addBlock(dv, out->blockStart[slot], blockV, perMass);
+    addBlock(dp, out->blockSlots[slot], blockP, perMass);
+    addBlock(dv, out->blockSlots[slot], blockV, perMass);
   }
 }
 

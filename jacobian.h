@@ -16,6 +16,7 @@ namespace jello {
 
 using Mat3 = Eigen::Matrix3d;
 using SparseMatrix = Eigen::SparseMatrix<double>;
+using BlockSlots = std::array<int, 9>;
 
 // Derivatives of springForce(L, relVel, k, d, rest) with respect to L and to relVel. With the
 // geometric term: dF/dL = -k [u u^T + (1 - rest/|L|) P] - (d/|L|) [u (P w)^T + (w.u) P], where
@@ -35,9 +36,10 @@ Mat3 fieldJacobian(const ForceField& field, Vec3 p);
 // joins, zeros kept. It is built on the first assembly; later ones only write values.
 struct AccelerationJacobian {
   SparseMatrix dAdp, dAdv;
-  // Where each block's three columns start in the value arrays: the 4 blocks (aa, ab, ba, bb)
-  // of every spring in order, then the diagonal block of every point.
-  std::vector<std::array<int, 3>> blockStart;
+  // Where each block's entries (row-major) are in the value arrays: the 4 blocks (aa, ab, ba,
+  // bb) of every spring in order, then the diagonal block of every point. A block's rows are
+  // not adjacent in the per-point layout (see coordIndex), so each entry has its own slot.
+  std::vector<BlockSlots> blockSlots;
   std::vector<int> diagonal;  // value index of each diagonal entry
 };
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,

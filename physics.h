@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "vec3.h"
@@ -33,24 +34,80 @@ struct Spring {
 // Springs grouped by offset, in the order of kSpringOffsets.
 std::vector<Spring> buildSprings();
 
+// The springs of one row of kSpringOffsets, for the force kernel: point q is joined to point
+// q + delta for every q in the spans where mask[q] is 1. A span is a run of whole lattice rows
+// (fixed i and j) whose neighbours' rows exist; inside a row, a neighbour beyond the last k
+// has mask 0: the kernel computes that slot and discards it, which keeps its loops regular
+// (6,832 slots for 6,220 springs).
+struct SpringGroup {
+  struct Span {
+    int begin, end;  // point indices, end exclusive
+  };
+  int delta = 0;  // pointIndex(di, dj, dk), > 0 for every row of the table
+  double rest = 0;
+  std::vector<Span> spans;
+  std::vector<double> mask;  // kNumPoints entries, 1.0 or 0.0
+};
+std::vector<SpringGroup> buildSpringGroups();
+
+// What a world needs of the force computation, decided once when it is loaded (SPEC.md
+// section 2 defines every term; leaving one out changes no result).
+enum class FieldUse { Absent, Zero, Uniform, Trilinear };
+struct Scene {
+  bool dampers = true;  // the springs' dampers (dElastic != 0)
+  bool plane = true;    // an inclined plane exists
+  FieldUse field = FieldUse::Trilinear;
+  Vec3 uniformForce;  // N, for FieldUse::Uniform
+};
+// The scene of a world: the field is Absent at resolution 0, Zero when every node is exactly
+// zero, Uniform when every node is exactly the same force.
+Scene analyseScene(const World& world);
+// "scene: kept: ...; left out: ...", naming every term of the force.
+std::string sceneLine(const Scene& scene, const World& world);
+
+// Total force on every point (per-point arrays, see coordIndex) for positions p and velocities
+// v, with the user's pull when there is one.
+struct Model;
+struct Pull;
+using ForceKernel = void (*)(const Model& model, const double* p, const double* v, double* force, const Pull* pull);
+
+// Which instantiation of the force kernel a model uses: the one made for its scene, or the one
+// that computes every term (the reference the specialisations are tested and timed against).
+enum class KernelChoice { Specialised, General };
+
 // A world ready to simulate: its parameters and what is derived from them once.
 struct Model {
   World world;
   std::vector<Spring> springs;
+  std::vector<SpringGroup> groups;
+  Scene scene;
+  ForceKernel kernel = nullptr;
   // +1 or -1: the sign of a*x + b*y + c*z + d on the allowed side of the inclined plane, the
   // side holding the centroid of the initial positions (+1 when the centroid is on the plane).
   double planeSide = 1;
 };
-Model makeModel(const World& world, const State& initial);
+Model makeModel(const World& world, const State& initial, KernelChoice choice = KernelChoice::Specialised);
 
 // Returns L/|L| and writes |L|; a zero vector gives a zero direction. The one place where
 // zero-length vectors are dealt with: every force term built on it exerts no force along a
-// direction it cannot define.
-Vec3 direction(Vec3 L, double* len);
+// direction it cannot define. (A select, not a branch, so that the spring loop vectorises.)
+inline Vec3 direction(Vec3 L, double* len) {
+  *len = length(L);
+  const double inverse = *len != 0 ? 1.0 / *len : 0.0;
+  return inverse * L;
+}
+
+// Spring and damper, as magnitudes along u = L/|L| (positive pushes a away from b).
+inline double springTension(double len, double k, double rest) { return -k * (len - rest); }
+inline double damperTension(Vec3 relVel, Vec3 u, double d) { return -d * dot(relVel, u); }
 
 // Damped spring of rest length `rest` between a and b: L = p_a - p_b, relVel = v_a - v_b.
 // F_a = -k (|L| - rest) u - d (relVel . u) u; zero when |L| = 0.
-Vec3 springForce(Vec3 L, Vec3 relVel, double k, double d, double rest);
+inline Vec3 springForce(Vec3 L, Vec3 relVel, double k, double d, double rest) {
+  double len;
+  Vec3 u = direction(L, &len);
+  return (springTension(len, k, rest) + damperTension(relVel, u, d)) * u;
+}
 // Collision spring of rest length 0 from a fixed contact point c to the point: L = p - c.
 // F = -k L - d (v . u) u.
 Vec3 collisionForce(Vec3 L, Vec3 v, double k, double d);
@@ -74,10 +131,11 @@ struct Pull {
 // F = stiffness (target - p) on the pulled point.
 Vec3 pullForce(const Pull& pull, Vec3 p);
 
-// Total force on every point (kNumCoords doubles, xyz-interleaved) for positions p and
-// velocities v, with the user's pull when there is one.
-void computeForces(const Model& model, const double* p, const double* v, double* force,
-                   const Pull* pull = nullptr);
+// The model's kernel: total force on every point for positions p and velocities v.
+inline void computeForces(const Model& model, const double* p, const double* v, double* force,
+                          const Pull* pull = nullptr) {
+  model.kernel(model, p, v, force, pull);
+}
 
 // The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass.
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr);

@@ -172,7 +172,7 @@ State restState() {
 
 State faceOnWallState() {
   State s = restState();
-  for (int q = 0; q < kNumPoints; ++q) s.p()[3 * q] += -kBoxHalfSize - kWallPress;
+  for (int q = 0; q < kNumPoints; ++q) s.p()[coordIndex(q, 0)] += -kBoxHalfSize - kWallPress;
   return s;
 }
 

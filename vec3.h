@@ -24,12 +24,4 @@ inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
-// Reads/writes point q of a flat xyz-interleaved array (3 doubles per point).
-inline Vec3 load(const double* xyz, int q) { return {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]}; }
-inline void store(double* xyz, int q, Vec3 a) {
-  xyz[3 * q] = a.x;
-  xyz[3 * q + 1] = a.y;
-  xyz[3 * q + 2] = a.z;
-}
-
 }  // namespace jello

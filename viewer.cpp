@@ -347,8 +347,6 @@ void motion(int x, int y) {
 
 }  // namespace
 
-bool graphicsBuilt() { return true; }
-
 int runViewer(const RunOptions& run, const PictureOptions& pictures) {
   WorldFile file;
   if (!loadRun(run, &file)) return kExitBadInput;
@@ -372,6 +370,11 @@ int runViewer(const RunOptions& run, const PictureOptions& pictures) {
   if (pictures.saveFromStart) toggleSaving(v);
   glutMainLoop();
   return v.diverged ? kExitDiverged : kExitOk;
+}
+
+extern "C" const GraphicsApi* jelloGraphicsApi() {
+  static const GraphicsApi api{&displayAvailable, &makeOffscreenFrames, &runViewer};
+  return &api;
 }
 
 }  // namespace jello

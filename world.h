@@ -2,7 +2,7 @@
 // (SPEC.md section 1).
 //
 // Units: metres, seconds, kilograms, newtons. Stiffness in N/m, damping in N s/m.
-// Lattice index (i,j,k) maps to axes (x,y,z); point (i,j,k) is stored at
+// Lattice index (i,j,k) maps to axes (x,y,z); point (i,j,k) is point number
 // pointIndex(i,j,k) = i*64 + j*8 + k, in the file's order.
 #pragma once
 
@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "vec3.h"
 
 namespace jello {
 
@@ -22,6 +24,18 @@ constexpr int kMaxResolution = 512;  // R^3 nodes * 24 bytes must fit in memory 
 
 constexpr int pointIndex(int i, int j, int k) {
   return (i * kLatticeSize + j) * kLatticeSize + k;
+}
+
+// A per-point array (positions, velocities, forces) holds kNumCoords doubles, structure of
+// arrays: all x, then all y, then all z, each in point order. Coordinate `axis` (0 x, 1 y,
+// 2 z) of point q is element coordIndex(q, axis). The force kernel's loops then run over
+// contiguous, equally spaced doubles and vectorise.
+constexpr int coordIndex(int q, int axis) { return axis * kNumPoints + q; }
+inline Vec3 load(const double* a, int q) { return {a[q], a[kNumPoints + q], a[2 * kNumPoints + q]}; }
+inline void store(double* a, int q, Vec3 value) {
+  a[q] = value.x;
+  a[kNumPoints + q] = value.y;
+  a[2 * kNumPoints + q] = value.z;
 }
 
 // "[i][j][k]" for point q, as in the course's p[i][j][k].
@@ -44,9 +58,16 @@ struct Plane {
 // Forces (newtons) on an R^3 grid spanning the box. Node (i,j,k) sits at
 // (-2 + 4i/(R-1), -2 + 4j/(R-1), -2 + 4k/(R-1)); its force is forces[3*(i*R*R + j*R + k) + axis].
 // R = 0: no field. R = 1: one uniform force inside the box.
+// The nodes' forces stay interleaved (xyz per node): interpolation reads whole nodes.
 struct ForceField {
   int resolution = 0;
   std::vector<double> forces;
+  Vec3 node(std::size_t n) const { return {forces[3 * n], forces[3 * n + 1], forces[3 * n + 2]}; }
+  void setNode(std::size_t n, Vec3 f) {
+    forces[3 * n] = f.x;
+    forces[3 * n + 1] = f.y;
+    forces[3 * n + 2] = f.z;
+  }
 };
 
 // Everything a world file fixes except the state. Read once, never changed by a run.
@@ -61,8 +82,8 @@ struct World {
   ForceField field;
 };
 
-// Positions (m) and velocities (m/s) of the 512 points, each a flat xyz-interleaved array
-// of kNumCoords doubles: y[0 .. kNumCoords) positions, y[kNumCoords .. 2*kNumCoords) velocities.
+// Positions (m) and velocities (m/s) of the 512 points, each a per-point array of kNumCoords
+// doubles (see coordIndex): y[0 .. kNumCoords) positions, y[kNumCoords .. 2*kNumCoords) velocities.
 // One contiguous array so that integrators copy and combine whole states cheaply.
 struct State {
   std::vector<double> y = std::vector<double>(2 * kNumCoords, 0.0);

@@ -34,7 +34,7 @@ void fillNodes(ForceField& field, int r, const std::function<Vec3(Vec3)>& force)
     for (int j = 0; j < r; ++j)
       for (int k = 0; k < r; ++k) {
         Vec3 p = r == 1 ? Vec3{} : Vec3{fieldNodeCoordinate(i, r), fieldNodeCoordinate(j, r), fieldNodeCoordinate(k, r)};
-        store(field.forces.data(), (i * r + j) * r + k, force(p));
+        field.setNode((i * r + j) * r + k, force(p));
       }
 }
 

@@ -23,14 +23,41 @@ bool exists(const std::string& path) {
   return ::stat(path.c_str(), &info) == 0;
 }
 
-TEST(Cli, HeadlessRunPrintsOneSummaryLine) {
+TEST(Cli, HeadlessRunPrintsTheSceneAndOneSummaryLine) {
   test::CommandResult r = runJello("--headless --steps 20 '" + dataPath("rotate.w") + "'");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(lineCount(r.out), 1) << r.out;
+  EXPECT_EQ(lineCount(r.out), 2) << r.out;
+  EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
   for (const char* part : {"rotate.w", "RK4", "dt=0.001 ", "steps=20 ", "simulated=0.02 s", "wall=", "us/step"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
   }
   EXPECT_EQ(r.err, "") << "quiet when stderr is not a terminal";
+}
+
+TEST(Cli, BenchTimesEveryIntegratorWithBothKernels) {
+  test::CommandResult r = runJello("--bench --steps 2 '" + dataPath("rotate.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
+  for (const char* part : {"specialised", "general", "speed-up", "force evaluation", "evaluations per second",
+                           "EULER", "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world loading"}) {
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
+  }
+}
+
+// The pictures' library is loaded for frames and only for them.
+TEST(Cli, AHeadlessRunLoadsNoGlLibrary) {
+  const char* pictureLibraries[] = {"libGL.so", "libOSMesa.so", "libglut.so", "libX11.so", "libjpeg.so"};
+  test::CommandResult r = runJello("--headless --steps 3 '" + dataPath("rotate.w") + "'", "", "env LD_DEBUG=libs");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("calling init"), std::string::npos) << "LD_DEBUG says nothing here";
+  for (const char* library : pictureLibraries) EXPECT_EQ(r.err.find(library), std::string::npos) << library;
+#ifdef JELLO_HAVE_GRAPHICS
+  std::string dir = test::makeTempDir();
+  r = runJello("--headless --steps 3 --frames frames '" + dataPath("rotate.w") + "'", dir, "env LD_DEBUG=libs");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("libOSMesa.so"), std::string::npos) << "frames were drawn without OSMesa?";
+  test::removeTree(dir);
+#endif
 }
 
 TEST(Cli, DefaultLengthIsThreeHundredFramesOfNSteps) {
@@ -133,8 +160,7 @@ TEST_P(CliUsage, ExitsTwoWithOneLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliUsage,
-    ::testing::Values(                      UsageCase{"bench", "--bench", "--bench is not available yet"},
-                      UsageCase{"unknown_option", "--headless --fast", "--fast"},
+    ::testing::Values(UsageCase{"unknown_option", "--headless --fast", "--fast"},
                       UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
                       UsageCase{"negative_steps", "--headless --steps -3", "--steps"},
                       UsageCase{"zero_dt", "--headless --dt 0", "--dt"},

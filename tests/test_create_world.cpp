@@ -113,7 +113,7 @@ std::vector<OptionCase> optionCases() {
   // Field node (i,j,k) of a world.
   auto nodeAt = [](const World& w, int i, int j, int k) {
     int r = w.field.resolution;
-    return load(w.field.forces.data(), (i * r + j) * r + k);
+    return w.field.node((i * r + j) * r + k);
   };
   return {
       {"integrator", "--integrator euler", {"integrator"}, [](const WorldFile& f) { EXPECT_EQ(f.world.integrator, Integrator::Euler); }},
@@ -235,7 +235,7 @@ TEST(CreateWorld, LinearFieldExpressionIsExactAtEveryNode) {
       for (int j = 0; j < r; ++j)
         for (int k = 0; k < r; ++k) {
           Vec3 p{fieldNodeCoordinate(i, r), fieldNodeCoordinate(j, r), fieldNodeCoordinate(k, r)};
-          Vec3 got = load(field.forces.data(), (i * r + j) * r + k), want = linear(p);
+          Vec3 got = field.node((i * r + j) * r + k), want = linear(p);
           ASSERT_NEAR(got.x, want.x, tolerance) << i << " " << j << " " << k;
           ASSERT_NEAR(got.y, want.y, tolerance);
           ASSERT_NEAR(got.z, want.z, tolerance);

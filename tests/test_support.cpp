@@ -19,10 +19,12 @@ std::string dataPath(const std::string& name) { return std::string(JELLO_TEST_DA
 std::vector<double> readExpectedPositions(const std::string& name) {
   std::ifstream in(dataPath("expected/" + name));
   if (!in) throw std::runtime_error("cannot open expected/" + name);
-  std::vector<double> p;
+  std::vector<double> xyz;  // the file lists the points' x y z in turn
   double value;
-  while (in >> value) p.push_back(value);
-  if (p.size() != static_cast<std::size_t>(kNumCoords)) throw std::runtime_error("bad expected file " + name);
+  while (in >> value) xyz.push_back(value);
+  if (xyz.size() != static_cast<std::size_t>(kNumCoords)) throw std::runtime_error("bad expected file " + name);
+  std::vector<double> p(kNumCoords);
+  for (int q = 0; q < kNumPoints; ++q) store(p.data(), q, {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
   return p;
 }
 

@@ -1,0 +1,85 @@
+// Google Benchmark: the force kernel (specialised and general) and one step of each integrator
+// on the course worlds. Run `build/benchmarks/jello_benchmarks` from the project's top folder;
+// `jello --bench WORLD` prints the same figures for any one world.
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "integrators.h"
+#include "physics.h"
+#include "world.h"
+
+namespace {
+
+using namespace jello;
+
+const char* const kWorlds[] = {"rotate", "jello", "moveLeft", "skewedCorner", "gravity"};
+
+const WorldFile& courseWorld(int index) {
+  static std::vector<WorldFile> files = [] {
+    std::vector<WorldFile> out;
+    for (const char* name : kWorlds) out.push_back(readWorldFile(std::string(JELLO_WORLD_DIR) + "/" + name + ".w"));
+    return out;
+  }();
+  return files[index];
+}
+
+void Forces(benchmark::State& bench, int world, KernelChoice choice) {
+  const WorldFile& f = courseWorld(world);
+  Model model = makeModel(f.world, f.state, choice);
+  std::vector<double> force(kNumCoords);
+  for (auto _ : bench) {
+    computeForces(model, f.state.p(), f.state.v(), force.data());
+    benchmark::DoNotOptimize(force.data());
+  }
+  bench.counters["evaluations/s"] = benchmark::Counter(static_cast<double>(bench.iterations()), benchmark::Counter::kIsRate);
+}
+
+void Step(benchmark::State& bench, int world, KernelChoice choice, Integrator integrator) {
+  const WorldFile& f = courseWorld(world);
+  Model model = makeModel(f.world, f.state, choice);
+  State state = f.state;
+  Stepper stepper(integrator);
+  long long steps = 0;
+  for (auto _ : bench) {
+    stepper.step(model, state, f.world.dt);
+    // Back to the start now and then, so that every world is timed in its own regime.
+    if (++steps % 1000 == 0) state = f.state;
+  }
+}
+
+void WorldLoading(benchmark::State& bench) {
+  const std::string path = std::string(JELLO_WORLD_DIR) + "/rotate.w";
+  for (auto _ : bench) benchmark::DoNotOptimize(readWorldFile(path));
+}
+
+void registerAll() {
+  for (int w = 0; w < static_cast<int>(std::size(kWorlds)); ++w) {
+    for (auto [choice, name] : {std::pair{KernelChoice::Specialised, "specialised"}, {KernelChoice::General, "general"}}) {
+      benchmark::RegisterBenchmark((std::string("Forces/") + kWorlds[w] + "/" + name).c_str(), Forces, w, choice)
+          ->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark((std::string("StepRK4/") + kWorlds[w] + "/" + name).c_str(), Step, w, choice,
+                                   Integrator::RK4)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::Symplectic, Integrator::Verlet,
+                                Integrator::RK45}) {
+    benchmark::RegisterBenchmark((std::string("Step/rotate/") + integratorName(integrator)).c_str(), Step, 0,
+                                 KernelChoice::Specialised, integrator)
+        ->Unit(benchmark::kMicrosecond);
+  }
+  benchmark::RegisterBenchmark("WorldLoading/rotate", WorldLoading)->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  registerAll();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

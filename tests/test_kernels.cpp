@@ -1,0 +1,186 @@
+// The force kernel specialised for a scene against the general one (every term at every point),
+// and the scene analysis that chooses between them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "integrators.h"
+#include "physics.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+// max |a - b| over max |b|: the difference relative to the largest coordinate.
+double relativeDifference(const std::vector<double>& a, const std::vector<double>& b) {
+  double difference = 0, largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    difference = std::max(difference, std::fabs(a[i] - b[i]));
+    largest = std::max(largest, std::fabs(b[i]));
+  }
+  return difference / largest;
+}
+
+// 1000 steps with each kernel from the same state; the largest relative difference of the
+// states along the way (a NaN counts as a failure).
+double kernelsDisagreeBy(const World& world, const State& start, Integrator integrator = Integrator::RK4) {
+  Model specialised = makeModel(world, start, KernelChoice::Specialised);
+  Model general = makeModel(world, start, KernelChoice::General);
+  EXPECT_NE(specialised.kernel, general.kernel);
+  State a = start, b = start;
+  Stepper sa(integrator), sb(integrator);
+  double worst = 0;
+  for (int s = 0; s < 1000; ++s) {
+    sa.step(specialised, a, world.dt);
+    sb.step(general, b, world.dt);
+    double d = relativeDifference(a.y, b.y);
+    if (!(d <= worst)) worst = d;  // keeps a NaN
+  }
+  EXPECT_EQ(findDivergedPoint(b), -1) << "the general run diverged: the comparison would mean little";
+  return worst;
+}
+
+class CourseKernels : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CourseKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
+  WorldFile f = readWorldFile(test::dataPath(GetParam()));
+  double d = kernelsDisagreeBy(f.world, f.state);
+  std::printf("%s: specialised and general kernels differ by %.3g relative\n", GetParam(), d);
+  EXPECT_LE(d, 1e-14);
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, CourseKernels,
+                         ::testing::Values("jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           return name.substr(0, name.find('.'));
+                         });
+
+// Random worlds that exercise every branch: with and without dampers, plane and field (absent,
+// zero, uniform, trilinear), thrown so that the cube meets walls and the plane within the run.
+World randomWorld(std::mt19937& random, State* start) {
+  std::uniform_real_distribution<double> unit(0, 1), centred(-1, 1);
+  World w;
+  w.integrator = Integrator::RK4;
+  w.dt = 2e-4;
+  w.kElastic = 200 + 800 * unit(random);
+  w.dElastic = random() % 3 == 0 ? 0 : unit(random);
+  w.kCollision = 500 + 1500 * unit(random);
+  w.dCollision = random() % 3 == 0 ? 0 : unit(random);
+  w.hasPlane = random() % 2 == 0;
+  if (w.hasPlane) w.plane = {centred(random), centred(random), 1 + unit(random), 0.8 + unit(random)};
+  const int kind = static_cast<int>(random() % 4);  // absent, zero, uniform, trilinear
+  if (kind > 0) {
+    w.field.resolution = 2 + static_cast<int>(random() % 5);
+    std::size_t nodes = static_cast<std::size_t>(w.field.resolution) * w.field.resolution * w.field.resolution;
+    w.field.forces.assign(3 * nodes, 0.0);
+    Vec3 constant{centred(random), centred(random), centred(random)};
+    for (std::size_t n = 0; n < nodes; ++n) {
+      if (kind == 2) w.field.setNode(n, constant);
+      if (kind == 3) w.field.setNode(n, Vec3{centred(random), centred(random), centred(random)});
+    }
+  }
+  *start = test::restLattice();
+  Vec3 shift{centred(random), centred(random), centred(random)};
+  Vec3 velocity = 6.0 * Vec3{centred(random), centred(random), centred(random)};
+  for (int q = 0; q < kNumPoints; ++q) {
+    store(start->p(), q, load(start->p(), q) + shift);
+    store(start->v(), q, velocity + 0.3 * Vec3{centred(random), centred(random), centred(random)});
+  }
+  return w;
+}
+
+TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
+  std::mt19937 random(20261122);
+  for (int world = 0; world < 12; ++world) {
+    State start;
+    World w = randomWorld(random, &start);
+    Scene scene = analyseScene(w);
+    double d = kernelsDisagreeBy(w, start);
+    std::printf("random world %d (dampers %d, plane %d, field %d): %.3g\n", world, scene.dampers, scene.plane,
+                static_cast<int>(scene.field), d);
+    EXPECT_LE(d, 1e-14) << "random world " << world;
+  }
+}
+
+// The culls are exact: a point a hair past a wall or across the plane gets the same force
+// from both kernels, and a force it would not get without the contact.
+TEST(Culling, APointJustPastAWallOrThePlaneIsNotMissed) {
+  World w = test::springsOnlyWorld();
+  w.kCollision = 1000;
+  w.dCollision = 0.5;
+  w.hasPlane = true;
+  w.plane = {0, 0, 1, 1};  // z = -1; the cube is above it
+  State s = test::restLattice();
+  Model specialised = makeModel(w, s, KernelChoice::Specialised), general = makeModel(w, s, KernelChoice::General);
+  for (Vec3 p : {Vec3{0.5, 0.5, -1 - 1e-12}, Vec3{2 + 1e-12, 0.5, 0.5}, Vec3{0.5, -2 - 1e-15, 0.5}}) {
+    State t = s;
+    store(t.p(), pointIndex(3, 3, 3), p);
+    store(t.v(), pointIndex(3, 3, 3), {1, 1, 1});  // so that the contact's damper adds 0.5 N
+    std::vector<double> a(kNumCoords), b(kNumCoords), none(kNumCoords);
+    computeForces(specialised, t.p(), t.v(), a.data());
+    computeForces(general, t.p(), t.v(), b.data());
+    EXPECT_EQ(a, b) << p.x << " " << p.y << " " << p.z;
+    World without = w;
+    without.kCollision = without.dCollision = 0;
+    Model free = makeModel(without, s);
+    computeForces(free, t.p(), t.v(), none.data());
+    EXPECT_NE(load(a.data(), pointIndex(3, 3, 3)).x + load(a.data(), pointIndex(3, 3, 3)).y +
+                  load(a.data(), pointIndex(3, 3, 3)).z,
+              load(none.data(), pointIndex(3, 3, 3)).x + load(none.data(), pointIndex(3, 3, 3)).y +
+                  load(none.data(), pointIndex(3, 3, 3)).z)
+        << "no contact force";
+  }
+}
+
+TEST(Scene, FieldAndPlaneAnalysis) {
+  World w;
+  EXPECT_EQ(analyseScene(w).field, FieldUse::Absent);
+  EXPECT_FALSE(analyseScene(w).plane);
+  w.field.resolution = 2;
+  w.field.forces.assign(24, 0.0);
+  EXPECT_EQ(analyseScene(w).field, FieldUse::Zero);
+  for (std::size_t n = 0; n < 8; ++n) w.field.setNode(n, {0, 0, -9.8});
+  EXPECT_EQ(analyseScene(w).field, FieldUse::Uniform);
+  EXPECT_EQ(analyseScene(w).uniformForce.z, -9.8);
+  w.field.setNode(7, {0, 0, std::nextafter(-9.8, 0.0)});
+  EXPECT_EQ(analyseScene(w).field, FieldUse::Trilinear);
+  w.dElastic = 0;
+  EXPECT_FALSE(analyseScene(w).dampers);
+  w.dElastic = 0.1;
+  w.hasPlane = true;
+  EXPECT_TRUE(analyseScene(w).dampers);
+  EXPECT_TRUE(analyseScene(w).plane);
+}
+
+// The scene line of a headless run (issue 7's examples).
+std::string sceneLineOf(const std::string& world) {
+  test::CommandResult r = test::runJello("--headless --steps 1 '" + test::dataPath(world) + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::string line = r.out.substr(0, r.out.find('\n'));
+  EXPECT_EQ(line.rfind("scene: kept: ", 0), 0u) << r.out;
+  return line;
+}
+
+TEST(Scene, MoveLeftLeavesOutFieldAndPlane) {
+  std::string line = sceneLineOf("moveLeft.w");
+  std::string left = line.substr(line.find("; left out: "));
+  EXPECT_NE(left.find("field (all zero)"), std::string::npos) << line;
+  EXPECT_NE(left.find("plane (none in the file)"), std::string::npos) << line;
+}
+
+TEST(Scene, RotateKeepsItsField) {
+  std::string line = sceneLineOf("rotate.w");
+  std::string kept = line.substr(0, line.find("; left out: "));
+  EXPECT_NE(kept.find("field (trilinear, 30^3 nodes)"), std::string::npos) << line;
+  EXPECT_NE(kept.find("plane"), std::string::npos) << line;
+}
+
+TEST(Scene, GravityIsAConstant) {
+  std::string line = sceneLineOf("gravity.w");
+  EXPECT_NE(line.find("field (uniform"), std::string::npos) << line;
+}
+
+}  // namespace
+}  // namespace jello
