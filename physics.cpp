@@ -160,6 +160,8 @@ int pointsAcrossPlane(const Model& model, const State& state) {
 namespace {
 // Trilinear interpolation of a field of resolution r >= 2 at a point inside the box. The cell
 // is clamped in floating point, so that a stray NaN never reaches the integer conversion.
+constexpr int kPaddedNode = 4;  // doubles per node in Model::paddedField
+
 struct CellCoordinate {
   int cell;
   double t;  // position within the cell, 0..1
@@ -169,23 +171,43 @@ inline CellCoordinate cellCoordinate(double x, double cellsPerMetre, double last
   int cell = static_cast<int>(std::floor(std::min(std::max(g, 0.0), lastCell)));
   return {cell, g - cell};
 }
+// A node's force: its 3 doubles in the world's field, or 4 in the kernel's padded copy (the
+// 4th is zero), which makes every interpolation step below one 256-bit vector operation.
+template <int kStride>
+struct NodeForce {
+  double c[kStride];
+};
+
+// From the nearer end, a + t (b - a) or b - (1 - t) (b - a): equal corners give back exactly
+// their value, so a uniform field interpolates to itself bit for bit (the kernel's constant
+// fast path agrees with this, where a sum of eight weighted corners would be off by an ulp or
+// two), and a node gives exactly its own force from either cell. t - 1 is exact for t >= 0.5.
+template <int kStride>
+inline NodeForce<kStride> lerp(const NodeForce<kStride>& a, const NodeForce<kStride>& b, double t) {
+  const bool nearA = t < 0.5;
+  const double s = nearA ? t : t - 1;
+  NodeForce<kStride> out;
+  for (int i = 0; i < kStride; ++i) out.c[i] = (nearA ? a.c[i] : b.c[i]) + s * (b.c[i] - a.c[i]);
+  return out;
+}
+
+template <int kStride>
 inline Vec3 trilinear(const double* f, int r, Vec3 p) {
   const double cellsPerMetre = (r - 1) / (2 * kBoxHalfSize), lastCell = r - 2;
   const CellCoordinate x = cellCoordinate(p.x, cellsPerMetre, lastCell), y = cellCoordinate(p.y, cellsPerMetre, lastCell),
                        z = cellCoordinate(p.z, cellsPerMetre, lastCell);
-  const double* base = f + 3 * ((x.cell * r + y.cell) * r + z.cell);
+  const double* base = f + kStride * ((x.cell * r + y.cell) * r + z.cell);
   auto node = [base, r](int di, int dj, int dk) {
-    const double* n = base + 3 * ((di * r + dj) * r + dk);
-    return Vec3{n[0], n[1], n[2]};
+    const double* n = base + kStride * ((di * r + dj) * r + dk);
+    NodeForce<kStride> out;
+    for (int i = 0; i < kStride; ++i) out.c[i] = n[i];
+    return out;
   };
-  // Nested linear interpolations, each from its nearer end: equal corners give back exactly
-  // their value, so a uniform field interpolates to itself bit for bit (the kernel's constant
-  // fast path agrees with this, where a sum of eight weighted corners would be off by an ulp or
-  // two), and a node gives exactly its own force from either cell.
-  auto lerp = [](Vec3 a, Vec3 b, double t) { return t < 0.5 ? a + t * (b - a) : b - (1 - t) * (b - a); };
-  const Vec3 c00 = lerp(node(0, 0, 0), node(0, 0, 1), z.t), c01 = lerp(node(0, 1, 0), node(0, 1, 1), z.t);
-  const Vec3 c10 = lerp(node(1, 0, 0), node(1, 0, 1), z.t), c11 = lerp(node(1, 1, 0), node(1, 1, 1), z.t);
-  return lerp(lerp(c00, c01, y.t), lerp(c10, c11, y.t), x.t);
+  using N = NodeForce<kStride>;
+  const N c00 = lerp(node(0, 0, 0), node(0, 0, 1), z.t), c01 = lerp(node(0, 1, 0), node(0, 1, 1), z.t);
+  const N c10 = lerp(node(1, 0, 0), node(1, 0, 1), z.t), c11 = lerp(node(1, 1, 0), node(1, 1, 1), z.t);
+  const N value = lerp(lerp(c00, c01, y.t), lerp(c10, c11, y.t), x.t);
+  return {value.c[0], value.c[1], value.c[2]};
 }
 }  // namespace
 
@@ -194,7 +216,7 @@ Vec3 fieldForce(const ForceField& field, Vec3 p) {
   if (r == 0 || !insideBox(p)) return {};
   const double* f = field.forces.data();
   if (r == 1) return {f[0], f[1], f[2]};
-  return trilinear(f, r, p);
+  return trilinear<3>(f, r, p);
 }
 
 Vec3 pullForce(const Pull& pull, Vec3 p) { return pull.stiffness * (pull.target - p); }
@@ -297,6 +319,12 @@ void addSpringGroup(const SpringGroup& g, double k, double d, const double* __re
   }
 }
 
+// Point by point, each interpolation step one vector operation on padded nodes: 40% faster
+// here than scalar steps, where vectorising across points (gathers) was 20% slower.
+void addTrilinearField(const double* padded, int r, const double* p, double* force) {
+  for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + trilinear<kPaddedNode>(padded, r, load(p, q)));
+}
+
 template <unsigned kFeatures>
 Vec3 fieldTerm(const Model& model, Vec3 p) {
   if constexpr (fieldOf(kFeatures) == kTrilinearField) return fieldForce(model.world.field, p);
@@ -335,10 +363,7 @@ void forceKernel(const Model& model, const double* p, const double* v, double* f
     if (field.resolution == 1) {
       for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + field.node(0));
     } else {
-      // Point by point: vectorised with gathers, this loop measured 20% slower here.
-      const double* f = field.forces.data();
-      const int r = field.resolution;
-      for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + trilinear(f, r, load(p, q)));
+      addTrilinearField(model.paddedField.data(), field.resolution, p, force);
     }
   }
   if (pull && pull->point >= 0) store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
@@ -369,6 +394,12 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   model.groups = buildSpringGroups();
   model.scene = analyseScene(world);
   model.kernel = kernelFor(model.scene, choice);
+  if (model.scene.field == FieldUse::Trilinear && world.field.resolution >= 2) {
+    const std::size_t nodes = world.field.forces.size() / 3;
+    model.paddedField.assign(kPaddedNode * nodes, 0.0);
+    for (std::size_t n = 0; n < nodes; ++n)
+      for (int axis = 0; axis < 3; ++axis) model.paddedField[kPaddedNode * n + axis] = world.field.forces[3 * n + axis];
+  }
   if (world.hasPlane) {
     Vec3 centroid;
     for (int q = 0; q < kNumPoints; ++q) centroid += load(initial.p(), q);

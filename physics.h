@@ -82,6 +82,9 @@ struct Model {
   std::vector<SpringGroup> groups;
   Scene scene;
   ForceKernel kernel = nullptr;
+  // A trilinear field's nodes, 4 doubles each (x, y, z, 0): the kernel's copy, for aligned
+  // vector arithmetic.
+  std::vector<double> paddedField;
   // +1 or -1: the sign of a*x + b*y + c*z + d on the allowed side of the inclined plane, the
   // side holding the centroid of the initial positions (+1 when the centroid is on the plane).
   double planeSide = 1;
