@@ -116,34 +116,21 @@ bool insideBox(Vec3 p) {
 }
 }  // namespace
 
-Vec3 collisionForce(Vec3 L, Vec3 v, double k, double d) {
-  double len;
-  Vec3 u = direction(L, &len);
-  return -k * L + (-d * dot(v, u)) * u;
-}
-
 Vec3 wallForce(Vec3 p, Vec3 v, double k, double d) {
   Vec3 force;
-  const double coord[3] = {p.x, p.y, p.z};
-  for (int axis = 0; axis < 3; ++axis) {
-    double beyond = 0;  // signed distance past the wall; the contact point is on the wall
-    if (coord[axis] > kBoxHalfSize) beyond = coord[axis] - kBoxHalfSize;
-    if (coord[axis] < -kBoxHalfSize) beyond = coord[axis] + kBoxHalfSize;
-    if (beyond == 0) continue;
-    Vec3 L;
-    (axis == 0 ? L.x : axis == 1 ? L.y : L.z) = beyond;
-    force += collisionForce(L, v, k, d);
-  }
+  for (int axis = 0; axis < 3; ++axis) force += wallForceAlong(axis, p, v, k, d);
   return force;
 }
 
 Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d) {
   Vec3 normal{plane.a, plane.b, plane.c};
   double s = dot(normal, p) + plane.d;
-  if (!(s * side < 0)) return {};
-  // p minus its orthogonal projection c = p - (s/|a|^2) a.
+  // p minus its orthogonal projection c = p - (s/|a|^2) a. Computed for every point and
+  // selected, so that the kernel's contact loop has no branch.
   Vec3 L = (s / dot(normal, normal)) * normal;
-  return collisionForce(L, v, k, d);
+  Vec3 f = collisionForce(L, v, k, d);
+  const bool across = s * side < 0;
+  return {across ? f.x : 0.0, across ? f.y : 0.0, across ? f.z : 0.0};
 }
 
 int pointsAcrossPlane(const Model& model, const State& state) {
@@ -261,11 +248,6 @@ Bounds boundsOf(const double* p) {
   return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}};
 }
 
-bool reachesWalls(const Bounds& b) {
-  return b.upper.x > kBoxHalfSize || b.upper.y > kBoxHalfSize || b.upper.z > kBoxHalfSize ||
-         b.lower.x < -kBoxHalfSize || b.lower.y < -kBoxHalfSize || b.lower.z < -kBoxHalfSize;
-}
-
 // Whether some point in the box `b` might be strictly across the plane: the smallest value of
 // side * (a x + b y + c z + d) over the box, at one of its corners, is not clearly positive.
 // The margin covers the rounding by which a point's own value may differ from the corner's.
@@ -325,8 +307,15 @@ void addTrilinearField(const double* padded, int r, const double* p, double* for
   for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + trilinear<kPaddedNode>(padded, r, load(p, q)));
 }
 
+// The field's force at a point that may be outside the box.
 template <unsigned kFeatures>
 Vec3 fieldTerm(const Model& model, Vec3 p) {
+  if constexpr (fieldOf(kFeatures) == kTrilinearField && (kFeatures & kCullingBit) != 0) {
+    // The padded copy (a specialised trilinear field has R >= 2), selected inside the box.
+    Vec3 f = trilinear<kPaddedNode>(model.paddedField.data(), model.world.field.resolution, p);
+    const bool inside = insideBox(p);
+    return {inside ? f.x : 0.0, inside ? f.y : 0.0, inside ? f.z : 0.0};
+  }
   if constexpr (fieldOf(kFeatures) == kTrilinearField) return fieldForce(model.world.field, p);
   if constexpr (fieldOf(kFeatures) == kUniformField) return insideBox(p) ? model.scene.uniformForce : Vec3{};
   return {};
@@ -339,22 +328,29 @@ void forceKernel(const Model& model, const double* p, const double* v, double* f
   for (const SpringGroup& g : model.groups)
     addSpringGroup<(kFeatures & kDampersBit) != 0>(g, w.kElastic, w.dElastic, p, v, force);
 
-  bool walls = true, plane = (kFeatures & kPlaneBit) && w.hasPlane;
+  bool walls[3] = {true, true, true}, plane = (kFeatures & kPlaneBit) && w.hasPlane;
   if constexpr ((kFeatures & kCullingBit) != 0) {
     const Bounds bounds = boundsOf(p);
-    walls = reachesWalls(bounds);
+    walls[0] = bounds.upper.x > kBoxHalfSize || bounds.lower.x < -kBoxHalfSize;
+    walls[1] = bounds.upper.y > kBoxHalfSize || bounds.lower.y < -kBoxHalfSize;
+    walls[2] = bounds.upper.z > kBoxHalfSize || bounds.lower.z < -kBoxHalfSize;
     plane = plane && mayCrossPlane(w.plane, model.planeSide, bounds);
   }
-  if (walls || plane) {
-    // Some point may touch a wall or the plane: every term, point by point, summed in the
-    // order SPEC.md lists them.
+  if (walls[0] || walls[1] || walls[2] || plane) {
+    // Some point may touch a wall or the plane: the contact forces of all points first (a
+    // loop that vectorises; a wall pair out of reach adds nothing and is left out), then the
+    // field's, summed in the order SPEC.md lists the terms.
+    alignas(64) double contact[kNumCoords];
     for (int q = 0; q < kNumPoints; ++q) {
-      Vec3 pq = load(p, q), vq = load(v, q);
-      Vec3 f = walls ? wallForce(pq, vq, w.kCollision, w.dCollision) : Vec3{};
+      const Vec3 pq = load(p, q), vq = load(v, q);
+      Vec3 f;
+      for (int axis = 0; axis < 3; ++axis)
+        if (walls[axis]) f += wallForceAlong(axis, pq, vq, w.kCollision, w.dCollision);
       if (plane) f += planeForce(w.plane, model.planeSide, pq, vq, w.kCollision, w.dCollision);
-      f += fieldTerm<kFeatures>(model, pq);
-      store(force, q, load(force, q) + f);
+      store(contact, q, f);
     }
+    for (int q = 0; q < kNumPoints; ++q)
+      store(force, q, load(force, q) + (load(contact, q) + fieldTerm<kFeatures>(model, load(p, q))));
   } else if constexpr (fieldOf(kFeatures) == kUniformField) {
     // Every point is inside the box (the walls would be reached otherwise).
     for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + model.scene.uniformForce);

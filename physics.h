@@ -112,8 +112,21 @@ inline Vec3 springForce(Vec3 L, Vec3 relVel, double k, double d, double rest) {
   return (springTension(len, k, rest) + damperTension(relVel, u, d)) * u;
 }
 // Collision spring of rest length 0 from a fixed contact point c to the point: L = p - c.
-// F = -k L - d (v . u) u.
-Vec3 collisionForce(Vec3 L, Vec3 v, double k, double d);
+// F = -k L - d (v . u) u; zero when L is.
+inline Vec3 collisionForce(Vec3 L, Vec3 v, double k, double d) {
+  double len;
+  Vec3 u = direction(L, &len);
+  return -k * L + (-d * dot(v, u)) * u;
+}
+// The collision spring of the wall perpendicular to `axis` (0 x, 1 y, 2 z) that the point is
+// strictly beyond, from the point's projection on it; zero when it is beyond neither. Selects,
+// not branches, so that the kernel's loop over the points vectorises.
+inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, double k, double d) {
+  const double c = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+  const double beyond = c > kBoxHalfSize ? c - kBoxHalfSize : c < -kBoxHalfSize ? c + kBoxHalfSize : 0.0;
+  const Vec3 L{axis == 0 ? beyond : 0.0, axis == 1 ? beyond : 0.0, axis == 2 ? beyond : 0.0};
+  return collisionForce(L, v, k, d);
+}
 // Sum of the collision springs of the walls of [-2,2]^3 the point is strictly beyond.
 Vec3 wallForce(Vec3 p, Vec3 v, double k, double d);
 // Collision spring to the projection on the plane when the point is strictly on the side of
