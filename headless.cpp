@@ -123,7 +123,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     }
   }
 
-  const Model model = makeModel(world, file.state);
+  const Model model = makeModel(world, file.state, options.kernel);
   const State initial = file.state;
   State& state = file.state;
   DivergenceGuard guard(model, initial);
@@ -139,7 +139,8 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     std::fprintf(stderr, "jello: %s\n", e.what());
     return kExitBadInput;
   }
-  std::printf("%s\n", sceneLine(model.scene, world).c_str());
+  std::printf("%s%s\n", sceneLine(model.scene, world).c_str(),
+              options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
   for (long long s = 1; s <= steps; ++s) {
     stepper.step(model, state, world.dt);
     // Every step: the cheap test of SPEC (non-finite, 100 m); every drawn frame, but not more

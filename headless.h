@@ -20,6 +20,7 @@ struct RunOptions {
   std::optional<int> n;
   std::string dumpPath;  // empty: no dump
   Tolerances tolerances;  // RK45's error control
+  KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };
 
 // Exit statuses of SPEC.md section 4.

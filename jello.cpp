@@ -68,6 +68,11 @@ int main(int argc, char** argv) {
   auto* nOption = app.add_option("--n", n, "steps per drawn frame (overrides the world file)")
                       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
   app.add_option("--dump", run.dumpPath, "write the final state as a world file");
+  std::string kernel;
+  auto* kernelOption = app.add_option("--kernel", kernel, "the force kernel of a headless run: specialised (default: "
+                                                          "only what the world needs) or general (every term at "
+                                                          "every point, for checking and timing)")
+                           ->check(CLI::IsMember({"specialised", "general"}));
 
   jello::PictureOptions pictures;
   std::string size;
@@ -116,6 +121,7 @@ int main(int argc, char** argv) {
     }
     run.integrator = chosen;
   }
+  if (*kernelOption && kernel == "general") run.kernel = jello::KernelChoice::General;
   if (*stepsOption) run.steps = steps;
   if (*timeOption) run.time = time;
   if (*dtOption) run.dt = dt;

@@ -177,6 +177,18 @@ TEST(Scene, RotateKeepsItsField) {
   EXPECT_NE(kept.find("plane"), std::string::npos) << line;
 }
 
+// The same run through the command line with either kernel ends in the same state, bit for bit.
+TEST(Scene, TheGeneralKernelFromTheCommandLineGivesTheSameResult) {
+  std::string dir = test::makeTempDir();
+  for (const char* kernel : {"specialised", "general"}) {
+    test::CommandResult r = test::runJello("--headless --steps 300 --kernel " + std::string(kernel) + " --dump '" + dir +
+                                           "/" + kernel + ".w' '" + test::dataPath("moveLeft.w") + "'");
+    EXPECT_EQ(r.status, 0) << r.err;
+  }
+  EXPECT_EQ(test::readText(dir + "/specialised.w"), test::readText(dir + "/general.w"));
+  test::removeTree(dir);
+}
+
 TEST(Scene, GravityIsAConstant) {
   std::string line = sceneLineOf("gravity.w");
   EXPECT_NE(line.find("field (uniform"), std::string::npos) << line;
