@@ -6,6 +6,7 @@
 // (correctly rounded) and fast, and which, unlike strtod, ignores the locale.
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <system_error>
 
 #include "world.h"
 
@@ -30,45 +32,141 @@ constexpr std::size_t kMaxIntegratorNameLength = 16;
 // the field it announces, so it is refused before any memory is set aside for it.
 constexpr std::size_t kShortestFieldLine = 6;
 constexpr int kMaxTokensKept = 8;
+constexpr int kFifoWaitSeconds = 5;  // how long a FIFO may keep the reader waiting for its writer
 
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+// Where the reader's lines come from: a text in memory, or a file read a block at a time, so
+// that reading stops at the first line that cannot belong to a world (a binary file, a device
+// that never ends, a line with no end) instead of after the whole input.
+class LineSource {
+ public:
+  explicit LineSource(std::string_view text) : memory_(text), remaining_(text.size()) {}
+  // `size`: the file's size when it is a regular file, -1 when unknown (a pipe, a device).
+  LineSource(int fd, long long size) : fd_(fd), sizeKnown_(size >= 0), remaining_(size >= 0 ? size : 0) {}
+
+  enum class Status { Line, End, TooLong };
+
+  // The next line without its '\n', valid until the next call (for TooLong, its start).
+  Status next(std::string_view* line) {
+    if (fd_ < 0) {
+      if (pos_ >= memory_.size()) return Status::End;
+      std::size_t end = memory_.find('\n', pos_);
+      if (end == std::string_view::npos) end = memory_.size();
+      *line = memory_.substr(pos_, end - pos_);
+      consumed(end + 1 - pos_);
+      pos_ = end + 1;
+      return Status::Line;
+    }
+    std::size_t searched = begin_;
+    for (;;) {
+      const char* start = buffer_.data() + searched;
+      const void* newline = std::memchr(start, '\n', end_ - searched);
+      if (newline) {
+        std::size_t at = static_cast<const char*>(newline) - buffer_.data();
+        *line = std::string_view(buffer_.data() + begin_, at - begin_);
+        consumed(at + 1 - begin_);
+        begin_ = at + 1;
+        return Status::Line;
+      }
+      if (end_ - begin_ > kMaxLineLength) {
+        *line = std::string_view(buffer_.data() + begin_, kMaxLineLength);  // the start, for the message
+        return Status::TooLong;
+      }
+      if (eof_) {
+        if (begin_ == end_) return Status::End;
+        *line = std::string_view(buffer_.data() + begin_, end_ - begin_);
+        consumed(end_ - begin_);
+        begin_ = end_;
+        return Status::Line;
+      }
+      // Keep the partial line, read more after it.
+      std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+      end_ -= begin_;
+      begin_ = 0;
+      searched = end_;
+      if (buffer_.size() - end_ < kBlock) buffer_.resize(end_ + kBlock);
+      ssize_t got;
+      do got = ::read(fd_, buffer_.data() + end_, kBlock);
+      while (got < 0 && errno == EINTR);
+      if (got < 0) throw std::system_error(errno, std::generic_category(), "cannot read");
+      if (got == 0) eof_ = true;
+      end_ += static_cast<std::size_t>(got);
+      bytesRead_ += static_cast<std::size_t>(got);
+    }
+  }
+
+  // Bytes not yet consumed, when the input's size is known.
+  bool remainingKnown() const { return fd_ < 0 || sizeKnown_; }
+  std::size_t remainingBytes() const { return remaining_; }
+  std::size_t bytesRead() const { return fd_ < 0 ? memory_.size() : bytesRead_; }
+
+  static constexpr std::size_t kMaxLineLength = 4096;  // far beyond any record of a world
+
+ private:
+  static constexpr std::size_t kBlock = 1 << 16;
+  void consumed(std::size_t bytes) { remaining_ -= std::min(remaining_, bytes); }
+
+  std::string_view memory_;
+  std::size_t pos_ = 0;
+  int fd_ = -1;
+  bool sizeKnown_ = false;
+  std::string buffer_;
+  std::size_t begin_ = 0, end_ = 0, bytesRead_ = 0;
+  bool eof_ = false;
+  std::size_t remaining_ = 0;
+};
+
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+  Parser(LineSource& source, const std::string& name) : source_(source), name_(name) {}
 
   [[noreturn]] void fail(int line, const std::string& what, const std::string& field) const {
     throw WorldFileError(name_ + ":" + std::to_string(line) + ": " + what + " (" + field + ")");
   }
 
-  // Moves to the next non-blank line and splits it into tokens. Returns false at end of file.
-  bool nextLine() {
-    while (pos_ < text_.size()) {
-      std::size_t end = text_.find('\n', pos_);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
+  // Moves to the next non-blank line and splits it into tokens. Returns false at end of file;
+  // fails on a line that no world file holds (too long, or not text).
+  bool nextLine(const std::string& field) {
+    std::string_view line;
+    for (;;) {
+      LineSource::Status status = source_.next(&line);
       ++line_;
       count_ = 0;
+      if (status == LineSource::Status::End) return false;
+      const bool tooLong = status == LineSource::Status::TooLong;
       std::size_t i = 0;
       while (i < line.size()) {
         while (i < line.size() && isSpace(line[i])) ++i;
         if (i == line.size()) break;
         std::size_t start = i;
-        while (i < line.size() && !isSpace(line[i])) ++i;
+        while (i < line.size() && !isSpace(line[i])) {
+          const unsigned char c = static_cast<unsigned char>(line[i]);
+          if (c < 0x20 || c >= 0x7f) {
+            char text[96];
+            std::snprintf(text, sizeof text, "byte 0x%02x in column %zu: not a text file, not a world file", c, i + 1);
+            fail(line_, text, field);
+          }
+          ++i;
+        }
         if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
         ++count_;
       }
+      if (tooLong) {
+        fail(line_, "line is longer than " + std::to_string(LineSource::kMaxLineLength) +
+                        " characters: not a world file", field);
+      }
       if (count_ > 0) return true;
     }
-    ++line_;  // an error at end of file names the line after the last one
-    count_ = 0;
-    return false;
   }
 
   // Reads the next record, which must hold exactly `count` tokens.
   void record(int count, const std::string& field) {
-    if (!nextLine()) fail(line_, "file ends early, expected " + what(count), field);
+    if (!nextLine(field)) {
+      if (records_ == 0) fail(1, "the file is empty", field);
+      fail(line_, "file ends early, expected " + what(count), field);
+    }
+    ++records_;
     if (count_ != count) {
       fail(line_, "expected " + what(count) + ", found " + std::to_string(count_), field);
     }
@@ -76,7 +174,7 @@ class Parser {
 
   std::string_view token(int i) const { return tokens_[i]; }
   int line() const { return line_; }
-  std::size_t remainingBytes() const { return text_.size() - std::min(pos_, text_.size()); }
+  LineSource& source() { return source_; }
 
   // Token i as a T, the whole token and nothing else; `kind` names T in messages.
   template <class T>
@@ -119,10 +217,10 @@ class Parser {
     return count == 1 ? std::string("1 value") : std::to_string(count) + " numbers";
   }
 
-  std::string_view text_;
+  LineSource& source_;
   const std::string& name_;
-  std::size_t pos_ = 0;
   int line_ = 0;
+  long long records_ = 0;
   int count_ = 0;
   std::array<std::string_view, kMaxTokensKept> tokens_{};
 };
@@ -189,11 +287,14 @@ bool parseIntegratorName(std::string_view name, Integrator* out) {
   return false;
 }
 
-WorldFile parseWorld(std::string_view text, const std::string& name) {
-  Parser in(text, name);
-  if (text.find_first_not_of(" \t\r\n\v\f") == std::string_view::npos) {
-    in.fail(1, "the file is empty", "integrator");
-  }
+namespace {
+
+// Doubles set aside at first for a field whose input has no known size (a pipe): the vector
+// then grows with what actually arrives, not with what the resolution line claims.
+constexpr std::size_t kUnknownSizeReserve = 3 << 16;
+
+WorldFile parseLines(LineSource& source, const std::string& name) {
+  Parser in(source, name);
   WorldFile result;
   World& w = result.world;
 
@@ -245,54 +346,67 @@ WorldFile parseWorld(std::string_view text, const std::string& name) {
                            std::to_string(kMaxResolution) + ")", "resolution");
   }
   std::size_t nodes = static_cast<std::size_t>(r) * r * r;
-  if (nodes * kShortestFieldLine > in.remainingBytes()) {
+  if (in.source().remainingKnown() && nodes * kShortestFieldLine > in.source().remainingBytes()) {
     in.fail(in.line(), std::to_string(r) + " needs " + std::to_string(nodes) +
                            " field lines, more than the rest of the file can hold", "resolution");
   }
   w.field.resolution = r;
-  w.field.forces.resize(3 * nodes);
+  w.field.forces.reserve(in.source().remainingKnown() ? 3 * nodes : std::min(3 * nodes, kUnknownSizeReserve));
   for (std::size_t node = 0; node < nodes; ++node) {
     std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
     std::string field = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
                         std::to_string(k) + ")";
     in.record(3, field);
-    for (int axis = 0; axis < 3; ++axis) w.field.forces[3 * node + axis] = in.number(axis, field);
+    for (int axis = 0; axis < 3; ++axis) w.field.forces.push_back(in.number(axis, field));
   }
 
   readPoints(in, result.state.p(), "position p");
   readPoints(in, result.state.v(), "velocity v");
 
-  if (in.nextLine()) {
+  if (in.nextLine("trailing garbage")) {
     in.fail(in.line(), "unexpected '" + Parser::str(in.token(0)) + "' after the 512 velocities",
             "trailing garbage");
   }
   return result;
 }
 
+}  // namespace
+
+WorldFile parseWorld(std::string_view text, const std::string& name) {
+  LineSource source(text);
+  return parseLines(source, name);
+}
+
 WorldFile readWorldFile(const std::string& path) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Non-blocking open: a FIFO nobody writes to must not hang the reader; reads themselves
+  // block as usual.
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
   struct stat info {};
-  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
-    ::close(fd);
-    throw WorldFileError(path + ": is a directory, not a world file");
-  }
-  std::string text;
-  if (S_ISREG(info.st_mode)) text.reserve(static_cast<std::size_t>(info.st_size));
-  char buffer[1 << 16];
-  for (;;) {
-    ssize_t got = ::read(fd, buffer, sizeof buffer);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      int error = errno;
-      ::close(fd);
-      throw WorldFileError(path + ": cannot read: " + std::strerror(error));
+  if (::fstat(fd, &info) != 0) throw WorldFileError(path + ": cannot read: " + std::strerror(errno));
+  if (S_ISDIR(info.st_mode)) throw WorldFileError(path + ": is a directory, not a world file");
+  if (S_ISFIFO(info.st_mode)) {
+    // Wait for a writer's first bytes (or its hanging up) as cat would, but not forever.
+    pollfd waiting{fd, POLLIN, 0};
+    int ready;
+    do ready = ::poll(&waiting, 1, kFifoWaitSeconds * 1000);
+    while (ready < 0 && errno == EINTR);
+    if (ready == 0) {
+      throw WorldFileError(path + ": a FIFO nothing was written to within " + std::to_string(kFifoWaitSeconds) + " s");
     }
-    if (got == 0) break;
-    text.append(buffer, static_cast<std::size_t>(got));
   }
-  ::close(fd);
-  return parseWorld(text, path);
+  int flags = ::fcntl(fd, F_GETFL);
+  if (flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+  LineSource source(fd, S_ISREG(info.st_mode) ? static_cast<long long>(info.st_size) : -1);
+  try {
+    return parseLines(source, path);
+  } catch (const std::system_error& e) {
+    throw WorldFileError(path + ": " + e.what());
+  }
 }
 
 std::string formatWorld(const World& w, const State& state) {

@@ -78,9 +78,14 @@ void removeTree(const std::string& dir) {
 }
 
 CommandResult runJello(const std::string& args, const std::string& cwd, const std::string& env) {
+  return runShell((cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " " + jelloCommand() + " " + args + " </dev/null");
+}
+
+std::string jelloCommand() { return std::string("'") + JELLO_BINARY + "'"; }
+
+CommandResult runShell(const std::string& script) {
   std::string dir = makeTempDir();
-  std::string command = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " '" + JELLO_BINARY + "' " + args +
-                        " >" + dir + "/out 2>" + dir + "/err </dev/null";
+  std::string command = "( " + script + " ) >" + dir + "/out 2>" + dir + "/err";
   int raw = std::system(command.c_str());
   CommandResult result;
   if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
