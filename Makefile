@@ -1,10 +1,12 @@
 # The README's two commands: `make run` and `make test`. CMake does the building, into build/.
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
 
-.PHONY: all deps run test test-sanitize animation clean
+.PHONY: all deps run test test-sanitize fuzz animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -44,5 +46,12 @@ test-sanitize: deps
 	cd $(SANITIZE_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 		ctest --output-on-failure -j $(JOBS)
 
+# The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
+fuzz: deps
+	cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_FUZZ=ON \
+		-DJELLO_TESTS=OFF -DJELLO_GRAPHICS=OFF
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_world_reader fuzz_field_expression
+	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) jello createWorld
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) jello createWorld

@@ -53,6 +53,10 @@ class LineSource {
       if (pos_ >= memory_.size()) return Status::End;
       std::size_t end = memory_.find('\n', pos_);
       if (end == std::string_view::npos) end = memory_.size();
+      if (end - pos_ > kMaxLineLength) {  // as for a file: the same text, the same verdict
+        *line = memory_.substr(pos_, kMaxLineLength);
+        return Status::TooLong;
+      }
       *line = memory_.substr(pos_, end - pos_);
       consumed(end + 1 - pos_);
       pos_ = end + 1;

@@ -1,0 +1,108 @@
+// checks.cpp: the properties the fuzzers check. Built into the fuzz targets (clang, libFuzzer,
+// ASan, UBSan) and into the test suite.
+
+#include "checks.h"
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string_view>
+
+#include "world.h"
+#include "worldbuilder.h"
+
+namespace jello::fuzz {
+
+namespace {
+
+[[noreturn]] void failed(const char* what, const std::string& detail) {
+  std::fprintf(stderr, "fuzz check failed: %s: %s\n", what, detail.c_str());
+  std::abort();
+}
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+bool sameWorld(const WorldFile& a, const WorldFile& b) {
+  const World &x = a.world, &y = b.world;
+  auto same = [](double p, double q) { return std::memcmp(&p, &q, sizeof p) == 0; };
+  return x.integrator == y.integrator && same(x.dt, y.dt) && x.n == y.n && same(x.kElastic, y.kElastic) &&
+         same(x.dElastic, y.dElastic) && same(x.kCollision, y.kCollision) && same(x.dCollision, y.dCollision) &&
+         same(x.mass, y.mass) && x.hasPlane == y.hasPlane && same(x.plane.a, y.plane.a) && same(x.plane.b, y.plane.b) &&
+         same(x.plane.c, y.plane.c) && same(x.plane.d, y.plane.d) && x.field.resolution == y.field.resolution &&
+         sameBits(x.field.forces, y.field.forces) && sameBits(a.state.y, b.state.y);
+}
+
+// The outcome of reading: the world, or the error's message.
+struct Outcome {
+  bool accepted = false;
+  WorldFile world;
+  std::string error;
+};
+
+template <class Read>
+Outcome outcomeOf(Read read) {
+  Outcome o;
+  try {
+    o.world = read();
+    o.accepted = true;
+  } catch (const WorldFileError& e) {
+    o.error = e.what();
+    if (o.error.empty() || o.error.find('\n') != std::string::npos) failed("error message", o.error);
+  }
+  return o;
+}
+
+}  // namespace
+
+void checkWorldText(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  // The same bytes as a file: a memfd, read through its /proc path like any file.
+  const int fd = ::memfd_create("fuzzed-world", MFD_CLOEXEC);
+  if (fd < 0) failed("memfd_create", std::strerror(errno));
+  for (std::size_t done = 0; done < size;) {
+    ssize_t wrote = ::write(fd, data + done, size - done);
+    if (wrote <= 0) failed("write", std::strerror(errno));
+    done += static_cast<std::size_t>(wrote);
+  }
+  const std::string path = "/proc/self/fd/" + std::to_string(fd);
+  Outcome fromMemory = outcomeOf([&] { return parseWorld(text, path); });
+  Outcome fromFile = outcomeOf([&] { return readWorldFile(path); });
+  ::close(fd);
+  if (fromMemory.accepted != fromFile.accepted || fromMemory.error != fromFile.error) {
+    failed("memory and file disagree", fromMemory.error + " | " + fromFile.error);
+  }
+  if (fromMemory.accepted) {
+    if (!sameWorld(fromMemory.world, fromFile.world)) failed("memory and file disagree", "different worlds");
+    const std::string written = formatWorld(fromMemory.world.world, fromMemory.world.state);
+    Outcome again = outcomeOf([&] { return parseWorld(written, "round trip"); });
+    if (!again.accepted) failed("a written world is refused", again.error);
+    if (!sameWorld(fromMemory.world, again.world)) failed("round trip", "the world read back differs");
+  }
+}
+
+void checkFieldExpression(const std::uint8_t* data, std::size_t size) {
+  constexpr int kResolution = 3;  // 27 nodes: enough to evaluate everywhere, fast
+  FieldRecipe recipe;
+  recipe.source = FieldRecipe::Source::Expression;
+  recipe.resolution = kResolution;
+  recipe.expression.assign(reinterpret_cast<const char*>(data), size);
+  try {
+    ForceField field = buildField(recipe);
+    if (field.resolution != kResolution || field.forces.size() != 3u * kResolution * kResolution * kResolution) {
+      failed("field size", recipe.expression);
+    }
+    for (double f : field.forces)
+      if (!std::isfinite(f)) failed("a non-finite force was accepted", recipe.expression);
+  } catch (const RecipeError& e) {
+    const std::string message = e.what();
+    if (message.empty()) failed("empty error message", recipe.expression);
+  }
+}
+
+}  // namespace jello::fuzz

@@ -1,0 +1,20 @@
+// checks.h: what the fuzz targets assert of one input, shared with the test suite, which
+// replays every input the fuzzers ever found a fault with (tests/data/fuzz/).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace jello::fuzz {
+
+// A world file's text: the reader either refuses it with a WorldFileError or accepts it, the
+// same way from memory and from a file descriptor (whose reading goes a block at a time); an
+// accepted world is written and read back bit for bit. Aborts on any other outcome.
+void checkWorldText(const std::uint8_t* data, std::size_t size);
+
+// A createWorld field expression "fx; fy; fz": refused with a RecipeError or turned into a
+// field of finite forces. Aborts on any other outcome.
+void checkFieldExpression(const std::uint8_t* data, std::size_t size);
+
+}  // namespace jello::fuzz

@@ -1,0 +1,7 @@
+// libFuzzer target: createWorld's field expressions (see checks.h for what is asserted).
+#include "checks.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  jello::fuzz::checkFieldExpression(data, size);
+  return 0;
+}

@@ -1,0 +1,54 @@
+// Every input a fuzzer ever found a fault with (tests/data/fuzz/: world-* for the reader, expr-*
+// for field expressions), and the fuzzers' seeds, replayed through the fuzzers' own checks,
+// which abort on a fault. See `make fuzz`.
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+
+#include <string>
+#include <vector>
+
+#include "../fuzz/checks.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+std::vector<std::string> filesIn(const std::string& dir, const std::string& prefix) {
+  std::vector<std::string> out;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (dirent* e = ::readdir(d)) {
+      std::string name = e->d_name;
+      if (name.rfind(prefix, 0) == 0 && name != "." && name != "..") out.push_back(dir + "/" + name);
+    }
+    ::closedir(d);
+  }
+  return out;
+}
+
+void replay(const std::vector<std::string>& files, void (*check)(const std::uint8_t*, std::size_t)) {
+  for (const std::string& path : files) {
+    SCOPED_TRACE(path);
+    std::string bytes = test::readText(path);
+    check(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  }
+}
+
+TEST(FuzzRegressions, WorldReaderInputs) {
+  std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "world-");
+  for (const char* world : {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w", "still.w"})
+    files.push_back(test::dataPath(world));
+  ASSERT_GE(files.size(), 8u);
+  replay(files, fuzz::checkWorldText);
+}
+
+TEST(FuzzRegressions, FieldExpressionInputs) {
+  std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "expr-");
+  std::vector<std::string> seeds = filesIn(std::string(JELLO_FUZZ_SEEDS) + "/expressions", "");
+  files.insert(files.end(), seeds.begin(), seeds.end());
+  ASSERT_GE(files.size(), 6u);
+  replay(files, fuzz::checkFieldExpression);
+}
+
+}  // namespace
+}  // namespace jello
