@@ -64,6 +64,8 @@ std::vector<SpringGroup> buildSpringGroups() {
         for (int k = 0; k < kLatticeSize; ++k)
           if (inside(k + o.dk)) g.mask[pointIndex(i, j, k)] = 1.0;
       }
+    // The last row's discarded slots would reach past the last point: they end the last span.
+    g.spans.back().end = std::min(g.spans.back().end, kNumPoints - g.delta);
     groups.push_back(std::move(g));
   }
   return groups;
@@ -145,10 +147,10 @@ int pointsAcrossPlane(const Model& model, const State& state) {
 }
 
 namespace {
-// Trilinear interpolation of a field of resolution r >= 2 at a point inside the box. The cell
-// is clamped in floating point, so that a stray NaN never reaches the integer conversion.
 constexpr int kPaddedNode = 4;  // doubles per node in Model::paddedField
 
+// A coordinate's cell along one axis, and its position in it. The cell is clamped in floating
+// point, so that a stray NaN never reaches the integer conversion.
 struct CellCoordinate {
   int cell;
   double t;  // position within the cell, 0..1
@@ -178,6 +180,7 @@ inline NodeForce<kStride> lerp(const NodeForce<kStride>& a, const NodeForce<kStr
   return out;
 }
 
+// Trilinear interpolation of a field of resolution r >= 2 at a point inside the box.
 template <int kStride>
 inline Vec3 trilinear(const double* f, int r, Vec3 p) {
   const double cellsPerMetre = (r - 1) / (2 * kBoxHalfSize), lastCell = r - 2;
@@ -226,9 +229,10 @@ struct Bounds {
   Vec3 lower, upper;
 };
 
-// Bounds of the finite coordinates (a NaN neither widens nor narrows them). Eight running
-// bounds side by side, not one: an element-wise min the compiler vectorises, where a single
-// running min is a reduction it may not reorder.
+// Bounds of the coordinates. (With a NaN among them they mean little; such a state is caught
+// as diverged after this very step.) Eight running bounds side by side, not one: an
+// element-wise min the compiler vectorises, where a single running min is a reduction it may
+// not reorder.
 Bounds boundsOf(const double* p) {
   constexpr int kLanes = 8;
   static_assert(kNumPoints % kLanes == 0);

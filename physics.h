@@ -38,7 +38,7 @@ std::vector<Spring> buildSprings();
 // q + delta for every q in the spans where mask[q] is 1. A span is a run of whole lattice rows
 // (fixed i and j) whose neighbours' rows exist; inside a row, a neighbour beyond the last k
 // has mask 0: the kernel computes that slot and discards it, which keeps its loops regular
-// (6,832 slots for 6,220 springs).
+// (6,826 slots for 6,220 springs).
 struct SpringGroup {
   struct Span {
     int begin, end;  // point indices, end exclusive

@@ -41,6 +41,30 @@ double kernelsDisagreeBy(const World& world, const State& start, Integrator inte
   return worst;
 }
 
+// The kernel's slots: every spring once, and no slot whose neighbour lies past the last point.
+TEST(SpringGroups, SlotsCoverEverySpringAndStayInsideTheLattice) {
+  std::vector<Spring> springs = buildSprings();
+  std::vector<SpringGroup> groups = buildSpringGroups();
+  ASSERT_EQ(groups.size(), kSpringOffsets.size());
+  std::size_t springIndex = 0, slots = 0;
+  for (const SpringGroup& g : groups) {
+    for (const SpringGroup::Span& span : g.spans) {
+      for (int q = span.begin; q < span.end; ++q) {
+        ASSERT_LT(q + g.delta, kNumPoints) << "slot " << q << " of the group with delta " << g.delta;
+        ++slots;
+        if (g.mask[q] == 0) continue;
+        ASSERT_LT(springIndex, springs.size());
+        EXPECT_EQ(springs[springIndex].a, q);
+        EXPECT_EQ(springs[springIndex].b, q + g.delta);
+        EXPECT_EQ(springs[springIndex].rest, g.rest);
+        ++springIndex;
+      }
+    }
+  }
+  EXPECT_EQ(springIndex, springs.size());
+  std::printf("%zu slots for %zu springs\n", slots, springs.size());
+}
+
 class CourseKernels : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CourseKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
