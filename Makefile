@@ -6,7 +6,7 @@ FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
 
-.PHONY: all deps run test test-sanitize fuzz animation clean
+.PHONY: all deps run test test-sanitize fuzz vec-report animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -45,6 +45,11 @@ test-sanitize: deps
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 		ctest --output-on-failure -j $(JOBS)
+
+# The compiler's vectorisation report on the force kernel: which loops became vector loops.
+vec-report:
+	@$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
+		-c physics.cpp -o /dev/null -fopt-info-vec-optimized 2>&1 | grep '^physics.cpp.*loop vectorized' | sort -t: -k2 -n -u
 
 # The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
 fuzz: deps

@@ -124,17 +124,6 @@ Vec3 wallForce(Vec3 p, Vec3 v, double k, double d) {
   return force;
 }
 
-Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d) {
-  Vec3 normal{plane.a, plane.b, plane.c};
-  double s = dot(normal, p) + plane.d;
-  // p minus its orthogonal projection c = p - (s/|a|^2) a. Computed for every point and
-  // selected, so that the kernel's contact loop has no branch.
-  Vec3 L = (s / dot(normal, normal)) * normal;
-  Vec3 f = collisionForce(L, v, k, d);
-  const bool across = s * side < 0;
-  return {across ? f.x : 0.0, across ? f.y : 0.0, across ? f.z : 0.0};
-}
-
 int pointsAcrossPlane(const Model& model, const State& state) {
   if (!model.world.hasPlane) return 0;
   const Plane& pl = model.world.plane;

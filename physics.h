@@ -130,8 +130,16 @@ inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, double k, double d) {
 // Sum of the collision springs of the walls of [-2,2]^3 the point is strictly beyond.
 Vec3 wallForce(Vec3 p, Vec3 v, double k, double d);
 // Collision spring to the projection on the plane when the point is strictly on the side of
-// sign -side (side = Model::planeSide).
-Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d);
+// sign -side (side = Model::planeSide). Computed for every point and selected, so that the
+// kernel's contact loop has no branch.
+inline Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d) {
+  Vec3 normal{plane.a, plane.b, plane.c};
+  double s = dot(normal, p) + plane.d;
+  Vec3 L = (s / dot(normal, normal)) * normal;  // p minus its projection p - (s/|n|^2) n
+  Vec3 f = collisionForce(L, v, k, d);
+  const bool across = s * side < 0;
+  return {across ? f.x : 0.0, across ? f.y : 0.0, across ? f.z : 0.0};
+}
 // How many points of `state` are strictly on the far side of the model's plane (0 without one).
 int pointsAcrossPlane(const Model& model, const State& state);
 // The force field at p: trilinear inside the box (walls included), zero outside.
