@@ -1,0 +1,49 @@
+// A program of its own, because it replaces the global operator new to count allocations:
+// nothing else (no GL driver, no other test) runs under that replacement.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "integrators.h"
+#include "physics.h"
+#include "test_support.h"
+
+namespace {
+std::atomic<long long> allocations{0};
+
+void* counted(std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return counted(size); }
+void* operator new[](std::size_t size) { return counted(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace jello {
+namespace {
+
+// After its first step, a Stepper allocates nothing: not the kernel, not the integrator.
+TEST(Allocation, StepsAllocateNothingOnceStarted) {
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
+                                Integrator::Verlet, Integrator::RK45}) {
+    Model model = makeModel(f.world, f.state);
+    State state = f.state;
+    Stepper stepper(integrator);
+    stepper.step(model, state, 2e-4);
+    const long long before = allocations.load();
+    for (int s = 0; s < 50; ++s) stepper.step(model, state, 2e-4);
+    EXPECT_EQ(allocations.load() - before, 0) << integratorName(integrator);
+  }
+}
+
+}  // namespace
+}  // namespace jello
