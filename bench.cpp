@@ -25,15 +25,18 @@ constexpr Integrator kBenchIntegrators[] = {Integrator::Euler,  Integrator::Midp
                                             Integrator::Symplectic, Integrator::Verlet, Integrator::RK45,
                                             Integrator::Implicit};
 
-// Seconds per call of `work(count)`, the median over kBenchRepeats. Without a fixed count the
-// first call sizes it to about kBenchSeconds.
-double medianSecondsPerCall(const std::function<void(long long)>& work, long long fixedCount, int repeats) {
+using Work = std::function<void(long long)>;
+
+// Seconds per call of each work(count), the medians over `repeats` runs of each. The works
+// take turns, so that a change in the machine's load falls on both alike and their ratio
+// holds. Without a fixed count, the first work's first calls size it to about kBenchSeconds.
+std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long long fixedCount, int repeats) {
   long long count = fixedCount;
   if (count <= 0) {
     count = 1;
     for (;;) {
       Clock::time_point start = Clock::now();
-      work(count);
+      works.front()(count);
       double seconds = std::chrono::duration<double>(Clock::now() - start).count();
       if (seconds >= kBenchSeconds / 4 || count >= (1LL << 30)) {
         count = std::max(1LL, static_cast<long long>(count * kBenchSeconds / std::max(seconds, 1e-9)));
@@ -42,14 +45,20 @@ double medianSecondsPerCall(const std::function<void(long long)>& work, long lon
       count *= 4;
     }
   }
-  std::vector<double> perCall;
+  std::vector<std::vector<double>> perCall(works.size());
   for (int r = 0; r < repeats; ++r) {
-    Clock::time_point start = Clock::now();
-    work(count);
-    perCall.push_back(std::chrono::duration<double>(Clock::now() - start).count() / count);
+    for (std::size_t w = 0; w < works.size(); ++w) {
+      Clock::time_point start = Clock::now();
+      works[w](count);
+      perCall[w].push_back(std::chrono::duration<double>(Clock::now() - start).count() / count);
+    }
   }
-  std::sort(perCall.begin(), perCall.end());
-  return perCall[perCall.size() / 2];
+  std::vector<double> medians;
+  for (std::vector<double>& times : perCall) {
+    std::sort(times.begin(), times.end());
+    medians.push_back(times[times.size() / 2]);
+  }
+  return medians;
 }
 
 struct StepTiming {
@@ -58,30 +67,40 @@ struct StepTiming {
   bool diverged = false;
 };
 
-StepTiming timeSteps(const Model& model, const State& initial, Integrator integrator, const RunOptions& run,
-                     long long fixedSteps, int repeats) {
-  StepTiming timing;
-  long long steps = 0, evaluations = 0;
-  auto work = [&](long long count) {
-    // From the initial state every time: each repeat does the same work.
-    State state = initial;
-    Stepper stepper(integrator, run.tolerances);
-    for (long long s = 0; s < count; ++s) stepper.step(model, state, model.world.dt);
-    steps += count;
-    evaluations += stepper.stats().evaluations + stepper.stats().jacobians;
-    timing.diverged = timing.diverged || findDivergedPoint(state) >= 0;
-  };
-  timing.seconds = medianSecondsPerCall(work, fixedSteps, repeats);
-  timing.evaluationsPerStep = static_cast<double>(evaluations) / steps;
-  return timing;
+// Steps of each model, from the initial state every time, so that each run does the same work.
+std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const State& initial, Integrator integrator,
+                                  double dt, const RunOptions& run, long long fixedSteps, int repeats) {
+  std::vector<StepTiming> timings(models.size());
+  std::vector<long long> steps(models.size()), evaluations(models.size());
+  std::vector<Work> works;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    works.push_back([&, m](long long count) {
+      State state = initial;
+      Stepper stepper(integrator, run.tolerances);
+      for (long long s = 0; s < count; ++s) stepper.step(*models[m], state, dt);
+      steps[m] += count;
+      evaluations[m] += stepper.stats().evaluations + stepper.stats().jacobians;
+      timings[m].diverged = timings[m].diverged || findDivergedPoint(state) >= 0;
+    });
+  }
+  std::vector<double> seconds = medianSecondsPerCall(works, fixedSteps, repeats);
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    timings[m].seconds = seconds[m];
+    timings[m].evaluationsPerStep = static_cast<double>(evaluations[m]) / steps[m];
+  }
+  return timings;
 }
 
-double timeForces(const Model& model, const State& state, long long fixedCount, int repeats) {
+std::vector<double> timeForces(const std::vector<const Model*>& models, const State& state, long long fixedCount,
+                               int repeats) {
   std::vector<double> force(kNumCoords);
-  auto work = [&](long long count) {
-    for (long long i = 0; i < count; ++i) computeForces(model, state.p(), state.v(), force.data());
-  };
-  return medianSecondsPerCall(work, fixedCount, repeats);
+  std::vector<Work> works;
+  for (const Model* model : models) {
+    works.push_back([&, model](long long count) {
+      for (long long i = 0; i < count; ++i) computeForces(*model, state.p(), state.v(), force.data());
+    });
+  }
+  return medianSecondsPerCall(works, fixedCount, repeats);
 }
 
 }  // namespace
@@ -117,15 +136,18 @@ int runBench(const RunOptions& run) {
 
   std::printf("%s\n", sceneLine(specialised.scene, world).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
-  std::printf("medians of %d runs from the initial state at dt=%.9g s; general = every term at every point\n\n",
+  std::printf("medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
+              "general = every term at every point\n\n",
               repeats, world.dt);
   std::fflush(stdout);
 
-  double forcesS = timeForces(specialised, file.state, fixed, repeats);
-  double forcesG = timeForces(general, file.state, fixed, repeats);
-  double loading = medianSecondsPerCall([&](long long count) {
-    for (long long i = 0; i < count; ++i) readWorldFile(run.worldPath);
-  }, run.steps ? 1 : 0, repeats);
+  const std::vector<const Model*> models = {&specialised, &general};
+  const std::vector<double> forces = timeForces(models, file.state, fixed, repeats);
+  const double forcesS = forces[0], forcesG = forces[1];
+  double loading = medianSecondsPerCall({[&](long long count) {
+                                          for (long long i = 0; i < count; ++i) readWorldFile(run.worldPath);
+                                        }},
+                                        run.steps ? 1 : 0, repeats)[0];
   std::printf("%-22s %11.2f ms  (%s)\n", "world loading", loading * 1e3, world.field.resolution > 0
               ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str() : "no field");
   std::printf("%-22s %14s %14s %9s\n", "", "specialised", "general", "speed-up");
@@ -135,10 +157,21 @@ int runBench(const RunOptions& run) {
   for (Integrator integrator : kBenchIntegrators) {
     // IMPLICIT takes milliseconds a step: a few steps tell.
     long long steps = fixed ? fixed : integrator == Integrator::Implicit ? 3 : 0;
-    StepTiming s = timeSteps(specialised, file.state, integrator, run, steps, repeats);
-    StepTiming g = timeSteps(general, file.state, integrator, run, steps, repeats);
+    // A diverging run would time arithmetic on huge numbers: an integrator that diverges at the
+    // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
+    constexpr int kHalvings = 12;
+    double dt = world.dt;
+    std::vector<StepTiming> timings;
+    for (int h = 0; h <= kHalvings; ++h, dt /= 2) {
+      timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
+      if (!timings[0].diverged && !timings[1].diverged) break;
+    }
+    const StepTiming &s = timings[0], &g = timings[1];
+    char note[96] = "";
+    if (s.diverged || g.diverged) std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
+    else if (dt != world.dt) std::snprintf(note, sizeof note, "  (diverges at the world's dt; timed at dt=%.3g)", dt);
     std::printf("%-22s %14.2f %14.2f %8.2fx  %.1f%s\n", integratorName(integrator), s.seconds * 1e6, g.seconds * 1e6,
-                g.seconds / s.seconds, s.evaluationsPerStep, s.diverged ? "  (diverges at this dt)" : "");
+                g.seconds / s.seconds, s.evaluationsPerStep, note);
     std::fflush(stdout);
   }
   return kExitOk;
