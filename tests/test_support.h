@@ -12,7 +12,7 @@ namespace jello::test {
 // A file of tests/data (copied from ../shared/reference-worlds).
 std::string dataPath(const std::string& name);
 
-// The 512 positions of a `expected/` file, xyz-interleaved.
+// The 512 positions of an `expected/` file (which lists x y z per point), as a per-point array.
 std::vector<double> readExpectedPositions(const std::string& name);
 
 // RMS over the 512 points of the distance between two position arrays (m).
