@@ -13,6 +13,7 @@ namespace jello {
 
 namespace {
 
+#ifdef JELLO_GRAPHICS_DIR
 // The folder of the running executable, with a trailing slash; "" if unknown.
 std::string executableFolder() {
   char path[PATH_MAX];
@@ -21,6 +22,7 @@ std::string executableFolder() {
   std::string exe(path, static_cast<std::size_t>(length));
   return exe.substr(0, exe.find_last_of('/') + 1);
 }
+#endif
 
 const GraphicsApi* load(std::string* why) {
 #ifndef JELLO_GRAPHICS_DIR
