@@ -68,6 +68,10 @@ class LineSource {
       const void* newline = std::memchr(start, '\n', end_ - searched);
       if (newline) {
         std::size_t at = static_cast<const char*>(newline) - buffer_.data();
+        if (at - begin_ > kMaxLineLength) {  // a long line that arrived whole within one block
+          *line = std::string_view(buffer_.data() + begin_, kMaxLineLength);
+          return Status::TooLong;
+        }
         *line = std::string_view(buffer_.data() + begin_, at - begin_);
         consumed(at + 1 - begin_);
         begin_ = at + 1;
