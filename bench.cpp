@@ -161,15 +161,15 @@ int runBench(const RunOptions& run) {
     // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
     constexpr int kHalvings = 12;
     double dt = world.dt;
-    std::vector<StepTiming> timings;
-    for (int h = 0; h <= kHalvings; ++h, dt /= 2) {
+    std::vector<StepTiming> timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
+    for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
+      dt /= 2;
       timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
-      if (!timings[0].diverged && !timings[1].diverged) break;
     }
     const StepTiming &s = timings[0], &g = timings[1];
     char note[96] = "";
     if (s.diverged || g.diverged) std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
-    else if (dt != world.dt) std::snprintf(note, sizeof note, "  (diverges at the world's dt; timed at dt=%.3g)", dt);
+    else if (dt != world.dt) std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
     std::printf("%-22s %14.2f %14.2f %8.2fx  %.1f%s\n", integratorName(integrator), s.seconds * 1e6, g.seconds * 1e6,
                 g.seconds / s.seconds, s.evaluationsPerStep, note);
     std::fflush(stdout);
