@@ -101,20 +101,16 @@ FieldShape classifyField(const ForceField& field) {
   const std::size_t nodes = f.size() / 3;
   if (nodes == 0) return shape;
   shape.smallest = INFINITY;
-  bool zero = true, uniform = true;
-  Vec3 first = field.node(0);
   for (std::size_t node = 0; node < nodes; ++node) {
-    Vec3 v = field.node(node);
-    double magnitude = length(v);
+    double magnitude = length(field.node(node));
     shape.smallest = std::min(shape.smallest, magnitude);
     shape.largest = std::max(shape.largest, magnitude);
-    zero = zero && v.x == 0 && v.y == 0 && v.z == 0;
-    uniform = uniform && v.x == first.x && v.y == first.y && v.z == first.z;
   }
-  if (zero) return shape;
-  if (uniform) {
+  const FieldUse use = fieldUse(field);  // the exact zero and uniform tests, as the kernel's
+  if (use == FieldUse::Zero) return shape;
+  if (use == FieldUse::Uniform) {
     shape.kind = FieldKind::Uniform;
-    shape.uniform = first;
+    shape.uniform = field.node(0);
     return shape;
   }
   if (field.resolution >= 2) {

@@ -100,14 +100,12 @@ class LineSource {
       if (got < 0) throw std::system_error(errno, std::generic_category(), "cannot read");
       if (got == 0) eof_ = true;
       end_ += static_cast<std::size_t>(got);
-      bytesRead_ += static_cast<std::size_t>(got);
     }
   }
 
   // Bytes not yet consumed, when the input's size is known.
   bool remainingKnown() const { return fd_ < 0 || sizeKnown_; }
   std::size_t remainingBytes() const { return remaining_; }
-  std::size_t bytesRead() const { return fd_ < 0 ? memory_.size() : bytesRead_; }
 
   static constexpr std::size_t kMaxLineLength = 4096;  // far beyond any record of a world
 
@@ -120,7 +118,7 @@ class LineSource {
   int fd_ = -1;
   bool sizeKnown_ = false;
   std::string buffer_;
-  std::size_t begin_ = 0, end_ = 0, bytesRead_ = 0;
+  std::size_t begin_ = 0, end_ = 0;
   bool eof_ = false;
   std::size_t remaining_ = 0;
 };

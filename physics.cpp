@@ -32,26 +32,12 @@ const std::vector<SpringOffset> kSpringOffsets = {
     {0, 0, 2, SpringKind::Bend},
 };
 
-std::vector<Spring> buildSprings() {
-  std::vector<Spring> springs;
-  auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
-  for (const SpringOffset& o : kSpringOffsets) {
-    double rest = kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
-    for (int i = 0; i < kLatticeSize; ++i)
-      for (int j = 0; j < kLatticeSize; ++j)
-        for (int k = 0; k < kLatticeSize; ++k) {
-          if (!inside(i + o.di) || !inside(j + o.dj) || !inside(k + o.dk)) continue;
-          springs.push_back({pointIndex(i, j, k), pointIndex(i + o.di, j + o.dj, k + o.dk), rest, o.kind});
-        }
-  }
-  return springs;
-}
-
 std::vector<SpringGroup> buildSpringGroups() {
   std::vector<SpringGroup> groups;
   auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
   for (const SpringOffset& o : kSpringOffsets) {
     SpringGroup g;
+    g.kind = o.kind;
     g.delta = pointIndex(o.di, o.dj, o.dk);
     g.rest = kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
     g.mask.assign(kNumPoints, 0.0);
@@ -71,15 +57,27 @@ std::vector<SpringGroup> buildSpringGroups() {
   return groups;
 }
 
+// The same table walk as the kernel's: the springs are the groups' slots that are kept.
+std::vector<Spring> buildSprings() {
+  std::vector<Spring> springs;
+  for (const SpringGroup& g : buildSpringGroups())
+    for (const SpringGroup::Span& span : g.spans)
+      for (int q = span.begin; q < span.end; ++q)
+        if (g.mask[q] != 0) springs.push_back({q, q + g.delta, g.rest, g.kind});
+  return springs;
+}
+
 Scene analyseScene(const World& world) {
   Scene scene;
   scene.dampers = world.dElastic != 0;
   scene.plane = world.hasPlane;
-  const ForceField& field = world.field;
-  if (field.resolution == 0) {
-    scene.field = FieldUse::Absent;
-    return scene;
-  }
+  scene.field = fieldUse(world.field);
+  if (scene.field == FieldUse::Uniform) scene.uniformForce = world.field.node(0);
+  return scene;
+}
+
+FieldUse fieldUse(const ForceField& field) {
+  if (field.resolution == 0) return FieldUse::Absent;
   const Vec3 first = field.node(0);
   bool zero = true, uniform = true;
   const std::size_t nodes = field.forces.size() / 3;
@@ -88,9 +86,7 @@ Scene analyseScene(const World& world) {
     zero = zero && f.x == 0 && f.y == 0 && f.z == 0;
     uniform = uniform && f.x == first.x && f.y == first.y && f.z == first.z;
   }
-  scene.field = zero ? FieldUse::Zero : uniform ? FieldUse::Uniform : FieldUse::Trilinear;
-  if (scene.field == FieldUse::Uniform) scene.uniformForce = first;
-  return scene;
+  return zero ? FieldUse::Zero : uniform ? FieldUse::Uniform : FieldUse::Trilinear;
 }
 
 std::string sceneLine(const Scene& scene, const World& world) {
@@ -348,12 +344,9 @@ void forceKernel(const Model& model, const double* p, const double* v, double* f
     // Every point is inside the box (the walls would be reached otherwise).
     for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + model.scene.uniformForce);
   } else if constexpr (fieldOf(kFeatures) == kTrilinearField) {
-    const ForceField& field = w.field;
-    if (field.resolution == 1) {
-      for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + field.node(0));
-    } else {
-      addTrilinearField(model.paddedField.data(), field.resolution, p, force);
-    }
+    // Only a specialisation gets here (the general kernel always takes the contact path), and
+    // a field the scene calls trilinear has R >= 2: one node would be uniform.
+    addTrilinearField(model.paddedField.data(), w.field.resolution, p, force);
   }
   if (pull && pull->point >= 0) store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
 }
@@ -383,7 +376,7 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   model.groups = buildSpringGroups();
   model.scene = analyseScene(world);
   model.kernel = kernelFor(model.scene, choice);
-  if (model.scene.field == FieldUse::Trilinear && world.field.resolution >= 2) {
+  if (model.scene.field == FieldUse::Trilinear) {
     const std::size_t nodes = world.field.forces.size() / 3;
     model.paddedField.assign(kPaddedNode * nodes, 0.0);
     for (std::size_t n = 0; n < nodes; ++n)

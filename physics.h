@@ -31,8 +31,6 @@ struct Spring {
   SpringKind kind;
 };
 
-// Springs grouped by offset, in the order of kSpringOffsets.
-std::vector<Spring> buildSprings();
 
 // The springs of one row of kSpringOffsets, for the force kernel: point q is joined to point
 // q + delta for every q in the spans where mask[q] is 1. A span is a run of whole lattice rows
@@ -45,10 +43,14 @@ struct SpringGroup {
   };
   int delta = 0;  // pointIndex(di, dj, dk), > 0 for every row of the table
   double rest = 0;
+  SpringKind kind = SpringKind::Structural;
   std::vector<Span> spans;
   std::vector<double> mask;  // kNumPoints entries, 1.0 or 0.0
 };
 std::vector<SpringGroup> buildSpringGroups();
+// The springs one by one (6,220), grouped by offset in the order of kSpringOffsets: the
+// groups' kept slots.
+std::vector<Spring> buildSprings();
 
 // What a world needs of the force computation, decided once when it is loaded (SPEC.md
 // section 2 defines every term; leaving one out changes no result).
@@ -59,9 +61,11 @@ struct Scene {
   FieldUse field = FieldUse::Trilinear;
   Vec3 uniformForce;  // N, for FieldUse::Uniform
 };
-// The scene of a world: the field is Absent at resolution 0, Zero when every node is exactly
-// zero, Uniform when every node is exactly the same force.
+// The scene of a world, its field as fieldUse says.
 Scene analyseScene(const World& world);
+// Absent at resolution 0, Zero when every node is exactly zero, Uniform when every node is
+// exactly the same force (node 0's), Trilinear otherwise.
+FieldUse fieldUse(const ForceField& field);
 // "scene: kept: ...; left out: ...", naming every term of the force.
 std::string sceneLine(const Scene& scene, const World& world);
 
