@@ -32,24 +32,6 @@ std::vector<std::string> frameNames(const std::string& dir) {
   return names;
 }
 
-bool isDirectory(const std::string& path) {
-  struct stat info {};
-  return ::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
-}
-
-// mkdir -p
-void makeDirectories(const std::string& dir) {
-  for (std::size_t slash = 1; slash != std::string::npos;) {
-    slash = dir.find('/', slash + 1);
-    std::string prefix = dir.substr(0, slash);
-    if (prefix.empty() || isDirectory(prefix)) continue;
-    if (::mkdir(prefix.c_str(), 0777) != 0 && errno != EEXIST) {
-      throw FrameError(dir + ": cannot make the folder: " + std::strerror(errno));
-    }
-  }
-  if (!isDirectory(dir)) throw FrameError(dir + ": not a folder");
-}
-
 }  // namespace
 
 FrameSequence::FrameSequence(std::string dir, int maxFrames, bool overwrite)
@@ -65,7 +47,11 @@ std::string FrameSequence::pathOf(int frame) const {
 
 void FrameSequence::open() {
   if (opened_) return;
-  makeDirectories(dir_);
+  try {
+    claim_ = claimFolder(dir_);
+  } catch (const OutputError& e) {
+    throw FrameError(e.what());
+  }
   std::vector<std::string> old = frameNames(dir_);
   if (!old.empty() && !overwrite_) {
     throw FrameError(dir_ + " already holds " + std::to_string(old.size()) +
@@ -75,9 +61,6 @@ void FrameSequence::open() {
     if (::unlink((dir_ + "/" + name).c_str()) != 0) {
       throw FrameError(dir_ + "/" + name + ": cannot remove: " + std::strerror(errno));
     }
-  }
-  if (::access(dir_.c_str(), W_OK) != 0) {
-    throw FrameError(dir_ + ": cannot write: " + std::strerror(errno));
   }
   opened_ = true;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image.h"
+#include "output.h"
 
 namespace jello {
 
@@ -22,9 +23,10 @@ class FrameSequence {
  public:
   FrameSequence(std::string dir, int maxFrames, bool overwrite);
 
-  // Makes the folder (and its parents) when missing. When it already holds frames (NNNN.jpg),
-  // refuses with a FrameError naming it, or, with overwrite, removes them so the new sequence
-  // has no stale tail. Throws FrameError with a one-line message.
+  // Makes the folder (and its parents) when missing and claims it for this sequence (output.h:
+  // a second run naming it is refused while this one holds it). When it already holds frames
+  // (NNNN.jpg), refuses with a FrameError naming it, or, with overwrite, removes them so the
+  // new sequence has no stale tail. Throws FrameError with a one-line message.
   void open();
 
   // Writes the next frame; false once maxFrames have been written (nothing is written then).
@@ -41,6 +43,7 @@ class FrameSequence {
   int maxFrames_;
   bool overwrite_;
   bool opened_ = false;
+  FolderClaim claim_;
   int written_ = 0;
 };
 

@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "guard.h"
+#include "output.h"
 #include "integrators.h"
 #include "physics.h"
 #include "stability.h"
@@ -66,17 +67,12 @@ class Progress {
   Clock::time_point start_ = Clock::now();
 };
 
-// Why `path` cannot be written, or "" when it can: checked before a long run, not after it.
-std::string whyNotWritable(const std::string& path) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) return "is a directory";
-  std::size_t slash = path.find_last_of('/');
-  std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-  if (::access(dir.c_str(), W_OK) != 0) return std::string("cannot write into ") + dir + ": " + std::strerror(errno);
-  return {};
-}
-
 }  // namespace
+
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
+  if (sameFile(dumpPath, worldPath)) return "is the world being run; it is never replaced, name another file";
+  return whyNotWritable(dumpPath, Existing::Replace);
+}
 
 std::string newFramesDir(const std::string& parent, const std::string& stem) {
   for (int i = 1;; ++i) {
@@ -96,7 +92,7 @@ bool loadRun(const RunOptions& options, WorldFile* out) {
   try {
     *out = readWorldFile(options.worldPath);
   } catch (const WorldFileError& e) {
-    std::fprintf(stderr, "jello: %s\n", e.what());
+    printError(e.what());
     return false;
   }
   World& world = out->world;
@@ -115,10 +111,10 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (options.steps) steps = *options.steps;
   if (options.time) steps = stepsForTime(*options.time, world.dt);
 
-  if (!options.dumpPath.empty()) {
-    std::string why = whyNotWritable(options.dumpPath);
+  if (options.dumpPath) {
+    std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
     if (!why.empty()) {
-      std::fprintf(stderr, "jello: --dump %s: %s\n", options.dumpPath.c_str(), why.c_str());
+      printError("--dump " + *options.dumpPath + ": " + why);
       return kExitBadInput;
     }
   }
@@ -136,7 +132,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
       frames->frame(model, state);
     }
   } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "jello: %s\n", e.what());
+    printError(e.what());
     return kExitBadInput;
   }
   std::printf("%s%s\n", sceneLine(model.scene, world).c_str(),
@@ -149,15 +145,14 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     if (findDivergedPoint(state) >= 0 || s % std::max<long long>(world.n, kGuardEvery) == 0)
       wrong = guard.check(state, s * world.dt);
     if (!wrong.empty()) {
-      std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
-                   divergenceMessage(world, initial, s, s * world.dt, wrong).c_str());
+      printError(options.worldPath + ": " + divergenceMessage(world, initial, s, s * world.dt, wrong));
       return kExitDiverged;
     }
     if (frames && s % world.n == 0 && frames->wantsMore()) {
       try {
         frames->frame(model, state);
       } catch (const std::runtime_error& e) {
-        std::fprintf(stderr, "jello: %s\n", e.what());
+        printError(e.what());
         return kExitBadInput;
       }
     }
@@ -180,11 +175,11 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   std::printf("\n");
   std::fflush(stdout);
 
-  if (!options.dumpPath.empty()) {
+  if (options.dumpPath) {
     try {
-      writeWorldFile(options.dumpPath, world, state);
+      writeWorldFile(*options.dumpPath, world, state, true);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "jello: %s\n", e.what());
+      printError(e.what());
       return kExitBadInput;
     }
   }

@@ -18,7 +18,7 @@ struct RunOptions {
   std::optional<Integrator> integrator;
   std::optional<double> dt;  // s
   std::optional<int> n;
-  std::string dumpPath;  // empty: no dump
+  std::optional<std::string> dumpPath;  // --dump FILE
   Tolerances tolerances;  // RK45's error control
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };
@@ -50,6 +50,11 @@ class FrameObserver {
 // Number of steps that --time T asks for at step dt: the fewest that reach T (a relative slack
 // of 1e-9 keeps T = 1, dt = 0.001 at 1000 steps despite rounding).
 long long stepsForTime(double time, double dt);
+
+// --dump FILE's rule (README, "Reliability"): it creates FILE or replaces a regular, writable
+// file of that name, because the option names it; never the world being run, nor anything
+// that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
 
 // A folder name under `parent` that does not exist yet: parent/STEM-001, parent/STEM-002, ...
 std::string newFramesDir(const std::string& parent, const std::string& stem);

@@ -37,54 +37,36 @@ void silence(j_common_ptr, int) {}
 
 }  // namespace
 
-void writeJpeg(const std::string& path, const Image& image, int quality) {
-  std::string temp = path + ".tmp.XXXXXX";
-  int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-  std::FILE* file = ::fdopen(fd, "wb");
-  if (!file) {
-    ::close(fd);
-    ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-  }
-  jpeg_compress_struct info;
-  ErrorManager errors;
-  info.err = jpeg_std_error(&errors.base);
-  errors.base.error_exit = onError;
-  if (setjmp(errors.jump)) {
-    jpeg_destroy_compress(&info);
-    std::fclose(file);
-    ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": cannot write JPEG: " + errors.message);
-  }
-  jpeg_create_compress(&info);
-  jpeg_stdio_dest(&info, file);
-  info.image_width = static_cast<JDIMENSION>(image.width);
-  info.image_height = static_cast<JDIMENSION>(image.height);
-  info.input_components = 3;
-  info.in_color_space = JCS_RGB;
-  jpeg_set_defaults(&info);
-  jpeg_set_quality(&info, quality, TRUE);
-  jpeg_start_compress(&info, TRUE);
-  const std::size_t stride = static_cast<std::size_t>(image.width) * 3;
-  while (info.next_scanline < info.image_height) {
-    JSAMPROW row = const_cast<JSAMPROW>(image.rgb.data() + info.next_scanline * stride);
-    jpeg_write_scanlines(&info, &row, 1);
-  }
-  jpeg_finish_compress(&info);
-  jpeg_destroy_compress(&info);
-  bool ok = std::fflush(file) == 0 && !std::ferror(file);
-  int error = errno;
-  ok = std::fclose(file) == 0 && ok;
-  // mkstemp makes the file 0600; a frame is ordinary user data.
-  mode_t mask = ::umask(0);
-  ::umask(mask);
-  if (ok) ok = ::chmod(temp.c_str(), 0666 & ~mask) == 0 && ::rename(temp.c_str(), path.c_str()) == 0;
-  if (!ok) {
-    if (error == 0) error = errno;
-    ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": cannot write: " + std::strerror(error));
-  }
+void writeJpeg(const std::string& path, const Image& image, int quality, Existing existing) {
+  writeFileWhole(
+      path,
+      [&image, quality](std::FILE* file) {
+        jpeg_compress_struct info;
+        ErrorManager errors;
+        info.err = jpeg_std_error(&errors.base);
+        errors.base.error_exit = onError;
+        if (setjmp(errors.jump)) {
+          jpeg_destroy_compress(&info);
+          throw std::runtime_error(std::string("cannot write JPEG: ") + errors.message);
+        }
+        jpeg_create_compress(&info);
+        jpeg_stdio_dest(&info, file);
+        info.image_width = static_cast<JDIMENSION>(image.width);
+        info.image_height = static_cast<JDIMENSION>(image.height);
+        info.input_components = 3;
+        info.in_color_space = JCS_RGB;
+        jpeg_set_defaults(&info);
+        jpeg_set_quality(&info, quality, TRUE);
+        jpeg_start_compress(&info, TRUE);
+        const std::size_t stride = static_cast<std::size_t>(image.width) * 3;
+        while (info.next_scanline < info.image_height) {
+          JSAMPROW row = const_cast<JSAMPROW>(image.rgb.data() + info.next_scanline * stride);
+          jpeg_write_scanlines(&info, &row, 1);
+        }
+        jpeg_finish_compress(&info);
+        jpeg_destroy_compress(&info);
+      },
+      existing);
 }
 
 Image readJpeg(const std::string& path) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "output.h"
+
 namespace jello {
 
 struct Image {
@@ -15,9 +17,11 @@ struct Image {
 
 constexpr int kJpegQuality = 90;
 
-// Writes `image` as a JPEG whole: a temporary file beside `path`, then a rename. Throws
-// std::runtime_error with a one-line message on failure, leaving nothing behind.
-void writeJpeg(const std::string& path, const Image& image, int quality = kJpegQuality);
+// Writes `image` as a JPEG under the rules of output.h (whole, never over something that is not
+// a regular file; over a regular file only with Existing::Replace). Throws OutputError with a
+// one-line message on failure, leaving nothing behind.
+void writeJpeg(const std::string& path, const Image& image, int quality = kJpegQuality,
+               Existing existing = Existing::Refuse);
 
 // Decodes a JPEG file into RGB. Throws std::runtime_error when it cannot.
 Image readJpeg(const std::string& path);

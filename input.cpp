@@ -21,6 +21,8 @@
 
 #include "world.h"
 
+#include "output.h"
+
 namespace jello {
 
 namespace {
@@ -277,6 +279,30 @@ std::string integratorNameList() {
   return list;
 }
 
+namespace {
+template <class T>
+bool parseExactly(std::string_view text, T* out, std::string* why) {
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
+  if (ec == std::errc::result_out_of_range) *why = "is out of range";
+  else if (ec != std::errc() || end != text.data() + text.size()) *why = "is not a number";
+  else return true;
+  return false;
+}
+}  // namespace
+
+bool parseWorldNumber(std::string_view text, double* out, std::string* why) {
+  if (!parseExactly(text, out, why)) return false;
+  if (std::isfinite(*out)) return true;
+  *why = "is not finite";
+  return false;
+}
+
+bool parseWorldInteger(std::string_view text, long long* out, std::string* why) {
+  if (parseExactly(text, out, why)) return true;
+  if (*why == "is not a number") *why = "is not a whole number";
+  return false;
+}
+
 bool parseIntegratorName(std::string_view name, Integrator* out) {
   for (int i = 0; i < static_cast<int>(std::size(kIntegratorNames)); ++i) {
     std::string_view candidate = kIntegratorNames[i];
@@ -439,40 +465,7 @@ std::string formatWorld(const World& w, const State& state) {
 }
 
 void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite) {
-  std::string text = formatWorld(world, state);
-  std::string temp = path + ".tmp.XXXXXX";
-  int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
-  auto fail = [&](int error, const std::string& what) {
-    ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": " + what + (error ? std::string(": ") + std::strerror(error) : ""));
-  };
-  std::size_t done = 0;
-  while (done < text.size()) {
-    ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) {
-      int error = errno;
-      ::close(fd);
-      fail(error, "cannot write");
-    }
-    done += static_cast<std::size_t>(wrote);
-  }
-  // mkstemp creates the file 0600; a world file is ordinary user data.
-  mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  if (::close(fd) != 0) fail(errno, "cannot write");
-  if (overwrite) {
-    if (::rename(temp.c_str(), path.c_str()) != 0) fail(errno, "cannot write");
-    return;
-  }
-  // link() refuses an existing name: no window between looking and writing.
-  if (::link(temp.c_str(), path.c_str()) != 0) {
-    int error = errno;
-    fail(error == EEXIST ? 0 : error, error == EEXIST ? "already exists" : "cannot write");
-  }
-  ::unlink(temp.c_str());
+  writeFileWhole(path, formatWorld(world, state), overwrite ? Existing::Replace : Existing::Refuse);
 }
 
 }  // namespace jello

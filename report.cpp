@@ -14,11 +14,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include "physics.h"
+#include "output.h"
 #include "plot.h"
 
 namespace jello {
@@ -131,27 +132,6 @@ std::string describeSetting(const ReportRow& r) {
   return s;
 }
 
-bool isDirectory(const std::string& path) {
-  struct stat info {};
-  return ::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
-}
-
-bool exists(const std::string& path) {
-  struct stat info {};
-  return ::stat(path.c_str(), &info) == 0;
-}
-
-// Writes a file whole: a temporary name, then a rename.
-void writeWhole(const std::string& path, const std::string& text) {
-  std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out.flush()) throw std::runtime_error(path + ": cannot write");
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write");
-}
-
 std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
                           double floor, double visualTolerance, const std::string& title) {
   std::ostringstream gp;
@@ -178,8 +158,9 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<
     if (r.worldsOwn && !r.diverged && r.rmsError > 0) gp << r.wallSeconds << " " << r.rmsError << "\n";
   gp << "EOD\n";
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
-     << "set output 'report.png'\n"
-     << "set title '" << title << "'\n"
+     << "if (!exists(\"png\")) png = 'report.png'\n"
+     << "set output png\n"
+     << "set title " << gnuplotString(title) << "\n"
      << "set logscale xy\n"
      << "set format x '10^{%L}'\nset format y '10^{%L}'\n"
      << "set xlabel 'wall time of the run (s)'\n"
@@ -232,21 +213,14 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   std::vector<Integrator> integrators = options.integrators;
   if (integrators.empty()) integrators.assign(std::begin(kAllIntegrators), std::end(kAllIntegrators));
 
-  // Claim the folder before the long work, not after it.
-  if (!exists(options.dir) && ::mkdir(options.dir.c_str(), 0777) != 0) {
-    std::fprintf(stderr, "jello: --report %s: cannot make the folder\n", options.dir.c_str());
+  // Claim the folder and check every file before the long work, not after it.
+  FolderClaim claim;
+  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  try {
+    claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
+  } catch (const OutputError& e) {
+    printError(std::string("--report: ") + e.what());
     return kExitBadInput;
-  }
-  if (!isDirectory(options.dir)) {
-    std::fprintf(stderr, "jello: --report %s: not a folder\n", options.dir.c_str());
-    return kExitBadInput;
-  }
-  for (const char* name : {"report.csv", "report.png", "report.md"}) {
-    if (exists(options.dir + "/" + name) && !options.overwrite) {
-      std::fprintf(stderr, "jello: --report %s already holds %s; choose another folder, or add --overwrite\n",
-                   options.dir.c_str(), name);
-      return kExitBadInput;
-    }
   }
 
   Progress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
@@ -316,11 +290,17 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   const double referenceStep = T / referenceSteps;
   progress.show("the reference, RK4 dt=" + number(referenceStep) + " and dt=" + number(referenceStep / 2));
   Run reference, check;
-  std::thread other([&] { check = simulate(model, start, Integrator::RK4, referenceStep / 2, T); });
+  auto runCheck = [&] { check = simulate(model, start, Integrator::RK4, referenceStep / 2, T); };
+  std::thread other;
+  try {
+    other = std::thread(runCheck);
+  } catch (const std::system_error&) {  // no thread to be had: the same work, one after the other
+    runCheck();
+  }
   reference = simulate(model, start, Integrator::RK4, referenceStep, T);
-  other.join();
+  if (other.joinable()) other.join();
   if (reference.diverged || check.diverged) {
-    std::fprintf(stderr, "jello: --report: the reference run (RK4 at dt=%g) diverged; no report\n", referenceStep);
+    printError("--report: the reference run (RK4 at dt=" + number(referenceStep) + ") diverged; no report");
     return kExitDiverged;
   }
   double referenceMax;
@@ -399,15 +379,18 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
             looksSame);
 
   try {
-    writeWhole(options.dir + "/report.csv", reportCsv(rows));
-    writeWhole(options.dir + "/report.md", md.str());
-    writeWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title));
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "jello: %s\n", e.what());
+    writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
+    writeFileWhole(options.dir + "/report.md", md.str(), existing);
+    writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
+                   existing);
+  } catch (const OutputError& e) {
+    printError(e.what());
     return kExitBadInput;
   }
-  bool drawn = runGnuplot(options.dir, "report.gp");
-  if (!drawn) std::fprintf(stderr, "jello: gnuplot is not installed or failed: report.png was not drawn\n");
+  const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
+  const bool drawn = whyNotDrawn.empty();
+  if (!drawn) printError("report.png was not drawn: " + whyNotDrawn);
+  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
 
   std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",
               runOptions.worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", rows.size(), T,
@@ -420,7 +403,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
     std::printf("within %g m: %s, %s\n", options.visualTolerance, describeSetting(*looksSame).c_str(),
                 speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
-  return kExitOk;
+  return status;
 }
 
 }  // namespace jello

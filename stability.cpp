@@ -19,6 +19,7 @@
 #include "guard.h"
 #include "integrators.h"
 #include "jacobian.h"
+#include "output.h"
 #include "plot.h"
 
 namespace jello {
@@ -244,14 +245,12 @@ double observedLimit(const Model& model, const State& start, Integrator integrat
 
 int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
                       double time, bool overwrite) {
-  struct stat info {};
-  if (::stat(dir.c_str(), &info) != 0 && ::mkdir(dir.c_str(), 0777) != 0) {
-    std::fprintf(stderr, "jello: --map %s: cannot make the folder\n", dir.c_str());
-    return 2;
-  }
-  if (::stat((dir + "/stability-map.csv").c_str(), &info) == 0 && !overwrite) {
-    std::fprintf(stderr, "jello: --map %s already holds a stability map; choose another folder, or add --overwrite\n",
-                 dir.c_str());
+  FolderClaim claim;
+  const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  try {
+    claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
+  } catch (const OutputError& e) {
+    printError(std::string("--map: ") + e.what());
     return 2;
   }
   const double base = world.kElastic > 0 ? world.kElastic : 500;
@@ -296,25 +295,27 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
       plots += ", $O_" + name + " with points pt 7 ps 1.3" + lt + " title '" + name + " observed'";
     }
   }
-  gp << "set terminal pngcairo size 960,640 font ',11'\nset output 'stability-map.png'\n"
-     << "set title '" << worldPath << ": largest stable step against spring stiffness (stable below each line)'\n"
+  gp << "set terminal pngcairo size 960,640 font ',11'\n"
+     << "if (!exists(\"png\")) png = 'stability-map.png'\nset output png\n"
+     << "set title " << gnuplotString(worldPath + ": largest stable step against spring stiffness (stable below each line)")
+     << "\n"
      << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key outside right top\n"
      << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
      << world.kElastic << " " << world.dt << "\ne\n";
-  for (const auto& [name, text] : {std::pair<std::string, std::string>{"stability-map.csv", csv.str()},
-                                   {"stability-map.gp", gp.str()}}) {
-    std::ofstream out(dir + "/" + name);
-    out << text;
-    if (!out) {
-      std::fprintf(stderr, "jello: %s/%s: cannot write\n", dir.c_str(), name.c_str());
-      return 2;
-    }
+  try {
+    writeFileWhole(dir + "/stability-map.csv", csv.str(), existing);
+    writeFileWhole(dir + "/stability-map.gp", gp.str(), existing);
+  } catch (const OutputError& e) {
+    printError(e.what());
+    return 2;
   }
-  bool drawn = runGnuplot(dir, "stability-map.gp");
-  if (!drawn) std::fprintf(stderr, "jello: gnuplot is not installed or failed: stability-map.png was not drawn\n");
+  const std::string whyNotDrawn = drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
+  const bool drawn = whyNotDrawn.empty();
+  if (!drawn) printError("stability-map.png was not drawn: " + whyNotDrawn);
+  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
   std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
               drawn ? ", stability-map.png" : "");
-  return 0;
+  return status;
 }
 
 Verdict verdictFor(double dt, double critical) {
@@ -417,7 +418,7 @@ std::string stabilityJson(const std::string& worldPath, const World& world, cons
   double critical = r.critical(world.integrator);
   j["verdict"] = verdictName(verdictFor(world.dt, critical));
   j["critical_dt"] = finite(critical);
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace jello

@@ -13,6 +13,7 @@
 
 #include "graphics.h"
 #include "guard.h"
+#include "output.h"
 #include "integrators.h"
 #include "stability.h"
 #include "showCube.h"
@@ -92,7 +93,7 @@ struct Viewer {
   void say(const std::string& text) {
     message = text;
     messageTime = Clock::now();
-    std::fprintf(stderr, "jello: %s\n", text.c_str());
+    printError(text);
   }
 };
 

@@ -50,6 +50,13 @@ std::string integratorNameList();
 // Case-insensitive lookup; false when the name is not one of SPEC section 3.
 bool parseIntegratorName(std::string_view name, Integrator* out);
 
+// The number grammar of world files, which the command lines share: a decimal number exactly as
+// std::from_chars reads it (no hex, no leading '+' or space), rounded once to the nearest
+// double. False with *why set ("is not a number", "is out of range", "is not finite") otherwise.
+bool parseWorldNumber(std::string_view text, double* out, std::string* why);
+// A whole number in the same grammar (decimal digits, an optional '-').
+bool parseWorldInteger(std::string_view text, long long* out, std::string* why);
+
 // The plane a*x + b*y + c*z + d = 0, (a,b,c) != 0.
 struct Plane {
   double a = 0, b = 0, c = 0, d = 0;
@@ -112,9 +119,9 @@ WorldFile readWorldFile(const std::string& path);
 // The text of a world file, numbers in shortest round-trip form: parseWorld of it gives back
 // bit-identical values.
 std::string formatWorld(const World& world, const State& state);
-// Writes formatWorld to `path` whole: a temporary file beside it, then a rename, so a reader
-// never sees half a file. Without `overwrite`, an existing `path` is left untouched and the
-// write fails (the check and the write are one atomic step). Throws std::runtime_error with a
+// Writes formatWorld to `path` under the rules of output.h: whole, never over anything that is
+// not a regular file; over an existing regular file only with `overwrite` (without it the
+// check and the write are one atomic step). Throws OutputError (a std::runtime_error) with a
 // one-line message on failure.
 void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite = true);
 

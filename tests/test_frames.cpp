@@ -147,17 +147,23 @@ TEST(FrameSequence, NumbersFromZeroAndStopsAtTheMost) {
 
 TEST(FrameSequence, NeverOverwritesUnlessAskedAndThenLeavesNoStaleTail) {
   std::string dir = test::makeTempDir();
-  FrameSequence first(dir, 5, false);
-  for (int i = 0; i < 5; ++i) first.save(tiny(200));
+  {
+    FrameSequence first(dir, 5, false);  // a finished run: its claim on the folder ends here
+    for (int i = 0; i < 5; ++i) first.save(tiny(200));
+  }
   std::string before = test::readText(dir + "/0004.jpg");
-  FrameSequence second(dir, 5, false);
-  EXPECT_THROW(second.save(tiny(10)), FrameError);
+  {
+    FrameSequence second(dir, 5, false);
+    EXPECT_THROW(second.save(tiny(10)), FrameError);
+  }
   EXPECT_EQ(test::readText(dir + "/0004.jpg"), before);
   EXPECT_EQ(countFrames(dir), 5);
-  FrameSequence third(dir, 2, true);
-  third.save(tiny(10));
-  third.save(tiny(10));
-  EXPECT_EQ(countFrames(dir), 2) << "frames 0002-0004 of the old sequence were left behind";
+  {
+    FrameSequence third(dir, 2, true);
+    third.save(tiny(10));
+    third.save(tiny(10));
+    EXPECT_EQ(countFrames(dir), 2) << "frames 0002-0004 of the old sequence were left behind";
+  }
   EXPECT_LT(readJpeg(dir + "/0000.jpg").rgb[0], 50);
   test::writeText(dir + "/notes.txt", "mine");
   FrameSequence fourth(dir, 2, true);

@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -93,6 +94,39 @@ CommandResult runShell(const std::string& script) {
   result.err = readText(dir + "/err");
   removeTree(dir);
   return result;
+}
+
+CommandResult runProgram(const std::vector<std::string>& argv, const std::string& cwd, void (*limits)()) {
+  std::string dir = makeTempDir();
+  const std::string out = dir + "/out", err = dir + "/err";
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t child = ::fork();
+  if (child == 0) {
+    int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT, 0600),
+        e = ::open(err.c_str(), O_WRONLY | O_CREAT, 0600);
+    ::dup2(in, 0);
+    ::dup2(o, 1);
+    ::dup2(e, 2);
+    if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) ::_exit(126);
+    if (limits) limits();
+    ::execv(args[0], args.data());
+    ::_exit(127);
+  }
+  int raw = 0;
+  CommandResult result;
+  if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
+  result.out = readText(out);
+  result.err = readText(err);
+  removeTree(dir);
+  return result;
+}
+
+CommandResult runJelloArgs(const std::vector<std::string>& args, const std::string& cwd, void (*limits)()) {
+  std::vector<std::string> argv = {JELLO_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return runProgram(argv, cwd, limits);
 }
 
 namespace {

@@ -41,6 +41,14 @@ std::string jelloCommand();
 // Runs a shell script (e.g. a pipeline around jelloCommand()), capturing its output.
 CommandResult runShell(const std::string& script);
 
+// Runs `argv` (argv[0] a path) with no shell in between, in `cwd` when given, standard input
+// from /dev/null, output captured; `limits` run in the child before exec (setrlimit, say).
+CommandResult runProgram(const std::vector<std::string>& argv, const std::string& cwd = "",
+                         void (*limits)() = nullptr);
+// runProgram of the jello binary under test with these arguments.
+CommandResult runJelloArgs(const std::vector<std::string>& args, const std::string& cwd = "",
+                           void (*limits)() = nullptr);
+
 // Removes a directory tree made by makeTempDir.
 void removeTree(const std::string& dir);
 
