@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "cli.h"
 #include "describe.h"
+#include "output.h"
 #include "physics.h"
 #include "stability.h"
 #include "worldbuilder.h"
@@ -30,11 +32,11 @@ constexpr const char* kVersion = "createWorld 0.1.0";
 Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "createWorld: %s\n", message.c_str());
+  jello::printError(message);
   return kExitBadInput;
 }
 
-void warn(const std::string& message) { std::fprintf(stderr, "createWorld: warning: %s\n", message.c_str()); }
+void warn(const std::string& message) { jello::printError("warning: " + message); }
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
 void warnAbout(const jello::World& world, const jello::State& state) {
@@ -57,7 +59,7 @@ void warnAbout(const jello::World& world, const jello::State& state) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int createWorld(int argc, char** argv) {
   CLI::App app{
       "createWorld: builds a jello world file (SPEC section 1). Start from the defaults (the course's "
       "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
@@ -80,20 +82,20 @@ int main(int argc, char** argv) {
   int n = 0;
   std::vector<double> plane;
   auto* integratorOption = app.add_option("--integrator", integrator, "EULER, RK4, ... (any case)")->type_name("NAME")->group("Parameters");
-  auto* dtOption = app.add_option("--dt", dt, "time step, s")->type_name("DT")->check(kPositive)->group("Parameters");
+  auto* dtOption = app.add_option("--dt", dt, "time step, s")->type_name("DT")->transform(kPositive)->group("Parameters");
   auto* nOption = app.add_option("--n", n, "steps per drawn frame")->type_name("N")
-                      ->check(CLI::Range(1, std::numeric_limits<int>::max()))
+                      ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))
                       ->group("Parameters");
-  auto* kElasticOption = app.add_option("--k-elastic", kElastic, "spring stiffness, N/m")->type_name("K")->check(kNonNegative)->group("Parameters");
-  auto* dElasticOption = app.add_option("--d-elastic", dElastic, "spring damping, N s/m")->type_name("D")->check(kNonNegative)->group("Parameters");
+  auto* kElasticOption = app.add_option("--k-elastic", kElastic, "spring stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
+  auto* dElasticOption = app.add_option("--d-elastic", dElastic, "spring damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
   auto* kCollisionOption =
-      app.add_option("--k-collision", kCollision, "collision stiffness, N/m")->type_name("K")->check(kNonNegative)->group("Parameters");
+      app.add_option("--k-collision", kCollision, "collision stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
   auto* dCollisionOption =
-      app.add_option("--d-collision", dCollision, "collision damping, N s/m")->type_name("D")->check(kNonNegative)->group("Parameters");
-  auto* massOption = app.add_option("--mass", mass, "mass of each of the 512 points, kg")->type_name("KG")->check(kPositive)->group("Parameters");
+      app.add_option("--d-collision", dCollision, "collision damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
+  auto* massOption = app.add_option("--mass", mass, "mass of each of the 512 points, kg")->type_name("KG")->transform(kPositive)->group("Parameters");
   auto* planeOption = app.add_option("--plane", plane, "inclined plane a x + b y + c z + d = 0")->type_name("A B C D")
                           ->expected(4)
-                          ->check(kFinite)
+                          ->transform(kFinite)
                           ->group("Parameters");
   auto* noPlaneOption = app.add_flag("--no-plane", "no inclined plane")->group("Parameters");
   planeOption->excludes(noPlaneOption);
@@ -103,14 +105,14 @@ int main(int argc, char** argv) {
   double swirl = 0, radial = 0;
   std::string expression, fieldFrom;
   auto* resolutionOption = app.add_option("--field-resolution", resolution, "field grid R (R^3 nodes; 0: no field)")->type_name("R")
-                               ->check(CLI::Range(0, jello::kMaxResolution))
+                               ->transform(jello::wholeNumber(0, jello::kMaxResolution))
                                ->group("Force field");
   auto* uniformOption =
-      app.add_option("--field-uniform", uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->check(kFinite)->group("Force field");
+      app.add_option("--field-uniform", uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->transform(kFinite)->group("Force field");
   auto* swirlOption =
-      app.add_option("--field-swirl", swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->check(kFinite)->group("Force field");
+      app.add_option("--field-swirl", swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->transform(kFinite)->group("Force field");
   auto* radialOption =
-      app.add_option("--field-radial", radial, "radial: F = S (x, y, z)")->type_name("S")->check(kFinite)->group("Force field");
+      app.add_option("--field-radial", radial, "radial: F = S (x, y, z)")->type_name("S")->transform(kFinite)->group("Force field");
   auto* expressionOption =
       app.add_option("--field-expr", expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")->type_name("'FX; FY; FZ'")->group("Force field");
   auto* fieldFromOption = app.add_option("--field-from", fieldFrom, "copy the field of WORLD")->type_name("WORLD")->group("Force field");
@@ -123,27 +125,27 @@ int main(int argc, char** argv) {
   double cubeSize = 1;
   std::vector<double> center, rotation, velocity, spin, skew;
   auto* sizeOption = app.add_option("--cube-size", cubeSize, "edge of the cube at rest, m (default 1)")->type_name("L")
-                         ->check(kPositive)
+                         ->transform(kPositive)
                          ->group("Initial state");
   auto* centerOption = app.add_option("--center", center, "centre of the cube X Y Z, m (default: corner at the origin)")->type_name("X Y Z")
                            ->expected(3)
-                           ->check(kFinite)
+                           ->transform(kFinite)
                            ->group("Initial state");
   auto* rotateOption = app.add_option("--rotate", rotation, "turn the cube about x, then y, then z, degrees")->type_name("AX AY AZ")
                            ->expected(3)
-                           ->check(kFinite)
+                           ->transform(kFinite)
                            ->group("Initial state");
   auto* velocityOption = app.add_option("--velocity", velocity, "velocity of every point VX VY VZ, m/s")->type_name("VX VY VZ")
                              ->expected(3)
-                             ->check(kFinite)
+                             ->transform(kFinite)
                              ->group("Initial state");
   auto* spinOption = app.add_option("--spin", spin, "rigid angular velocity WX WY WZ about the centre, rad/s")->type_name("WX WY WZ")
                          ->expected(3)
-                         ->check(kFinite)
+                         ->transform(kFinite)
                          ->group("Initial state");
   auto* skewOption = app.add_option("--skew-corner", skew, "displace corner p[7][7][7] by DX DY DZ, m")->type_name("DX DY DZ")
                          ->expected(3)
-                         ->check(kFinite)
+                         ->transform(kFinite)
                          ->group("Initial state");
   bool insideOut = false;
   app.add_flag("--inside-out", insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
@@ -255,6 +257,19 @@ int main(int argc, char** argv) {
   } catch (const jello::WorldFileError& e) {
     return fail(e.what());
   } catch (const jello::RecipeError& e) {
+    return fail(e.what());
+  }
+}
+
+// Every exception ends here as one line and exit status 2.
+int main(int argc, char** argv) {
+  jello::setProgramName("createWorld");
+  jello::installSignalCleanup();
+  try {
+    return createWorld(argc, argv);
+  } catch (const std::bad_alloc&) {
+    return fail("not enough memory for this world");
+  } catch (const std::exception& e) {
     return fail(e.what());
   }
 }

@@ -39,7 +39,7 @@ TEST(Cli, BenchTimesEveryIntegratorWithBothKernels) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
   for (const char* part : {"specialised", "general", "speed-up", "force evaluation", "evaluations per second",
-                           "EULER", "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world loading"}) {
+                           "EULER", "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world parsing"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
   }
 }
@@ -171,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
                       UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open", true},
                       UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
-                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
+                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a folder"},
                       UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& info) { return std::string(info.param.name); });
 

@@ -1,0 +1,373 @@
+// What jello writes, and what it never does: hostile file names, full disks, signals, two runs
+// at once, files it was not told to replace (issue 12; README "Reliability").
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "commandline.h"
+#include "output.h"
+#include "stability.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+std::vector<std::string> entries(const std::string& dir) {
+  std::vector<std::string> names;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (dirent* e = ::readdir(d))
+      if (std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.push_back(e->d_name);
+    ::closedir(d);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+bool haveGnuplot() { return test::runShell("command -v gnuplot").status == 0; }
+
+int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+
+off_t sizeOf(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 ? info.st_size : -1;
+}
+
+// ---- Item 1: no name reaches a script -----------------------------------------------------
+
+TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
+  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::vector<std::string> names = {"x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w",
+                                          "$(touch PWNED).w", "new\nline'\n system 'touch PWNED.w",
+                                          "\xff\xfe not utf-8 \\ '.w"};
+  for (const std::string& name : names) {
+    std::string dir = test::makeTempDir();
+    test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
+    test::CommandResult r =
+        test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> expected = {name, "rep"};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(entries(dir), expected) << "something ran: " << name;
+    EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000) << name;
+    // The script stays valid gnuplot and draws the same picture again, running nothing.
+    EXPECT_EQ(test::runShell("cd '" + dir + "/rep' && gnuplot report.gp 2>&1").out, "");
+    EXPECT_EQ(entries(dir + "/rep"),
+              (std::vector<std::string>{"report.csv", "report.gp", "report.md", "report.png"}));
+    test::removeTree(dir);
+  }
+}
+
+TEST(HostileNames, AnErrorAboutANameWithANewlineStaysOneLine) {
+  test::CommandResult r = test::runJelloArgs({"--headless", "no\nsuch\x01world.w"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("no\\x0Asuch\\x01world.w"), std::string::npos) << r.err;
+}
+
+TEST(HostileNames, CheckJsonOfANameThatIsNotUtf8IsValidJsonNotAnException) {
+  StabilityReport report;
+  report.criticalRest = report.criticalInitial = report.criticalFaceOnWall =
+      std::vector<double>(kExplicitIntegrators.size(), 1e-3);
+  World world;
+  std::string json;
+  ASSERT_NO_THROW(json = stabilityJson("bad\xff\xfename.w", world, report));
+  EXPECT_NE(json.find("\"world\": \"bad\xEF\xBF\xBD\xEF\xBF\xBDname.w\""), std::string::npos) << json;
+}
+
+TEST(HostileNames, PrintableEscapesControlsAndBrokenUtf8ButKeepsRealText) {
+  EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC ok"), "caf\xC3\xA9 \xE2\x82\xAC ok");
+  EXPECT_EQ(printable("a\nb\tc\x7F"), "a\\x0Ab\\x09c\\x7F");
+  EXPECT_EQ(printable("\xC3(\xED\xA0\x80\xF5"), "\\xC3(\\xED\\xA0\\x80\\xF5");  // cut, surrogate, past U+10FFFF
+  EXPECT_EQ(printable("back\\slash"), "back\\\\slash");
+}
+
+// ---- Item 2: --dump's rule ------------------------------------------------------------------
+
+test::CommandResult dump(const std::string& target, const std::string& world) {
+  return test::runJelloArgs({"--headless", "--steps", "1", "--dump", target, world});
+}
+
+TEST(DumpRule, NeverReplacesADeviceALinkAFolderAReadOnlyFileOrTheWorldItself) {
+  std::string dir = test::makeTempDir();
+  const std::string world = dir + "/w.w", other = dir + "/other.txt", readOnly = dir + "/ro.w";
+  test::writeText(world, test::readText(test::dataPath("still.w")));
+  test::writeText(other, "mine");
+  test::writeText(readOnly, "keep");
+  ::chmod(readOnly.c_str(), 0444);
+  ASSERT_EQ(::symlink(other.c_str(), (dir + "/link.w").c_str()), 0);
+  ASSERT_EQ(::mkfifo((dir + "/fifo.w").c_str(), 0644), 0);
+  const std::pair<std::string, std::string> cases[] = {{"/dev/full", "not a regular file"},
+                                                       {dir + "/link.w", "symbolic link"},
+                                                       {dir + "/fifo.w", "not a regular file"},
+                                                       {dir, "is a folder"},
+                                                       {readOnly, "read-only"},
+                                                       {world, "the world being run"},
+                                                       {dir + "/./w.w", "the world being run"}};
+  for (const auto& [target, says] : cases) {
+    test::CommandResult r = dump(target, world);
+    EXPECT_EQ(r.status, 2) << target;
+    EXPECT_EQ(r.out, "") << "refused before the run: " << target;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  }
+  struct stat info {};
+  ASSERT_EQ(::stat("/dev/full", &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode));
+  EXPECT_EQ(test::readText(other), "mine");
+  EXPECT_EQ(test::readText(readOnly), "keep");
+  ASSERT_EQ(::lstat((dir + "/link.w").c_str(), &info), 0);
+  EXPECT_TRUE(S_ISLNK(info.st_mode));
+  EXPECT_EQ(test::readText(world), test::readText(test::dataPath("still.w")));
+  test::removeTree(dir);
+}
+
+TEST(DumpRule, ReplacesARegularFileItNamesAndKeepsItsMode) {
+  std::string dir = test::makeTempDir();
+  const std::string out = dir + "/out.w";
+  test::writeText(out, "old");
+  ::chmod(out.c_str(), 0640);
+  test::CommandResult r = dump(out, test::dataPath("still.w"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readWorldFile(out).world.dt, readWorldFile(test::dataPath("still.w")).world.dt);
+  struct stat info {};
+  ASSERT_EQ(::stat(out.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0640u);
+  EXPECT_EQ(entries(dir), std::vector<std::string>{"out.w"}) << "a temporary file was left";
+  test::removeTree(dir);
+}
+
+TEST(DumpRule, ALongValidNameIsWrittenAndATooLongOneIsRefusedBeforeTheRun) {
+  std::string dir = test::makeTempDir();
+  const std::string longest(248, 'n'), tooLong(300, 'n');
+  test::CommandResult r = dump(dir + "/" + longest, test::dataPath("still.w"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(sizeOf(dir + "/" + longest), 0);
+  r = dump(dir + "/" + tooLong, test::dataPath("still.w"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "") << "refused before the run";
+  EXPECT_NE(r.err.find("longer than"), std::string::npos) << r.err;
+  test::removeTree(dir);
+}
+
+// ---- Item 3: no exception escapes -----------------------------------------------------------
+
+TEST(NoCrash, BenchReadsAWorldFromAPipeOnce) {
+  test::CommandResult r = test::runShell("cat '" + test::dataPath("still.w") + "' | " + test::jelloCommand() +
+                                         " --bench --steps 1 /dev/stdin");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("world parsing"), std::string::npos);
+}
+
+// ---- Item 7: a full disk leaves nothing behind and says so ----------------------------------
+
+void smallFiles() {
+  ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG, as on a full disk
+  rlimit limit{2048, 2048};
+  ::setrlimit(RLIMIT_FSIZE, &limit);
+}
+
+TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = test::runJelloArgs(
+      {"--headless", "--steps", "1", "--dump", dir + "/out.w", test::dataPath("still.w")}, "", smallFiles);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+  EXPECT_EQ(entries(dir), std::vector<std::string>{});
+  test::removeTree(dir);
+}
+
+TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) {
+  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002", "--integrators", "EULER",
+                                              test::dataPath("rotate.w")},
+                                             "", smallFiles);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("report.png was not drawn"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("report.png"), std::string::npos) << "named as drawn: " << r.out;
+  EXPECT_EQ(entries(dir + "/rep"), (std::vector<std::string>{"report.csv", "report.gp", "report.md"}));
+  // The next run, with room, is not blocked by leftovers.
+  r = test::runJelloArgs({"--report", dir + "/rep", "--overwrite", "--time", "0.002", "--integrators", "EULER",
+                          test::dataPath("rotate.w")});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000);
+  test::removeTree(dir);
+}
+
+// ---- Item 8: a signal removes the temporary file of the write under way ----------------------
+
+TEST(Signals, TheTemporaryFileOfAWriteUnderWayGoesWithTheSignal) {
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    std::string dir = test::makeTempDir();
+    pid_t child = ::fork();
+    if (child == 0) {
+      installSignalCleanup();
+      writeFileWhole(
+          dir + "/out.w",
+          [signal](std::FILE* file) {
+            std::fputs("half a world", file);
+            std::fflush(file);
+            ::raise(signal);  // stopped in the middle of the write
+          },
+          Existing::Refuse);
+      ::_exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "the signal still ends the program";
+    EXPECT_EQ(entries(dir), std::vector<std::string>{}) << "signal " << signal;
+    test::removeTree(dir);
+  }
+}
+
+// ---- Item 9: two runs cannot share a folder ---------------------------------------------------
+
+TEST(FolderClaims, ASecondClaimOnAFolderIsRefusedUntilTheFirstEnds) {
+  std::string dir = test::makeTempDir() + "/frames";
+  int ready[2], done[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  ASSERT_EQ(::pipe(done), 0);
+  pid_t child = ::fork();
+  if (child == 0) {
+    FolderClaim claim = claimFolder(dir);
+    char c = 1;
+    (void)!::write(ready[1], &c, 1);
+    (void)!::read(done[0], &c, 1);
+    ::_exit(0);
+  }
+  char c = 0;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);
+  try {
+    claimFolder(dir);
+    ADD_FAILURE() << "two runs held one folder";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("in use by another run"), std::string::npos) << e.what();
+  }
+  (void)!::write(done[1], &c, 1);
+  ::waitpid(child, nullptr, 0);
+  EXPECT_NO_THROW(claimFolder(dir)) << "the claim ends with its process";
+  test::removeTree(dir.substr(0, dir.rfind('/')));
+}
+
+TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceed) {
+  std::string dir = test::makeTempDir();
+  const std::string frames = dir + "/f", world = test::dataPath("still.w");
+  // The first run is long (200 frames of 1000 steps); the second starts once it has begun.
+  pid_t first = ::fork();
+  if (first == 0) {
+    ::execl(JELLO_BINARY, JELLO_BINARY, "--headless", "--steps", "200000", "--n", "1000", "--frames", frames.c_str(),
+            world.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  for (int i = 0; i < 400 && sizeOf(frames + "/0000.jpg") < 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  test::CommandResult second =
+      test::runJelloArgs({"--headless", "--steps", "10", "--overwrite", "--frames", frames, world});
+  ::kill(first, SIGTERM);
+  ::waitpid(first, nullptr, 0);
+  if (sizeOf(frames + "/0000.jpg") < 0) GTEST_SKIP() << "no frames: pictures are not built here";
+  EXPECT_EQ(second.status, 2) << second.err;
+  EXPECT_NE(second.err.find("in use by another run"), std::string::npos) << second.err;
+  test::removeTree(dir);
+}
+
+// ---- Item 10: --report and --map replace nothing they did not check --------------------------
+
+TEST(ReportFiles, AHandEditedScriptOrPictureIsNeverReplacedWithoutOverwrite) {
+  std::string dir = test::makeTempDir();
+  for (std::string name : {"report.gp", "report.png"}) {
+    test::removeTree(dir);
+    ::mkdir(dir.c_str(), 0777);
+    test::writeText(dir + "/" + name, "my edits");
+    test::CommandResult r = test::runJelloArgs(
+        {"--report", dir, "--time", "0.002", "--integrators", "EULER", test::dataPath("rotate.w")});
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_NE(r.err.find(name + ": already exists"), std::string::npos) << r.err;
+    EXPECT_EQ(test::readText(dir + "/" + name), "my edits");
+    EXPECT_EQ(entries(dir), std::vector<std::string>{name}) << "refused before writing anything";
+  }
+  for (std::string name : {"stability-map.gp", "stability-map.png"}) {
+    test::removeTree(dir);
+    ::mkdir(dir.c_str(), 0777);
+    test::writeText(dir + "/" + name, "my edits");
+    test::CommandResult r = test::runJelloArgs({"--check", "--map", dir, test::dataPath("rotate.w")});
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_EQ(test::readText(dir + "/" + name), "my edits");
+  }
+  test::removeTree(dir);
+}
+
+// ---- Item 12: numbers and names on the command line -----------------------------------------
+
+int parse(std::vector<std::string> args, JelloCommand* command) {
+  args.insert(args.begin(), "jello");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  ::testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStdout();
+  int status = parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), command);
+  ::testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStderr();
+  return status;
+}
+
+TEST(CommandLineNumbers, FollowTheWorldFilesGrammar) {
+  JelloCommand c;
+  for (const char* refused : {"0x1p-10", "+0.001", " 0.001", "1e-400x", "inf", "nan", "0.001s", ""})
+    EXPECT_EQ(parse({"--dt", refused}, &c), kExitBadInput) << refused;
+  ASSERT_EQ(parse({"--dt", "0.1"}, &c), kGoOn);
+  double fromFile = 0;
+  std::string why;
+  ASSERT_TRUE(parseWorldNumber("0.1", &fromFile, &why));
+  EXPECT_EQ(*c.run.dt, fromFile) << "the same double as a world file's 0.1, not strtold's rounding";
+  // A decimal whose long-double rounding then double rounding differs from one rounding.
+  ASSERT_EQ(parse({"--dt", "1.00000000000000011102230246251565404236316680908203125"}, &c), kGoOn);
+  ASSERT_TRUE(parseWorldNumber("1.00000000000000011102230246251565404236316680908203125", &fromFile, &why));
+  EXPECT_EQ(*c.run.dt, fromFile);
+}
+
+TEST(CommandLineNumbers, StepsBeyondTheLargestWholeNumberAreRefusedNotClamped) {
+  JelloCommand c;
+  EXPECT_EQ(parse({"--steps", "99999999999999999999"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--steps", "0x10"}, &c), kExitBadInput);
+  ASSERT_EQ(parse({"--steps", "9223372036854775807"}, &c), kGoOn);
+  EXPECT_EQ(*c.run.steps, 9223372036854775807LL);
+}
+
+TEST(CommandLineNames, AnEmptyFramesDumpReportOrMapFolderIsRefusedNotIgnored) {
+  JelloCommand c;
+  for (const char* option : {"--frames", "--dump", "--report"}) EXPECT_EQ(parse({option, ""}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--check", "--map", ""}, &c), kExitBadInput);
+}
+
+TEST(CommandLine, OptionsThatNeedAnotherAreRefusedAlone) {
+  JelloCommand c;
+  EXPECT_EQ(parse({"--json"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--tolerance", "1e-3"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--integrators", "RK4"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--map", "m"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--check", "--json"}, &c), kGoOn);
+  EXPECT_EQ(c.mode, JelloCommand::Mode::Check);
+}
+
+TEST(StandardOutput, AResultThatCannotBeWrittenIsAFailure) {
+  test::CommandResult r =
+      test::runShell(test::jelloCommand() + " --headless --steps 1 '" + test::dataPath("still.w") + "' >/dev/full");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("cannot write to standard output"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace jello
