@@ -108,6 +108,11 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   const World& world = file.world;
 
   long long steps = kDefaultFrames * world.n;
+  if (!options.steps && !options.time && steps > kMostDefaultSteps) {
+    printError(options.worldPath + ": n = " + std::to_string(world.n) + " makes the default run (300 frames of n steps) " +
+               std::to_string(steps) + " steps long; say how long with --steps N or --time T, or lower n with --n");
+    return kExitBadInput;
+  }
   if (options.steps) steps = *options.steps;
   if (options.time) steps = stepsForTime(*options.time, world.dt);
 

@@ -30,6 +30,9 @@ constexpr int kExitBadInput = 2;
 
 // The default length of a run: 300 drawn frames of n steps each.
 constexpr long long kDefaultFrames = 300;
+// A default run longer than this (n above 100,000) is refused rather than started: at about
+// 100 us an RK4 step it would take most of an hour, which nobody asks for without saying so.
+constexpr long long kMostDefaultSteps = 30'000'000;
 
 // Receives the frames a viewer would draw: the state at step 0 and after every n steps.
 class FrameObserver {

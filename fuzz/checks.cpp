@@ -12,6 +12,7 @@
 #include <cstring>
 #include <string_view>
 
+#include "commandline.h"
 #include "world.h"
 #include "worldbuilder.h"
 
@@ -103,6 +104,61 @@ void checkFieldExpression(const std::uint8_t* data, std::size_t size) {
     const std::string message = e.what();
     if (message.empty()) failed("empty error message", recipe.expression);
   }
+}
+
+namespace {
+
+constexpr std::size_t kMostArguments = 64;
+
+// Every rule of the options that a parse that goes on must keep.
+void checkCommand(const JelloCommand& c) {
+  const RunOptions& run = c.run;
+  auto positive = [](double x) { return std::isfinite(x) && x > 0; };
+  if (run.dt && !positive(*run.dt)) failed("--dt", std::to_string(*run.dt));
+  if (run.time && !positive(*run.time)) failed("--time", std::to_string(*run.time));
+  if (run.steps && *run.steps < 0) failed("--steps", std::to_string(*run.steps));
+  if (run.n && *run.n < 1) failed("--n", std::to_string(*run.n));
+  if (!positive(run.tolerances.rtol) || !positive(run.tolerances.atol)) failed("--rtol/--atol", "");
+  if (run.dumpPath && run.dumpPath->empty()) failed("--dump", "empty");
+  if (run.worldPath.empty()) failed("WORLD", "empty");
+  const PictureOptions& p = c.pictures;
+  if (p.width < kMinPictureSize || p.width > kMaxPictureSize || p.height < kMinPictureSize ||
+      p.height > kMaxPictureSize)
+    failed("--size", std::to_string(p.width) + "x" + std::to_string(p.height));
+  if (p.maxFrames < 1 || p.maxFrames > kMaxFrames) failed("--max-frames", std::to_string(p.maxFrames));
+  if (c.framesGiven && p.framesDir.empty()) failed("--frames", "empty");
+  if (c.mode == JelloCommand::Mode::Report && (c.report.dir.empty() || !positive(c.report.time) ||
+                                               !positive(c.report.visualTolerance)))
+    failed("--report", c.report.dir);
+  if (c.mode == JelloCommand::Mode::Map && (c.mapDir.empty() || !positive(c.mapTime))) failed("--map", c.mapDir);
+  if (c.json && c.mode != JelloCommand::Mode::Check) failed("--json", "without --check");
+}
+
+}  // namespace
+
+void checkCommandLine(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::string> args = {"jello"};
+  std::string current;
+  for (std::size_t i = 0; i < size && args.size() < kMostArguments; ++i) {
+    if (data[i] != 0) {
+      current += static_cast<char>(data[i]);
+      continue;
+    }
+    args.push_back(current);
+    current.clear();
+  }
+  if (!current.empty() && args.size() < kMostArguments) args.push_back(current);
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  JelloCommand command;
+  int status = -2;
+  try {
+    status = parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), &command);
+  } catch (const std::exception& e) {
+    failed("an exception escaped the parse", e.what());
+  }
+  if (status == kGoOn) checkCommand(command);
+  else if (status != 0 && status != kExitBadInput) failed("exit status", std::to_string(status));
 }
 
 }  // namespace jello::fuzz

@@ -17,4 +17,10 @@ void checkWorldText(const std::uint8_t* data, std::size_t size);
 // field of finite forces. Aborts on any other outcome.
 void checkFieldExpression(const std::uint8_t* data, std::size_t size);
 
+// jello's command line: the input split at NUL bytes into arguments, parsed (nothing is read
+// or run). The parse goes on, prints help or version (status 0), or refuses (status 2); what
+// it goes on with keeps every rule of the options (finite, positive steps and times, sizes in
+// range, names not empty). Aborts on any other outcome, an exception among them.
+void checkCommandLine(const std::uint8_t* data, std::size_t size);
+
 }  // namespace jello::fuzz

@@ -1,5 +1,5 @@
 // Every input a fuzzer ever found a fault with (tests/data/fuzz/: world-* for the reader, expr-*
-// for field expressions), and the fuzzers' seeds, replayed through the fuzzers' own checks,
+// for field expressions, cli-* for jello's command line), and the fuzzers' seeds, replayed through the fuzzers' own checks,
 // which abort on a fault. See `make fuzz`.
 #include <gtest/gtest.h>
 
@@ -48,6 +48,18 @@ TEST(FuzzRegressions, FieldExpressionInputs) {
   files.insert(files.end(), seeds.begin(), seeds.end());
   ASSERT_GE(files.size(), 6u);
   replay(files, fuzz::checkFieldExpression);
+}
+
+TEST(FuzzRegressions, CommandLineInputs) {
+  std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "cli-");
+  std::vector<std::string> seeds = filesIn(std::string(JELLO_FUZZ_SEEDS) + "/commandline", "");
+  files.insert(files.end(), seeds.begin(), seeds.end());
+  ASSERT_GE(files.size(), 10u);
+  ::testing::internal::CaptureStdout();  // --help and --version print
+  ::testing::internal::CaptureStderr();
+  replay(files, fuzz::checkCommandLine);
+  ::testing::internal::GetCapturedStdout();
+  ::testing::internal::GetCapturedStderr();
 }
 
 }  // namespace

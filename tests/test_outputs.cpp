@@ -362,6 +362,14 @@ TEST(CommandLine, OptionsThatNeedAnotherAreRefusedAlone) {
   EXPECT_EQ(c.mode, JelloCommand::Mode::Check);
 }
 
+TEST(DefaultRun, AWorldWhoseNMakesTheDefaultRunEndlessIsRefusedWithWhatToDo) {
+  test::CommandResult r = test::runJelloArgs({"--headless", "--n", "2147483647", test::dataPath("still.w")});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("644245094100 steps long; say how long with --steps N or --time T"), std::string::npos) << r.err;
+  r = test::runJelloArgs({"--headless", "--n", "2147483647", "--steps", "3", test::dataPath("still.w")});
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
 TEST(StandardOutput, AResultThatCannotBeWrittenIsAFailure) {
   test::CommandResult r =
       test::runShell(test::jelloCommand() + " --headless --steps 1 '" + test::dataPath("still.w") + "' >/dev/full");
