@@ -49,7 +49,7 @@ struct Given {
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
-  app.add_option("WORLD", c->run.worldPath, "world file (.w)");
+  app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
   app.add_flag("--headless", c->headless, "run without a window");
   g->stepsOption = app.add_option("--steps", g->steps, "steps to run headless (default 300 frames of n steps)")
                        ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));

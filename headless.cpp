@@ -74,16 +74,6 @@ std::string whyNotDumpable(const std::string& dumpPath, const std::string& world
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 
-std::string newFramesDir(const std::string& parent, const std::string& stem) {
-  for (int i = 1;; ++i) {
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, "-%03d", i);
-    std::string candidate = parent + "/" + stem + suffix;
-    struct stat info {};
-    if (::stat(candidate.c_str(), &info) != 0) return candidate;
-  }
-}
-
 long long stepsForTime(double time, double dt) {
   return static_cast<long long>(std::ceil(time / dt * (1 - 1e-9)));
 }

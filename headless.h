@@ -59,8 +59,6 @@ long long stepsForTime(double time, double dt);
 // that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
 
-// A folder name under `parent` that does not exist yet: parent/STEM-001, parent/STEM-002, ...
-std::string newFramesDir(const std::string& parent, const std::string& stem);
 
 // Reads the world of `options` and applies its overrides. On bad input prints one line on
 // stderr and returns false.

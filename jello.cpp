@@ -59,7 +59,7 @@ int simulate(jello::JelloCommand c) {
       jello::printError(why + "; running headless");
       return jello::runHeadless(c.run);
     }
-    if (!c.framesGiven) c.pictures.framesDir = jello::newFramesDir("animation", worldStem(c.run.worldPath));
+    if (!c.framesGiven) c.pictures.framesDir = jello::makeNewFolder("animation", worldStem(c.run.worldPath));
     jello::printError("no display (" + why + "); running headless, writing frames into " + c.pictures.framesDir + "/");
   }
   std::unique_ptr<jello::FrameObserver> frames;

@@ -234,6 +234,19 @@ FolderClaim claimFolder(const std::string& dir) {
   return claim;
 }
 
+std::string makeNewFolder(const std::string& parent, const std::string& stem) {
+  claimFolder(parent);  // made when missing; the claim ends at once
+  constexpr int kMostFolders = 9999;
+  for (int i = 1; i <= kMostFolders; ++i) {
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "-%03d", i);
+    const std::string candidate = parent + "/" + stem + suffix;
+    if (::mkdir(candidate.c_str(), 0777) == 0) return candidate;
+    if (errno != EEXIST) throw OutputError(withError(candidate, "cannot make the folder", errno));
+  }
+  throw OutputError(parent + ": holds " + std::to_string(kMostFolders) + " folders of " + stem + " already");
+}
+
 FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names, Existing existing) {
   FolderClaim claim = claimFolder(dir);
   for (const std::string& name : names) {

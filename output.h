@@ -72,6 +72,11 @@ class FolderClaim {
 // made or written, or when another run holds it.
 FolderClaim claimFolder(const std::string& dir);
 
+// Makes a new folder under `parent` (made too when missing) and returns its name: parent/STEM-001,
+// parent/STEM-002, ..., the first that did not exist. mkdir decides, so two runs never get the
+// same folder. Throws OutputError.
+std::string makeNewFolder(const std::string& parent, const std::string& stem);
+
 // Claims `dir` for a run that will write the files `names` into it, and checks each of them
 // now, before the work (whyNotWritable). Throws OutputError naming the first that cannot be
 // written, e.g. "rep/report.gp: already exists; choose another folder, or add --overwrite".

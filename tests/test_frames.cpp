@@ -172,11 +172,12 @@ TEST(FrameSequence, NeverOverwritesUnlessAskedAndThenLeavesNoStaleTail) {
   test::removeTree(dir);
 }
 
-TEST(FrameSequence, NewFolderNamesDoNotExistYet) {
+TEST(FrameSequence, NewFoldersAreMadeOnceEachAndNeverShared) {
   std::string dir = test::makeTempDir();
-  EXPECT_EQ(newFramesDir(dir, "rotate"), dir + "/rotate-001");
-  ::mkdir((dir + "/rotate-001").c_str(), 0777);
-  EXPECT_EQ(newFramesDir(dir, "rotate"), dir + "/rotate-002");
+  EXPECT_EQ(makeNewFolder(dir + "/animation", "rotate"), dir + "/animation/rotate-001");
+  EXPECT_EQ(makeNewFolder(dir + "/animation", "rotate"), dir + "/animation/rotate-002");
+  ::mkdir((dir + "/animation/rotate-003").c_str(), 0777);
+  EXPECT_EQ(makeNewFolder(dir + "/animation", "rotate"), dir + "/animation/rotate-004");
   test::removeTree(dir);
 }
 
