@@ -111,6 +111,7 @@ CommandResult runProgram(const std::vector<std::string>& argv, const std::string
     ::dup2(e, 2);
     if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) ::_exit(126);
     if (limits) limits();
+    ::alarm(kHangGuardSeconds);  // survives exec: a hang ends as a failed test, not a stuck suite
     ::execv(args[0], args.data());
     ::_exit(127);
   }

@@ -42,7 +42,9 @@ std::string jelloCommand();
 CommandResult runShell(const std::string& script);
 
 // Runs `argv` (argv[0] a path) with no shell in between, in `cwd` when given, standard input
-// from /dev/null, output captured; `limits` run in the child before exec (setrlimit, say).
+// from /dev/null, output captured; `limits` run in the child before exec (setrlimit, say). A
+// program still running after kHangGuardSeconds is stopped (status -1).
+constexpr unsigned kHangGuardSeconds = 120;
 CommandResult runProgram(const std::vector<std::string>& argv, const std::string& cwd = "",
                          void (*limits)() = nullptr);
 // runProgram of the jello binary under test with these arguments.
