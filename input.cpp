@@ -34,7 +34,19 @@ constexpr std::size_t kShortestFieldLine = 6;
 constexpr int kMaxTokensKept = 8;
 constexpr int kFifoWaitSeconds = 5;  // how long a FIFO may keep the reader waiting for its writer
 
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// A CR with more text after it on the same line: the line ends are CR alone, not CRLF (whose
+// CR is the last character before the LF, and whitespace).
+bool hasBareCarriageReturn(std::string_view line) {
+  std::size_t cr = line.find('\r');
+  if (cr == std::string_view::npos) return false;
+  for (std::size_t i = cr + 1; i < line.size(); ++i)
+    if (!isSpace(line[i])) return true;
+  return false;
+}
 
 // Where the reader's lines come from: a text in memory, or a file read a block at a time, so
 // that reading stops at the first line that cannot belong to a world (a binary file, a device
@@ -140,29 +152,44 @@ class Parser {
       ++line_;
       count_ = 0;
       if (status == LineSource::Status::End) return false;
-      const bool tooLong = status == LineSource::Status::TooLong;
-      std::size_t i = 0;
-      while (i < line.size()) {
-        while (i < line.size() && isSpace(line[i])) ++i;
-        if (i == line.size()) break;
-        std::size_t start = i;
-        while (i < line.size() && !isSpace(line[i])) {
-          const unsigned char c = static_cast<unsigned char>(line[i]);
-          if (c < 0x20 || c >= 0x7f) {
-            char text[96];
-            std::snprintf(text, sizeof text, "byte 0x%02x in column %zu: not a text file, not a world file", c, i + 1);
-            fail(line_, text, field);
-          }
-          ++i;
-        }
-        if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
-        ++count_;
+      // Windows editors start a UTF-8 file with a byte order mark; it is no part of the text.
+      if (line_ == 1 && line.substr(0, kUtf8Bom.size()) == kUtf8Bom)
+        line.remove_prefix(kUtf8Bom.size());
+      split(line, field);
+      // A CR-only file (classic Mac OS) is one long line to a reader that splits at LF.
+      if (hasBareCarriageReturn(line)) {
+        fail(line_,
+             "lines end with CR only (classic Mac OS line ends): convert the file to LF or CRLF "
+             "line ends",
+             field);
       }
-      if (tooLong) {
+      if (status == LineSource::Status::TooLong) {
         fail(line_, "line is longer than " + std::to_string(LineSource::kMaxLineLength) +
                         " characters: not a world file", field);
       }
       if (count_ > 0) return true;
+    }
+  }
+
+  // Splits `line` into tokens at whitespace; fails on a byte that no text holds.
+  void split(std::string_view line, const std::string& field) {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && isSpace(line[i])) ++i;
+      if (i == line.size()) break;
+      std::size_t start = i;
+      while (i < line.size() && !isSpace(line[i])) {
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        if (c < 0x20 || c >= 0x7f) {
+          char text[96];
+          std::snprintf(text, sizeof text,
+                        "byte 0x%02x in column %zu: not a text file, not a world file", c, i + 1);
+          fail(line_, text, field);
+        }
+        ++i;
+      }
+      if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
+      ++count_;
     }
   }
 

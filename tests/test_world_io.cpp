@@ -1,6 +1,7 @@
 // Reader and writer of world files (SPEC.md section 1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -111,6 +112,54 @@ TEST(WorldReader, CrlfFilesReadTheSame) {
   std::string crlf;
   for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   expectSameWorld(parseWorld(text, "lf"), parseWorld(crlf, "crlf"));
+}
+
+// The message a reader of `text` (as a string and as a file) gives, or "" when it is accepted.
+std::string readerMessage(const std::string& text, const std::string& path) {
+  test::writeText(path, text);
+  std::string fromMemory, fromFile;
+  try {
+    parseWorld(text, path);
+  } catch (const WorldFileError& e) {
+    fromMemory = e.what();
+  }
+  try {
+    readWorldFile(path);
+  } catch (const WorldFileError& e) {
+    fromFile = e.what();
+  }
+  EXPECT_EQ(fromMemory, fromFile);
+  return fromFile;
+}
+
+TEST(WorldReader, AUtf8ByteOrderMarkIsSkippedAsWindowsEditorsWriteIt) {
+  std::string dir = test::makeTempDir();
+  std::string text = test::readText(dataPath("gravity.w"));
+  EXPECT_EQ(readerMessage("\xEF\xBB\xBF" + text, dir + "/bom.w"), "");
+  expectSameWorld(parseWorld(text, "plain"), readWorldFile(dir + "/bom.w"));
+  // Only at the start of the file: elsewhere its bytes are not text.
+  std::string inside = text.substr(0, 4) + "\xEF\xBB\xBF" + text.substr(4);
+  EXPECT_EQ(readerMessage(inside, dir + "/inside.w"),
+            dir + "/inside.w:2: byte 0xef in column 1: not a text file, not a world file (dt n)");
+  test::removeTree(dir);
+}
+
+TEST(WorldReader, ACrOnlyFileIsToldToConvertItsLineEnds) {
+  std::string dir = test::makeTempDir();
+  const std::string expected =
+      ":1: lines end with CR only (classic Mac OS line ends): convert the file to LF or CRLF "
+      "line ends (integrator)";
+  for (const char* world : {"gravity.w", "still.w"}) {
+    std::string cr = test::readText(dataPath(world));
+    std::replace(cr.begin(), cr.end(), '\n', '\r');
+    EXPECT_EQ(readerMessage(cr, dir + "/cr.w"), dir + "/cr.w" + expected) << world;
+  }
+  // A short CR-only file is not one long line, but the same mistake.
+  EXPECT_EQ(readerMessage("RK4\r0.001 1\r", dir + "/short.w"), dir + "/short.w" + expected);
+  // CRLF, and a CR before the LF of a line with trailing blanks, are fine.
+  EXPECT_EQ(readerMessage("RK4 \r \r\n", dir + "/crlf.w"),
+            dir + "/crlf.w:2: file ends early, expected 2 numbers (dt n)");
+  test::removeTree(dir);
 }
 
 TEST(WorldReader, IntegratorNamesAreCaseInsensitive) {
