@@ -32,7 +32,10 @@ constexpr std::size_t kMaxIntegratorNameLength = 16;
 // the field it announces, so it is refused before any memory is set aside for it.
 constexpr std::size_t kShortestFieldLine = 6;
 constexpr int kMaxTokensKept = 8;
-constexpr int kFifoWaitSeconds = 5;  // how long a FIFO may keep the reader waiting for its writer
+// How long an input that is not a regular file (a FIFO, a pipe, a terminal) may keep the reader
+// waiting for a writer's first bytes, and then for each next block: a writer that has stopped
+// sending is reported, not waited for forever. A slow writer that keeps sending is read.
+constexpr int kInputWaitSeconds = 5;
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
@@ -58,6 +61,8 @@ class LineSource {
   LineSource(int fd, long long size) : fd_(fd), sizeKnown_(size >= 0), remaining_(size >= 0 ? size : 0) {}
 
   enum class Status { Line, End, TooLong };
+  // Thrown by next() when an input of unknown size sent nothing for kInputWaitSeconds.
+  struct Stalled {};
 
   // The next line without its '\n', valid until the next call (for TooLong, its start).
   Status next(std::string_view* line) {
@@ -106,6 +111,7 @@ class LineSource {
       begin_ = 0;
       searched = end_;
       if (buffer_.size() - end_ < kBlock) buffer_.resize(end_ + kBlock);
+      if (!sizeKnown_) waitForData();
       ssize_t got;
       do got = ::read(fd_, buffer_.data() + end_, kBlock);
       while (got < 0 && errno == EINTR);
@@ -124,6 +130,15 @@ class LineSource {
  private:
   static constexpr std::size_t kBlock = 1 << 16;
   void consumed(std::size_t bytes) { remaining_ -= std::min(remaining_, bytes); }
+
+  // Waits until read() will not block (data, end of input or an error to report).
+  void waitForData() {
+    pollfd waiting{fd_, POLLIN, 0};
+    int ready;
+    do ready = ::poll(&waiting, 1, kInputWaitSeconds * 1000);
+    while (ready < 0 && errno == EINTR);
+    if (ready == 0) throw Stalled{};
+  }
 
   std::string_view memory_;
   std::size_t pos_ = 0;
@@ -148,7 +163,15 @@ class Parser {
   bool nextLine(const std::string& field) {
     std::string_view line;
     for (;;) {
-      LineSource::Status status = source_.next(&line);
+      LineSource::Status status = LineSource::Status::End;
+      try {
+        status = source_.next(&line);
+      } catch (const LineSource::Stalled&) {
+        fail(line_ + 1,
+             "nothing arrived for " + std::to_string(kInputWaitSeconds) +
+                 " s: the writer stopped sending before the world's end",
+             field);
+      }
       ++line_;
       count_ = 0;
       if (status == LineSource::Status::End) return false;
@@ -412,7 +435,7 @@ WorldFile parseWorld(std::string_view text, const std::string& name) {
 
 WorldFile readWorldFile(const std::string& path) {
   // Non-blocking open: a FIFO nobody writes to must not hang the reader; reads themselves
-  // block as usual.
+  // block as usual, after a wait of at most kInputWaitSeconds for data (LineSource).
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
   struct Closer {
@@ -426,10 +449,11 @@ WorldFile readWorldFile(const std::string& path) {
     // Wait for a writer's first bytes (or its hanging up) as cat would, but not forever.
     pollfd waiting{fd, POLLIN, 0};
     int ready;
-    do ready = ::poll(&waiting, 1, kFifoWaitSeconds * 1000);
+    do ready = ::poll(&waiting, 1, kInputWaitSeconds * 1000);
     while (ready < 0 && errno == EINTR);
     if (ready == 0) {
-      throw WorldFileError(path + ": a FIFO nothing was written to within " + std::to_string(kFifoWaitSeconds) + " s");
+      throw WorldFileError(path + ": a FIFO nothing was written to within " +
+                           std::to_string(kInputWaitSeconds) + " s");
     }
   }
   int flags = ::fcntl(fd, F_GETFL);

@@ -1,12 +1,12 @@
 // Inputs that are not world files, or not files at all, and the same run twice.
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 #include "integrators.h"
@@ -55,6 +55,50 @@ TEST(SpecialFiles, AFifoIsReadAndAFifoWithoutWriterDoesNotHang) {
                      test::jelloCommand() + " --headless --steps 2 '" + fifo + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("steps=2 "), std::string::npos) << r.out;
+  test::removeTree(dir);
+}
+
+// Runs jello on `fifo` while `writer` (a command whose output goes into the FIFO) writes, then
+// stops the writer. Sets *seconds to the reader's time.
+test::CommandResult readWhileWriting(const std::string& fifo, const std::string& writer,
+                                     double* seconds) {
+  auto start = std::chrono::steady_clock::now();
+  test::CommandResult r = test::runShell(
+      writer + " > '" + fifo + "' & writer=$!; " + kHangGuard + " " + test::jelloCommand() +
+      " --headless --steps 2 '" + fifo + "'; status=$?; kill $writer 2>/dev/null; exit $status");
+  *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+TEST(SpecialFiles, AFifoWriterThatStallsIsRefusedAfterFiveSecondsAndASlowOneIsRead) {
+  std::string dir = test::makeTempDir();
+  std::string fifo = dir + "/a fifo.w";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  const std::string world = "'" + test::dataPath("jello.w") + "'";
+  double seconds = 0;
+  // Opens and sends nothing: refused after the wait, as before.
+  test::CommandResult r = readWhileWriting(fifo, "exec sleep 60", &seconds);
+  expectRefused(r, "a FIFO nothing was written to within 5 s");
+  EXPECT_GE(seconds, 4.9);
+  EXPECT_LT(seconds, 15);
+  // Sends 100000 bytes (3706 lines and part of the next), then nothing, and never closes.
+  r = readWhileWriting(fifo, "sh -c 'head -c 100000 \"$0\"; exec sleep 60' " + world, &seconds);
+  expectRefused(
+      r,
+      "a fifo.w:3707: nothing arrived for 5 s: the writer stopped sending before the world's end "
+      "(force field node (4,3,9))");
+  EXPECT_GE(seconds, 4.9);
+  EXPECT_LT(seconds, 15) << "the reader waited for the writer's end";
+  // Sends the world in four parts 1.5 s apart: 6 s in all, longer than the wait, and is read.
+  r = readWhileWriting(
+      fifo,
+      "sh -c 'for part in 0 1 2 3; do dd if=\"$0\" bs=200000 skip=$part count=1 status=none; "
+      "sleep 1.5; done' " +
+          world,
+      &seconds);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("steps=2 "), std::string::npos) << r.out;
+  EXPECT_GE(seconds, 4.5);
   test::removeTree(dir);
 }
 
