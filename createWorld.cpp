@@ -55,6 +55,45 @@ void warnAbout(const jello::World& world, const jello::State& state) {
   }
 }
 
+// The options given that shape `part` of a world, in the order of --help: what a message about
+// that part names. A --preset or a --from world is valid by itself, so neither is named.
+std::vector<std::string> optionsShaping(jello::WorldProblem::Part part, const CLI::App& app) {
+  using Part = jello::WorldProblem::Part;
+  std::vector<const char*> names;
+  switch (part) {
+    case Part::Parameters:
+      names = {"--dt",          "--n",           "--k-elastic", "--d-elastic",
+               "--k-collision", "--d-collision", "--mass"};
+      break;
+    case Part::Plane:
+      names = {"--plane"};
+      break;
+    case Part::Field:
+      names = {"--field-uniform", "--field-swirl", "--field-radial", "--field-expr"};
+      break;
+    case Part::Position:
+      names = {"--cube-size", "--center", "--rotate", "--skew-corner"};
+      break;
+    case Part::Velocity:
+      names = {"--rotate", "--velocity", "--spin"};
+      break;
+  }
+  std::vector<std::string> given;
+  for (const char* name : names)
+    if (app.get_option(name)->count() > 0) given.push_back(name);
+  return given;
+}
+
+// One line on what makes the world invalid, in the terms of the options that made it: never a
+// line number of a text that is not written.
+std::string describeProblem(const jello::WorldProblem& problem, const CLI::App& app) {
+  std::vector<std::string> options = optionsShaping(problem.part, app);
+  if (options.size() == 1) return options[0] + ": " + problem.what;
+  std::string from;
+  for (const std::string& option : options) from += (from.empty() ? " (from " : ", ") + option;
+  return "the world would be invalid: " + problem.what + (from.empty() ? "" : from + ")");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -234,8 +273,9 @@ int main(int argc, char** argv) {
     w.field = jello::buildField(field);
     jello::State initial = jello::buildState(state);
 
-    // What is written must read back: the reader is the judge of a world.
-    jello::parseWorld(jello::formatWorld(w, initial), output);
+    // What is written must read back: the reader's rules, applied to the values themselves.
+    if (auto problem = jello::findWorldProblem(w, initial))
+      return fail(describeProblem(*problem, app));
     warnAbout(w, initial);
     try {
       jello::writeWorldFile(output, w, initial, force);

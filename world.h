@@ -6,6 +6,7 @@
 // pointIndex(i,j,k) = i*64 + j*8 + k, in the file's order.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -103,6 +104,19 @@ struct WorldFile {
   World world;
   State state;
 };
+
+// Why a world in memory is one the reader would refuse (SPEC section 1's rules on its values),
+// by the part of the world at fault, so that a program that makes worlds can say which of its
+// inputs is to blame.
+struct WorldProblem {
+  enum class Part { Parameters, Plane, Field, Position, Velocity };
+  Part part = Part::Parameters;
+  std::size_t index = 0;  // the field node (Field) or the point (Position, Velocity)
+  std::string
+      what;  // one line, e.g. "the velocity of point [0][0][0] is (inf, 0, 0) m/s, not finite"
+};
+// The first problem of `world` and `state`, or none when formatWorld of them reads back.
+std::optional<WorldProblem> findWorldProblem(const World& world, const State& state);
 
 // Parses the text of a world file; `name` is used in error messages. Throws WorldFileError.
 WorldFile parseWorld(std::string_view text, const std::string& name);

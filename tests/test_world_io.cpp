@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <functional>
 #include <random>
 
 #include "test_support.h"
@@ -222,6 +224,48 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0) << "temporary file left behind";
   EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
   test::removeTree(dir);
+}
+
+// findWorldProblem (createWorld's judge) and the reader agree: each value the reader refuses in
+// a file is the problem named, with its part and point or node.
+TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
+  using Part = WorldProblem::Part;
+  const WorldFile good = readWorldFile(dataPath("rotate.w"));
+  EXPECT_FALSE(findWorldProblem(good.world, good.state));
+  struct Case {
+    std::function<void(WorldFile&)> spoil;
+    Part part;
+    std::size_t index;
+    std::string what;
+  };
+  const Case cases[] = {
+      {[](WorldFile& f) { f.world.mass = 0; }, Part::Parameters, 0,
+       "mass must be > 0 and finite, got 0"},
+      {[](WorldFile& f) { f.world.dt = -1e-9; }, Part::Parameters, 0,
+       "dt must be > 0 and finite, got -1e-09"},
+      {[](WorldFile& f) { f.world.kCollision = INFINITY; }, Part::Parameters, 0,
+       "kCollision must be >= 0 and finite, got inf"},
+      {[](WorldFile& f) {
+         f.world.plane = {0, 0, 0, 1};
+       },
+       Part::Plane, 0, "the plane's normal (a,b,c) is zero"},
+      {[](WorldFile& f) { f.world.field.forces[3 * 931 + 2] = NAN; }, Part::Field, 931,
+       "the force at field node (1,1,1) is (0.018184, -0.018184, nan) N, not finite"},
+      {[](WorldFile& f) { f.state.p()[coordIndex(pointIndex(7, 7, 7), 0)] = INFINITY; },
+       Part::Position, 511, "the position of point [7][7][7] is (inf, 1, 1) m, not finite"},
+      {[](WorldFile& f) { f.state.v()[coordIndex(pointIndex(0, 1, 2), 1)] = -INFINITY; },
+       Part::Velocity, 10, "the velocity of point [0][1][2] is (0, -inf, 0) m/s, not finite"},
+  };
+  for (const Case& c : cases) {
+    WorldFile f = good;
+    c.spoil(f);
+    std::optional<WorldProblem> problem = findWorldProblem(f.world, f.state);
+    ASSERT_TRUE(problem) << c.what;
+    EXPECT_EQ(problem->part, c.part) << c.what;
+    EXPECT_EQ(problem->index, c.index) << c.what;
+    EXPECT_EQ(problem->what, c.what);
+    EXPECT_THROW(parseWorld(formatWorld(f.world, f.state), "spoilt.w"), WorldFileError) << c.what;
+  }
 }
 
 class MalformedWorld : public ::testing::TestWithParam<test::MalformedCase> {};
