@@ -4,14 +4,19 @@
 //   createWorld --describe WORLD      says what a world is
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.h"
 #include "describe.h"
+#include "memory.h"
 #include "physics.h"
 #include "stability.h"
 #include "worldbuilder.h"
@@ -37,7 +42,11 @@ int fail(const std::string& message) {
 void warn(const std::string& message) { std::fprintf(stderr, "createWorld: warning: %s\n", message.c_str()); }
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
-void warnAbout(const jello::World& world, const jello::State& state) {
+void warnAbout(jello::World& world, const jello::State& state) {
+  // Nothing here looks at the field: it is set aside, so that the Model below copies none of it
+  // (for R = 512, 7.5 GB).
+  jello::ForceField field = std::move(world.field);
+  world.field = {};
   double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
   if (world.dt > limit) {
     char text[200];
@@ -53,6 +62,7 @@ void warnAbout(const jello::World& world, const jello::State& state) {
     warn("the cube starts across the inclined plane (" + std::to_string(across) +
          " points on the far side of its centroid's side): the plane will push them back");
   }
+  world.field = std::move(field);
 }
 
 // The options given that shape `part` of a world, in the order of --help: what a message about
@@ -109,6 +119,13 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "the world file to write")->type_name("FILE");
   auto* describeOption = app.add_option("--describe", describe, "print what WORLD is, and exit")->type_name("WORLD");
   app.add_flag("--force", force, "replace FILE when it exists");
+  double maxMemory = 0;
+  auto* maxMemoryOption =
+      app.add_option(
+             "--max-memory", maxMemory,
+             "memory the world may take, GB (default: what the machine and its limits allow)")
+          ->type_name("GB")
+          ->check(kPositive);
   auto* presetOption = app.add_option("--preset", preset, "start from a course world")->type_name("NAME")
                            ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
   auto* fromOption = app.add_option("--from", from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
@@ -191,8 +208,11 @@ int main(int argc, char** argv) {
   int status = 0;
   if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
 
+  if (*maxMemoryOption)
+    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(maxMemory * 1e9, 1e18)));
   try {
     if (*describeOption) {
+      jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
       if (!output.empty()) return fail("--describe reads a world; it does not go with -o");
       jello::WorldFile file = jello::readWorldFile(describe);
       std::printf("%s\n%s", describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
@@ -200,13 +220,16 @@ int main(int argc, char** argv) {
     }
     if (output.empty()) return fail("say where to write the world: -o FILE (see createWorld --help)");
 
+    jello::setWorldUse(jello::WorldUse::Create);
     jello::Recipe recipe = jello::defaultRecipe();
     if (*presetOption) recipe = jello::coursePreset(preset);
     if (*fromOption) {
       jello::WorldFile base = jello::readWorldFile(from);
-      recipe.world = base.world;
+      // The field is moved, never copied: createWorld holds one field at a time.
       recipe.field.source = jello::FieldRecipe::Source::Given;
-      recipe.field.given = base.world.field;
+      recipe.field.given = std::move(base.world.field);
+      base.world.field = {};
+      recipe.world = std::move(base.world);
       recipe.state.from = base.state;
     }
 
@@ -232,7 +255,10 @@ int main(int argc, char** argv) {
     jello::FieldRecipe& field = recipe.field;
     bool newSource = false;
     for (CLI::Option* option : fieldSources) newSource = newSource || option->count() > 0;
-    if (newSource && field.source == Source::Given) field.resolution = 30;  // a --from world's field is replaced
+    if (newSource && field.source == Source::Given) {
+      field.resolution = 30;  // a --from world's field is replaced,
+      field.given = {};       // and let go before another is read or built
+    }
     if (*resolutionOption) {
       if (field.source == Source::Given && !newSource) {
         return fail("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
@@ -270,7 +296,14 @@ int main(int argc, char** argv) {
     if (*skewOption) state.skewCorner = toVec3(skew);
     state.insideOut = insideOut;
 
-    w.field = jello::buildField(field);
+    if (field.source == Source::Given) {
+      w.field = std::move(field.given);
+    } else {
+      // Refused before the field is built, not by std::bad_alloc while building it.
+      if (field.source != Source::None && field.resolution > 0)
+        jello::requireMemory(jello::worldMemoryNeed(field.resolution, jello::WorldUse::Create));
+      w.field = jello::buildField(field);
+    }
     jello::State initial = jello::buildState(state);
 
     // What is written must read back: the reader's rules, applied to the values themselves.
@@ -296,5 +329,10 @@ int main(int argc, char** argv) {
     return fail(e.what());
   } catch (const jello::RecipeError& e) {
     return fail(e.what());
+  } catch (const jello::NotEnoughMemory& e) {
+    return fail(e.what());
+  } catch (const std::bad_alloc&) {
+    // The need was computed, but something else holds memory meanwhile.
+    return fail("not enough memory for this world (an allocation failed)");
   }
 }

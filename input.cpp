@@ -16,9 +16,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <system_error>
 
+#include "memory.h"
 #include "world.h"
 
 namespace jello {
@@ -345,6 +347,10 @@ bool parseIntegratorName(std::string_view name, Integrator* out) {
 
 namespace {
 
+// The size of the blocks formatWorldInBlocks hands out, bytes: large enough that writing them
+// costs few system calls, small beside any field worth streaming.
+constexpr std::size_t kFormatBlock = 1 << 16;
+
 // Doubles set aside at first for a field whose input has no known size (a pipe): the vector
 // then grows with what actually arrives, not with what the resolution line claims.
 constexpr std::size_t kUnknownSizeReserve = 3 << 16;
@@ -406,14 +412,26 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     in.fail(in.line(), std::to_string(r) + " needs " + std::to_string(nodes) +
                            " field lines, more than the rest of the file can hold", "resolution");
   }
+  // Refused before anything is set aside for it, not by std::bad_alloc halfway through.
+  const bool streamed = !in.source().remainingKnown();
+  if (r > 0) {
+    const std::uint64_t needed = worldMemoryNeed(r, worldUse(), streamed),
+                        available = availableMemory();
+    if (needed > available)
+      in.fail(in.line(), notEnoughMemoryMessage(needed, available), "resolution");
+  }
   w.field.resolution = r;
-  w.field.forces.reserve(in.source().remainingKnown() ? 3 * nodes : std::min(3 * nodes, kUnknownSizeReserve));
+  std::vector<double>& forces = w.field.forces;
+  forces.reserve(streamed ? std::min(3 * nodes, kUnknownSizeReserve) : 3 * nodes);
   for (std::size_t node = 0; node < nodes; ++node) {
     std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
     std::string field = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
                         std::to_string(k) + ")";
     in.record(3, field);
-    for (int axis = 0; axis < 3; ++axis) w.field.forces.push_back(in.number(axis, field));
+    // Grown by doubling, but never beyond the announced size (worldMemoryNeed counts on it).
+    if (forces.capacity() - forces.size() < 3)
+      forces.reserve(std::min(3 * nodes, 2 * forces.capacity() + 3));
+    for (int axis = 0; axis < 3; ++axis) forces.push_back(in.number(axis, field));
   }
 
   readPoints(in, result.state.p(), "position p");
@@ -549,9 +567,15 @@ WorldFile readWorldFile(const std::string& path) {
   }
 }
 
-std::string formatWorld(const World& w, const State& state) {
+void formatWorldInBlocks(const World& w, const State& state,
+                         const std::function<void(std::string_view)>& write) {
   std::string out;
-  out.reserve(64 * (static_cast<std::size_t>(w.field.forces.size()) + 2 * kNumCoords) / 3 + 256);
+  out.reserve(kFormatBlock + 256);
+  auto flushFull = [&] {
+    if (out.size() < kFormatBlock) return;
+    write(out);
+    out.clear();
+  };
   out += integratorName(w.integrator);
   out += '\n';
   appendNumber(out, w.dt);
@@ -562,18 +586,28 @@ std::string formatWorld(const World& w, const State& state) {
   if (w.hasPlane) appendLine(out, {w.plane.a, w.plane.b, w.plane.c, w.plane.d});
   out += std::to_string(w.field.resolution) + '\n';
   const std::vector<double>& f = w.field.forces;
-  for (std::size_t i = 0; i + 2 < f.size(); i += 3) appendLine(out, {f[i], f[i + 1], f[i + 2]});
+  for (std::size_t i = 0; i + 2 < f.size(); i += 3) {
+    appendLine(out, {f[i], f[i + 1], f[i + 2]});
+    flushFull();
+  }
   for (const double* points : {state.p(), state.v()}) {
     for (int q = 0; q < kNumPoints; ++q) {
       Vec3 a = load(points, q);
       appendLine(out, {a.x, a.y, a.z});
+      flushFull();
     }
   }
+  if (!out.empty()) write(out);
+}
+
+std::string formatWorld(const World& w, const State& state) {
+  std::string out;
+  formatWorldInBlocks(w, state, [&](std::string_view block) { out += block; });
   return out;
 }
 
-void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite) {
-  std::string text = formatWorld(world, state);
+void writeWorldFile(const std::string& path, const World& world, const State& state,
+                    bool overwrite) {
   std::string temp = path + ".tmp.XXXXXX";
   int fd = ::mkstemp(temp.data());
   if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
@@ -581,16 +615,19 @@ void writeWorldFile(const std::string& path, const World& world, const State& st
     ::unlink(temp.c_str());
     throw std::runtime_error(path + ": " + what + (error ? std::string(": ") + std::strerror(error) : ""));
   };
-  std::size_t done = 0;
-  while (done < text.size()) {
-    ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) {
-      int error = errno;
-      ::close(fd);
-      fail(error, "cannot write");
-    }
-    done += static_cast<std::size_t>(wrote);
+  // The text goes out a block at a time: a large field's text is never held whole.
+  try {
+    formatWorldInBlocks(world, state, [&](std::string_view block) {
+      for (std::size_t done = 0; done < block.size();) {
+        ssize_t wrote = ::write(fd, block.data() + done, block.size() - done);
+        if (wrote < 0 && errno == EINTR) continue;
+        if (wrote <= 0) throw std::system_error(errno, std::generic_category());
+        done += static_cast<std::size_t>(wrote);
+      }
+    });
+  } catch (const std::system_error& e) {
+    ::close(fd);
+    fail(e.code().value(), "cannot write");
   }
   // mkstemp creates the file 0600; a world file is ordinary user data.
   mode_t mask = ::umask(0);

@@ -6,6 +6,7 @@
 // pointIndex(i,j,k) = i*64 + j*8 + k, in the file's order.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,7 +22,11 @@ constexpr int kNumPoints = kLatticeSize * kLatticeSize * kLatticeSize;  // 512
 constexpr int kNumCoords = 3 * kNumPoints;                          // 1536 doubles per array
 constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);           // 1/7 m between neighbours
 constexpr double kBoxHalfSize = 2.0;                                // bounding box [-2,2]^3
-constexpr int kMaxResolution = 512;  // R^3 nodes * 24 bytes must fit in memory (3.2 GB here)
+// The largest field resolution. What a field of R^3 nodes costs is memory (memory.h; a world that
+// does not fit is refused before anything is allocated): 24 bytes a node held once by createWorld,
+// 80 by a run (the World read, the Model's copy of it and its 32-byte padded nodes). Peak RSS at
+// R = 512 (134M nodes; /usr/bin/time -v): createWorld 3.27 GB, a run with --dump 10.7 GB.
+constexpr int kMaxResolution = 512;
 
 constexpr int pointIndex(int i, int j, int k) {
   return (i * kLatticeSize + j) * kLatticeSize + k;
@@ -126,8 +131,12 @@ WorldFile readWorldFile(const std::string& path);
 // The text of a world file, numbers in shortest round-trip form: parseWorld of it gives back
 // bit-identical values.
 std::string formatWorld(const World& world, const State& state);
-// Writes formatWorld to `path` whole: a temporary file beside it, then a rename, so a reader
-// never sees half a file. Without `overwrite`, an existing `path` is left untouched and the
+// The same text handed to `write` in blocks of about 64 KB, in order: a world with a large field
+// (R = 512: gigabytes of text) is written without its whole text in memory.
+void formatWorldInBlocks(const World& world, const State& state,
+                         const std::function<void(std::string_view)>& write);
+// Writes formatWorld to `path` whole (in blocks): a temporary file beside it, then a rename, so a
+// reader never sees half a file. Without `overwrite`, an existing `path` is left untouched and the
 // write fails (the check and the write are one atomic step). Throws std::runtime_error with a
 // one-line message on failure.
 void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite = true);

@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
+#include <functional>
 
 #include "integrators.h"
+#include "memory.h"
 #include "physics.h"
 #include "test_support.h"
 
@@ -150,6 +153,123 @@ TEST(SpecialFiles, PathsWithSpacesAndPipesWork) {
   r = test::runShell("cat '" + path + "' | " + kHangGuard + " " + test::jelloCommand() + " --headless --steps 2 /dev/stdin");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("/dev/stdin: RK4"), std::string::npos) << r.out;
+  test::removeTree(dir);
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;  // reserves terabytes of address space: no RLIMIT_AS
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+constexpr std::uint64_t kTwoGigabytes = 2'000'000'000;
+
+// A valid start of a world with an R = 512 field, its 134M field lines a sparse gigabyte of
+// zeros: enough bytes for the reader's size check, no disk, and refused at line 7 if read.
+std::string writeHugeWorld(const std::string& dir) {
+  std::string path = dir + "/huge.w";
+  test::writeText(path, "RK4\n0.001 1\n500 0.25 1000 0.25\n0.001953125\n0\n512\n");
+  EXPECT_EQ(::truncate(path.c_str(), 1LL << 30), 0) << std::strerror(errno);
+  return path;
+}
+
+double secondsOf(const std::function<void()>& run) {
+  auto start = std::chrono::steady_clock::now();
+  run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void expectNotEnoughMemory(const test::CommandResult& r, const std::string& starts,
+                           double seconds) {
+  EXPECT_EQ(r.status, 2) << "not a clean refusal (-1: killed by a signal): " << r.err;
+  EXPECT_EQ(r.err.rfind(starts, 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_LT(seconds, 2) << "refused only after work";
+}
+
+TEST(MemoryLimits, AWorldTooLargeForTheAddressSpaceLimitIsRefusedBeforeAllocating) {
+  if (kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer cannot run under RLIMIT_AS";
+  std::string dir = test::makeTempDir();
+  const std::string world = writeHugeWorld(dir);
+  test::CommandResult r;
+  // A run holds 80 bytes a node (134M nodes), and 128 MiB besides: 10.9 GB.
+  double seconds = secondsOf([&] {
+    r = test::runProgram({JELLO_BINARY, "--headless", "--steps", "2", world}, kTwoGigabytes);
+  });
+  expectNotEnoughMemory(
+      r, "jello: " + world + ":6: not enough memory for this world: needs 10.9 GB, 1.", seconds);
+  EXPECT_NE(r.err.find(" GB available (resolution)\n"), std::string::npos) << r.err;
+  // createWorld holds the field once: 24 bytes a node, 3.36 GB; refused before building it.
+  const std::string out = dir + "/out.w";
+  seconds = secondsOf([&] {
+    r = test::runProgram(
+        {JELLO_CREATE_WORLD, "--field-resolution", "512", "--field-swirl", "1", "-o", out},
+        kTwoGigabytes);
+  });
+  expectNotEnoughMemory(r, "createWorld: not enough memory for this world: needs 3.36 GB, 1.",
+                        seconds);
+  // Taken --from a world, the field is refused by the reader, before it is read.
+  seconds = secondsOf([&] {
+    r = test::runProgram({JELLO_CREATE_WORLD, "--from", world, "-o", out}, kTwoGigabytes);
+  });
+  expectNotEnoughMemory(
+      r, "createWorld: " + world + ":6: not enough memory for this world: needs 3.36 GB, 1.",
+      seconds);
+  EXPECT_NE(::access(out.c_str(), F_OK), 0) << "a world was written";
+  test::removeTree(dir);
+}
+
+TEST(MemoryLimits, MaxMemoryStandsInForTheMachinesMemory) {
+  std::string dir = test::makeTempDir();
+  const std::string out = dir + "/out.w";
+  test::CommandResult r;
+  double seconds = secondsOf([&] {
+    r = test::runProgram(
+        {JELLO_CREATE_WORLD, "--max-memory", "1.5", "--field-resolution", "512", "-o", out});
+  });
+  expectNotEnoughMemory(
+      r, "createWorld: not enough memory for this world: needs 3.36 GB, 1.5 GB available\n",
+      seconds);
+  r = test::runProgram(
+      {JELLO_CREATE_WORLD, "--max-memory", "0.5", "--field-resolution", "128", "-o", out});
+  EXPECT_EQ(r.status, 0) << r.err;  // 178 MB
+  EXPECT_EQ(readWorldFile(out).world.field.resolution, 128);
+  // The library's limit, as jello's command line sets it: the reader refuses at the resolution.
+  setMemoryLimit(150'000'000);
+  try {
+    readWorldFile(out);
+    ADD_FAILURE() << "read under a limit it exceeds";
+  } catch (const WorldFileError& e) {
+    EXPECT_EQ(
+        std::string(e.what()),
+        out +
+            ":6: not enough memory for this world: needs 0.302 GB, 0.15 GB available (resolution)");
+  }
+  setMemoryLimit(0);
+  EXPECT_NO_THROW(readWorldFile(out));
+  test::removeTree(dir);
+}
+
+// --dump writes its text in blocks: a run that fits its limit can also dump (the text of an
+// R = 160 field, 25 MB here and 262 MB set aside for it before, no longer comes on top).
+TEST(MemoryLimits, ARunThatFitsItsLimitCanDumpItsWorld) {
+  if (kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer cannot run under RLIMIT_AS";
+  std::string dir = test::makeTempDir();
+  const std::string world = dir + "/steps.w", dump = dir + "/dump.w";
+  test::CommandResult r = test::runProgram({JELLO_CREATE_WORLD, "--field-resolution", "160",
+                                            "--field-expr", "x > 0; 0; 0", "-o", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // The run needs 0.462 GB (80 bytes a node, 4.1M nodes, and 128 MiB); it uses 0.34 GB.
+  r = test::runProgram({JELLO_BINARY, "--headless", "--steps", "1", "--dump", dump, world},
+                       500'000'000);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(test::readText(dump).substr(0, 30), test::readText(world).substr(0, 30));
   test::removeTree(dir);
 }
 

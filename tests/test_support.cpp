@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -91,6 +93,37 @@ CommandResult runShell(const std::string& script) {
   if (raw != -1 && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
   result.out = readText(dir + "/out");
   result.err = readText(dir + "/err");
+  removeTree(dir);
+  return result;
+}
+
+CommandResult runProgram(const std::vector<std::string>& argv, std::uint64_t addressSpaceLimit) {
+  std::string dir = makeTempDir();
+  const std::string out = dir + "/out", err = dir + "/err";
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t child = ::fork();
+  if (child == 0) {
+    // Only async-signal-safe calls between fork and exec.
+    int in = ::open("/dev/null", O_RDONLY),
+        o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600),
+        e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (in < 0 || o < 0 || e < 0 || ::dup2(in, 0) < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+      ::_exit(126);
+    if (addressSpaceLimit > 0) {
+      rlimit limit{addressSpaceLimit, addressSpaceLimit};
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
+    }
+    ::execv(args[0], args.data());
+    ::_exit(127);
+  }
+  CommandResult result;
+  int raw = 0;
+  if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw))
+    result.status = WEXITSTATUS(raw);
+  result.out = readText(out);
+  result.err = readText(err);
   removeTree(dir);
   return result;
 }

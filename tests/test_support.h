@@ -1,6 +1,7 @@
 // test_support.h: shared helpers of the test suite.
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ CommandResult runJello(const std::string& args, const std::string& cwd = "", con
 std::string jelloCommand();
 // Runs a shell script (e.g. a pipeline around jelloCommand()), capturing its output.
 CommandResult runShell(const std::string& script);
+// Runs argv[0] with arguments argv[1..] directly (no shell), stdin from /dev/null, under an
+// address-space limit (RLIMIT_AS, bytes) when one is given. status is -1 when it was killed by a
+// signal (e.g. SIGABRT from an uncaught std::bad_alloc).
+CommandResult runProgram(const std::vector<std::string>& argv, std::uint64_t addressSpaceLimit = 0);
 
 // Removes a directory tree made by makeTempDir.
 void removeTree(const std::string& dir);

@@ -268,6 +268,25 @@ TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
   }
 }
 
+TEST(WorldWriter, WritesInBlocksOfAtMost64KilobytesTheSameBytesAsOneString) {
+  const WorldFile f = readWorldFile(dataPath("gravity.w"));
+  std::string joined;
+  std::size_t blocks = 0, largest = 0;
+  formatWorldInBlocks(f.world, f.state, [&](std::string_view block) {
+    ++blocks;
+    largest = std::max(largest, block.size());
+    joined += block;
+  });
+  const std::string text = formatWorld(f.world, f.state);
+  EXPECT_EQ(joined, text);
+  EXPECT_GE(blocks, text.size() / (65536 + 100));  // 5 for its 310 KB
+  EXPECT_LE(largest, 65536u + 100) << "a block is the whole text, not a part of it";
+  std::string dir = test::makeTempDir();
+  writeWorldFile(dir + "/out.w", f.world, f.state);
+  EXPECT_EQ(test::readText(dir + "/out.w"), text);
+  test::removeTree(dir);
+}
+
 class MalformedWorld : public ::testing::TestWithParam<test::MalformedCase> {};
 
 TEST_P(MalformedWorld, IsRejectedNamingFileLineAndField) {
