@@ -308,6 +308,33 @@ TEST(CreateWorld, RefusesWorldsTheReaderWouldReject) {
   test::removeTree(dir);
 }
 
+// Checked before any work: here a field expression that would be refused too, but later.
+TEST(CreateWorld, AnOutputThatCannotBeWrittenIsRefusedFirst) {
+  std::string dir = test::makeTempDir();
+  test::writeText(dir + "/mine.w", "my own work\n");
+  const std::string longName =
+      dir + "/" + std::string(252, 'n') + ".w";  // 254 with its ".w": allowed
+  const std::pair<std::string, std::string> cases[] = {
+      {dir + "/" + std::string(254, 'n') + ".w",
+       "the name is 256 bytes long, more than the 255 its folder's file system allows"},
+      {dir + "/no/such/folder/w.w",
+       "cannot write into " + dir + "/no/such/folder: No such file or directory"},
+      {dir + "/mine.w/w.w", "cannot write into " + dir + "/mine.w: it is not a folder"},
+      {dir, "is a directory"},
+      {dir + "/mine.w", "already exists; add --force to replace it"},
+  };
+  for (const auto& [path, why] : cases) {
+    Result r = createWorld("--field-expr 'x +* y; 0; 0' -o '" + path + "'");
+    EXPECT_EQ(r.status, 2) << path;
+    EXPECT_EQ(r.err, "createWorld: " + path + ": " + why + "\n");
+  }
+  Result r = createWorld("--field-expr 'x +* y; 0; 0' -o '" + longName + "'");
+  EXPECT_NE(r.err.find("--field-expr: fx:"), std::string::npos)
+      << "a 254-byte name was refused: " << r.err;
+  EXPECT_EQ(test::readText(dir + "/mine.w"), "my own work\n");
+  test::removeTree(dir);
+}
+
 // No line number of a text never written, no name of the file not written: the option to blame.
 TEST(CreateWorld, AnInvalidWorldIsExplainedByTheOptionsThatMadeIt) {
   std::string dir = test::makeTempDir();
