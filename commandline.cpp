@@ -69,6 +69,11 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
                                    "the force kernel of a headless run: specialised (default: only what the world "
                                    "needs) or general (every term at every point, for checking and timing)")
                         ->check(CLI::IsMember({"specialised", "general"}));
+  app.add_option("--max-memory", c->maxMemoryGB,
+                 "the memory this run may use, GB (default: the machine's, or its cgroup's limit); a world "
+                 "needing more is refused before it is read")
+      ->type_name("GB")
+      ->transform(kPositive);
   app.add_option("--rtol", c->run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->transform(kPositive);
   app.add_option("--atol", c->run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->transform(kPositive);
 }

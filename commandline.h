@@ -25,6 +25,7 @@ struct JelloCommand {
   bool json = false;     // Mode::Check
   std::string mapDir;    // Mode::Map
   double mapTime = kDefaultMapTime;
+  double maxMemoryGB = 0;  // --max-memory: 0 for the machine's own figures
 };
 
 // The exit status parseJelloCommandLine returns when the program is to go on.

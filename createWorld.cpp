@@ -3,17 +3,27 @@
 //   createWorld [options] -o FILE     builds a world file
 //   createWorld --describe WORLD      says what a world is
 
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.h"
 #include "describe.h"
 #include "output.h"
+#include "memory.h"
 #include "physics.h"
 #include "stability.h"
 #include "worldbuilder.h"
@@ -39,7 +49,11 @@ int fail(const std::string& message) {
 void warn(const std::string& message) { jello::printError("warning: " + message); }
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
-void warnAbout(const jello::World& world, const jello::State& state) {
+void warnAbout(jello::World& world, const jello::State& state) {
+  // Nothing here looks at the field: it is set aside, so that the Model below copies none of it
+  // (for R = 512, 7.5 GB).
+  jello::ForceField field = std::move(world.field);
+  world.field = {};
   double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
   if (world.dt > limit) {
     char text[200];
@@ -55,6 +69,76 @@ void warnAbout(const jello::World& world, const jello::State& state) {
     warn("the cube starts across the inclined plane (" + std::to_string(across) +
          " points on the far side of its centroid's side): the plane will push them back");
   }
+  world.field = std::move(field);
+}
+
+// Why `path` cannot take createWorld's output, or "" when it can: checked before any work (a field
+// to build, a world to read), so that the refusal comes first.
+std::string whyNotWritable(const std::string& path, bool force) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode)) return "is a directory";
+    if (!force) return "already exists; add --force to replace it";
+  }
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "."
+                          : slash == 0               ? "/"
+                                                     : path.substr(0, slash);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (name.empty()) return "names a folder, not a file";
+  if (::stat(dir.c_str(), &info) != 0)
+    return "cannot write into " + dir + ": " + std::strerror(errno);
+  if (!S_ISDIR(info.st_mode)) return "cannot write into " + dir + ": it is not a folder";
+  if (::access(dir.c_str(), W_OK) != 0)
+    return "cannot write into " + dir + ": " + std::strerror(errno);
+  long nameMax = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  if (nameMax <= 0) nameMax = NAME_MAX;
+  if (name.size() > static_cast<std::size_t>(nameMax)) {
+    return "the name is " + std::to_string(name.size()) + " bytes long, more than the " +
+           std::to_string(nameMax) + " its folder's file system allows";
+  }
+  if (path.size() >= PATH_MAX)
+    return "the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes";
+  return {};
+}
+
+// The options given that shape `part` of a world, in the order of --help: what a message about
+// that part names. A --preset or a --from world is valid by itself, so neither is named.
+std::vector<std::string> optionsShaping(jello::WorldProblem::Part part, const CLI::App& app) {
+  using Part = jello::WorldProblem::Part;
+  std::vector<const char*> names;
+  switch (part) {
+    case Part::Parameters:
+      names = {"--dt",          "--n",           "--k-elastic", "--d-elastic",
+               "--k-collision", "--d-collision", "--mass"};
+      break;
+    case Part::Plane:
+      names = {"--plane"};
+      break;
+    case Part::Field:
+      names = {"--field-uniform", "--field-swirl", "--field-radial", "--field-expr"};
+      break;
+    case Part::Position:
+      names = {"--cube-size", "--center", "--rotate", "--skew-corner"};
+      break;
+    case Part::Velocity:
+      names = {"--rotate", "--velocity", "--spin"};
+      break;
+  }
+  std::vector<std::string> given;
+  for (const char* name : names)
+    if (app.get_option(name)->count() > 0) given.push_back(name);
+  return given;
+}
+
+// One line on what makes the world invalid, in the terms of the options that made it: never a
+// line number of a text that is not written.
+std::string describeProblem(const jello::WorldProblem& problem, const CLI::App& app) {
+  std::vector<std::string> options = optionsShaping(problem.part, app);
+  if (options.size() == 1) return options[0] + ": " + problem.what;
+  std::string from;
+  for (const std::string& option : options) from += (from.empty() ? " (from " : ", ") + option;
+  return "the world would be invalid: " + problem.what + (from.empty() ? "" : from + ")");
 }
 
 }  // namespace
@@ -72,6 +156,13 @@ static int createWorld(int argc, char** argv) {
   app.add_option("-o,--output", output, "the world file to write")->type_name("FILE");
   auto* describeOption = app.add_option("--describe", describe, "print what WORLD is, and exit")->type_name("WORLD");
   app.add_flag("--force", force, "replace FILE when it exists");
+  double maxMemory = 0;
+  auto* maxMemoryOption =
+      app.add_option(
+             "--max-memory", maxMemory,
+             "memory the world may take, GB (default: what the machine and its limits allow)")
+          ->type_name("GB")
+          ->check(kPositive);
   auto* presetOption = app.add_option("--preset", preset, "start from a course world")->type_name("NAME")
                            ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
   auto* fromOption = app.add_option("--from", from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
@@ -154,22 +245,30 @@ static int createWorld(int argc, char** argv) {
   int status = 0;
   if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
 
+  if (*maxMemoryOption)
+    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(maxMemory * 1e9, 1e18)));
   try {
     if (*describeOption) {
+      jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
       if (!output.empty()) return fail("--describe reads a world; it does not go with -o");
       jello::WorldFile file = jello::readWorldFile(describe);
       std::printf("%s\n%s", describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
       return kExitOk;
     }
     if (output.empty()) return fail("say where to write the world: -o FILE (see createWorld --help)");
+    if (std::string why = whyNotWritable(output, force); !why.empty())
+      return fail(output + ": " + why);
 
+    jello::setWorldUse(jello::WorldUse::Create);
     jello::Recipe recipe = jello::defaultRecipe();
     if (*presetOption) recipe = jello::coursePreset(preset);
     if (*fromOption) {
       jello::WorldFile base = jello::readWorldFile(from);
-      recipe.world = base.world;
+      // The field is moved, never copied: createWorld holds one field at a time.
       recipe.field.source = jello::FieldRecipe::Source::Given;
-      recipe.field.given = base.world.field;
+      recipe.field.given = std::move(base.world.field);
+      base.world.field = {};
+      recipe.world = std::move(base.world);
       recipe.state.from = base.state;
     }
 
@@ -195,7 +294,10 @@ static int createWorld(int argc, char** argv) {
     jello::FieldRecipe& field = recipe.field;
     bool newSource = false;
     for (CLI::Option* option : fieldSources) newSource = newSource || option->count() > 0;
-    if (newSource && field.source == Source::Given) field.resolution = 30;  // a --from world's field is replaced
+    if (newSource && field.source == Source::Given) {
+      field.resolution = 30;  // a --from world's field is replaced,
+      field.given = {};       // and let go before another is read or built
+    }
     if (*resolutionOption) {
       if (field.source == Source::Given && !newSource) {
         return fail("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
@@ -233,18 +335,24 @@ static int createWorld(int argc, char** argv) {
     if (*skewOption) state.skewCorner = toVec3(skew);
     state.insideOut = insideOut;
 
-    w.field = jello::buildField(field);
+    if (field.source == Source::Given) {
+      w.field = std::move(field.given);
+    } else {
+      // Refused before the field is built, not by std::bad_alloc while building it.
+      if (field.source != Source::None && field.resolution > 0)
+        jello::requireMemory(jello::worldMemoryNeed(field.resolution, jello::WorldUse::Create));
+      w.field = jello::buildField(field);
+    }
     jello::State initial = jello::buildState(state);
 
-    // What is written must read back: the reader is the judge of a world.
-    jello::parseWorld(jello::formatWorld(w, initial), output);
+    // What is written must read back: the reader's rules, applied to the values themselves.
+    if (auto problem = jello::findWorldProblem(w, initial))
+      return fail(describeProblem(*problem, app));
     warnAbout(w, initial);
     try {
       jello::writeWorldFile(output, w, initial, force);
     } catch (const std::runtime_error& e) {
-      std::string message = e.what();
-      if (message.find("already exists") != std::string::npos) message += "; add --force to replace it";
-      return fail(message);
+      return fail(e.what());  // e.g. the file appeared since whyNotWritable looked
     }
     std::string fieldSummary = "no field";
     if (w.field.resolution > 0) {
@@ -258,6 +366,11 @@ static int createWorld(int argc, char** argv) {
     return fail(e.what());
   } catch (const jello::RecipeError& e) {
     return fail(e.what());
+  } catch (const jello::NotEnoughMemory& e) {
+    return fail(e.what());
+  } catch (const std::bad_alloc&) {
+    // The need was computed, but something else holds memory meanwhile.
+    return fail("not enough memory for this world (an allocation failed)");
   }
 }
 

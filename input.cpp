@@ -16,9 +16,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <system_error>
 
+#include "memory.h"
 #include "world.h"
 
 #include "output.h"
@@ -34,9 +36,24 @@ constexpr std::size_t kMaxIntegratorNameLength = 16;
 // the field it announces, so it is refused before any memory is set aside for it.
 constexpr std::size_t kShortestFieldLine = 6;
 constexpr int kMaxTokensKept = 8;
-constexpr int kFifoWaitSeconds = 5;  // how long a FIFO may keep the reader waiting for its writer
+// How long an input that is not a regular file (a FIFO, a pipe, a terminal) may keep the reader
+// waiting for a writer's first bytes, and then for each next block: a writer that has stopped
+// sending is reported, not waited for forever. A slow writer that keeps sending is read.
+constexpr int kInputWaitSeconds = 5;
+
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// A CR with more text after it on the same line: the line ends are CR alone, not CRLF (whose
+// CR is the last character before the LF, and whitespace).
+bool hasBareCarriageReturn(std::string_view line) {
+  std::size_t cr = line.find('\r');
+  if (cr == std::string_view::npos) return false;
+  for (std::size_t i = cr + 1; i < line.size(); ++i)
+    if (!isSpace(line[i])) return true;
+  return false;
+}
 
 // Where the reader's lines come from: a text in memory, or a file read a block at a time, so
 // that reading stops at the first line that cannot belong to a world (a binary file, a device
@@ -48,6 +65,8 @@ class LineSource {
   LineSource(int fd, long long size) : fd_(fd), sizeKnown_(size >= 0), remaining_(size >= 0 ? size : 0) {}
 
   enum class Status { Line, End, TooLong };
+  // Thrown by next() when an input of unknown size sent nothing for kInputWaitSeconds.
+  struct Stalled {};
 
   // The next line without its '\n', valid until the next call (for TooLong, its start).
   Status next(std::string_view* line) {
@@ -96,6 +115,7 @@ class LineSource {
       begin_ = 0;
       searched = end_;
       if (buffer_.size() - end_ < kBlock) buffer_.resize(end_ + kBlock);
+      if (!sizeKnown_) waitForData();
       ssize_t got;
       do got = ::read(fd_, buffer_.data() + end_, kBlock);
       while (got < 0 && errno == EINTR);
@@ -114,6 +134,15 @@ class LineSource {
  private:
   static constexpr std::size_t kBlock = 1 << 16;
   void consumed(std::size_t bytes) { remaining_ -= std::min(remaining_, bytes); }
+
+  // Waits until read() will not block (data, end of input or an error to report).
+  void waitForData() {
+    pollfd waiting{fd_, POLLIN, 0};
+    int ready;
+    do ready = ::poll(&waiting, 1, kInputWaitSeconds * 1000);
+    while (ready < 0 && errno == EINTR);
+    if (ready == 0) throw Stalled{};
+  }
 
   std::string_view memory_;
   std::size_t pos_ = 0;
@@ -138,33 +167,56 @@ class Parser {
   bool nextLine(const std::string& field) {
     std::string_view line;
     for (;;) {
-      LineSource::Status status = source_.next(&line);
+      LineSource::Status status = LineSource::Status::End;
+      try {
+        status = source_.next(&line);
+      } catch (const LineSource::Stalled&) {
+        fail(line_ + 1,
+             "nothing arrived for " + std::to_string(kInputWaitSeconds) +
+                 " s: the writer stopped sending before the world's end",
+             field);
+      }
       ++line_;
       count_ = 0;
       if (status == LineSource::Status::End) return false;
-      const bool tooLong = status == LineSource::Status::TooLong;
-      std::size_t i = 0;
-      while (i < line.size()) {
-        while (i < line.size() && isSpace(line[i])) ++i;
-        if (i == line.size()) break;
-        std::size_t start = i;
-        while (i < line.size() && !isSpace(line[i])) {
-          const unsigned char c = static_cast<unsigned char>(line[i]);
-          if (c < 0x20 || c >= 0x7f) {
-            char text[96];
-            std::snprintf(text, sizeof text, "byte 0x%02x in column %zu: not a text file, not a world file", c, i + 1);
-            fail(line_, text, field);
-          }
-          ++i;
-        }
-        if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
-        ++count_;
+      // Windows editors start a UTF-8 file with a byte order mark; it is no part of the text.
+      if (line_ == 1 && line.substr(0, kUtf8Bom.size()) == kUtf8Bom)
+        line.remove_prefix(kUtf8Bom.size());
+      split(line, field);
+      // A CR-only file (classic Mac OS) is one long line to a reader that splits at LF.
+      if (hasBareCarriageReturn(line)) {
+        fail(line_,
+             "lines end with CR only (classic Mac OS line ends): convert the file to LF or CRLF "
+             "line ends",
+             field);
       }
-      if (tooLong) {
+      if (status == LineSource::Status::TooLong) {
         fail(line_, "line is longer than " + std::to_string(LineSource::kMaxLineLength) +
                         " characters: not a world file", field);
       }
       if (count_ > 0) return true;
+    }
+  }
+
+  // Splits `line` into tokens at whitespace; fails on a byte that no text holds.
+  void split(std::string_view line, const std::string& field) {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && isSpace(line[i])) ++i;
+      if (i == line.size()) break;
+      std::size_t start = i;
+      while (i < line.size() && !isSpace(line[i])) {
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        if (c < 0x20 || c >= 0x7f) {
+          char text[96];
+          std::snprintf(text, sizeof text,
+                        "byte 0x%02x in column %zu: not a text file, not a world file", c, i + 1);
+          fail(line_, text, field);
+        }
+        ++i;
+      }
+      if (count_ < kMaxTokensKept) tokens_[count_] = line.substr(start, i - start);
+      ++count_;
     }
   }
 
@@ -321,6 +373,10 @@ bool parseIntegratorName(std::string_view name, Integrator* out) {
 
 namespace {
 
+// The size of the blocks formatWorldInBlocks hands out, bytes: large enough that writing them
+// costs few system calls, small beside any field worth streaming.
+constexpr std::size_t kFormatBlock = 1 << 16;
+
 // Doubles set aside at first for a field whose input has no known size (a pipe): the vector
 // then grows with what actually arrives, not with what the resolution line claims.
 constexpr std::size_t kUnknownSizeReserve = 3 << 16;
@@ -382,14 +438,26 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     in.fail(in.line(), std::to_string(r) + " needs " + std::to_string(nodes) +
                            " field lines, more than the rest of the file can hold", "resolution");
   }
+  // Refused before anything is set aside for it, not by std::bad_alloc halfway through.
+  const bool streamed = !in.source().remainingKnown();
+  if (r > 0) {
+    const std::uint64_t needed = worldMemoryNeed(r, worldUse(), streamed),
+                        available = availableMemory();
+    if (needed > available)
+      in.fail(in.line(), notEnoughMemoryMessage(needed, available), "resolution");
+  }
   w.field.resolution = r;
-  w.field.forces.reserve(in.source().remainingKnown() ? 3 * nodes : std::min(3 * nodes, kUnknownSizeReserve));
+  std::vector<double>& forces = w.field.forces;
+  forces.reserve(streamed ? std::min(3 * nodes, kUnknownSizeReserve) : 3 * nodes);
   for (std::size_t node = 0; node < nodes; ++node) {
     std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
     std::string field = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
                         std::to_string(k) + ")";
     in.record(3, field);
-    for (int axis = 0; axis < 3; ++axis) w.field.forces.push_back(in.number(axis, field));
+    // Grown by doubling, but never beyond the announced size (worldMemoryNeed counts on it).
+    if (forces.capacity() - forces.size() < 3)
+      forces.reserve(std::min(3 * nodes, 2 * forces.capacity() + 3));
+    for (int axis = 0; axis < 3; ++axis) forces.push_back(in.number(axis, field));
   }
 
   readPoints(in, result.state.p(), "position p");
@@ -404,6 +472,89 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
 
 }  // namespace
 
+namespace {
+
+std::string triple(const double* v, const char* unit) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%g, %g, %g) %s", v[0], v[1], v[2], unit);
+  return text;
+}
+
+bool finite3(const double* v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+// The parameters' rules, as parseLines applies them to a file's tokens.
+std::optional<WorldProblem> findParameterProblem(const World& w) {
+  using Part = WorldProblem::Part;
+  auto problem = [](Part part, const std::string& what) { return WorldProblem{part, 0, what}; };
+  auto number = [](double value) {
+    std::string text;
+    appendNumber(text, value);
+    return text;
+  };
+  if (!(std::isfinite(w.dt) && w.dt > 0))
+    return problem(Part::Parameters, "dt must be > 0 and finite, got " + number(w.dt));
+  if (w.n < 1) return problem(Part::Parameters, "n must be >= 1, got " + std::to_string(w.n));
+  const std::pair<const char*, double> nonNegative[] = {{"kElastic", w.kElastic},
+                                                        {"dElastic", w.dElastic},
+                                                        {"kCollision", w.kCollision},
+                                                        {"dCollision", w.dCollision}};
+  for (auto [name, value] : nonNegative) {
+    if (!(std::isfinite(value) && value >= 0))
+      return problem(Part::Parameters,
+                     std::string(name) + " must be >= 0 and finite, got " + number(value));
+  }
+  if (!(std::isfinite(w.mass) && w.mass > 0))
+    return problem(Part::Parameters, "mass must be > 0 and finite, got " + number(w.mass));
+  if (w.hasPlane) {
+    const double plane[4] = {w.plane.a, w.plane.b, w.plane.c, w.plane.d};
+    if (!finite3(plane) || !std::isfinite(plane[3]))
+      return problem(Part::Plane, "the plane's coefficients must be finite");
+    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+      return problem(Part::Plane, "the plane's normal (a,b,c) is zero");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<WorldProblem> findWorldProblem(const World& w, const State& state) {
+  using Part = WorldProblem::Part;
+  if (auto problem = findParameterProblem(w)) return problem;
+  const int r = w.field.resolution;
+  const std::size_t nodes = r > 0 ? static_cast<std::size_t>(r) * r * r : 0;
+  if (r < 0 || r > kMaxResolution || w.field.forces.size() != 3 * nodes) {
+    return WorldProblem{Part::Field, 0,
+                        "the field's resolution " + std::to_string(r) + " does not match its " +
+                            std::to_string(w.field.forces.size()) + " values"};
+  }
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const double* force = &w.field.forces[3 * n];
+    if (finite3(force)) continue;
+    const std::size_t i = n / (static_cast<std::size_t>(r) * r), j = (n / r) % r, k = n % r;
+    return WorldProblem{Part::Field, n,
+                        "the force at field node (" + std::to_string(i) + "," + std::to_string(j) +
+                            "," + std::to_string(k) + ") is " + triple(force, "N") +
+                            ", not finite"};
+  }
+  const std::pair<const double*, Part> arrays[] = {{state.p(), Part::Position},
+                                                   {state.v(), Part::Velocity}};
+  for (auto [points, part] : arrays) {
+    for (int q = 0; q < kNumPoints; ++q) {
+      const Vec3 a = load(points, q);
+      const double value[3] = {a.x, a.y, a.z};
+      if (finite3(value)) continue;
+      const bool position = part == Part::Position;
+      return WorldProblem{part, static_cast<std::size_t>(q),
+                          std::string(position ? "the position" : "the velocity") + " of point " +
+                              latticeLabel(q) + " is " + triple(value, position ? "m" : "m/s") +
+                              ", not finite"};
+    }
+  }
+  return std::nullopt;
+}
+
 WorldFile parseWorld(std::string_view text, const std::string& name) {
   LineSource source(text);
   return parseLines(source, name);
@@ -411,7 +562,7 @@ WorldFile parseWorld(std::string_view text, const std::string& name) {
 
 WorldFile readWorldFile(const std::string& path) {
   // Non-blocking open: a FIFO nobody writes to must not hang the reader; reads themselves
-  // block as usual.
+  // block as usual, after a wait of at most kInputWaitSeconds for data (LineSource).
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
   struct Closer {
@@ -425,10 +576,11 @@ WorldFile readWorldFile(const std::string& path) {
     // Wait for a writer's first bytes (or its hanging up) as cat would, but not forever.
     pollfd waiting{fd, POLLIN, 0};
     int ready;
-    do ready = ::poll(&waiting, 1, kFifoWaitSeconds * 1000);
+    do ready = ::poll(&waiting, 1, kInputWaitSeconds * 1000);
     while (ready < 0 && errno == EINTR);
     if (ready == 0) {
-      throw WorldFileError(path + ": a FIFO nothing was written to within " + std::to_string(kFifoWaitSeconds) + " s");
+      throw WorldFileError(path + ": a FIFO nothing was written to within " +
+                           std::to_string(kInputWaitSeconds) + " s");
     }
   }
   int flags = ::fcntl(fd, F_GETFL);
@@ -441,9 +593,15 @@ WorldFile readWorldFile(const std::string& path) {
   }
 }
 
-std::string formatWorld(const World& w, const State& state) {
+void formatWorldInBlocks(const World& w, const State& state,
+                         const std::function<void(std::string_view)>& write) {
   std::string out;
-  out.reserve(64 * (static_cast<std::size_t>(w.field.forces.size()) + 2 * kNumCoords) / 3 + 256);
+  out.reserve(kFormatBlock + 256);
+  auto flushFull = [&] {
+    if (out.size() < kFormatBlock) return;
+    write(out);
+    out.clear();
+  };
   out += integratorName(w.integrator);
   out += '\n';
   appendNumber(out, w.dt);
@@ -454,18 +612,37 @@ std::string formatWorld(const World& w, const State& state) {
   if (w.hasPlane) appendLine(out, {w.plane.a, w.plane.b, w.plane.c, w.plane.d});
   out += std::to_string(w.field.resolution) + '\n';
   const std::vector<double>& f = w.field.forces;
-  for (std::size_t i = 0; i + 2 < f.size(); i += 3) appendLine(out, {f[i], f[i + 1], f[i + 2]});
+  for (std::size_t i = 0; i + 2 < f.size(); i += 3) {
+    appendLine(out, {f[i], f[i + 1], f[i + 2]});
+    flushFull();
+  }
   for (const double* points : {state.p(), state.v()}) {
     for (int q = 0; q < kNumPoints; ++q) {
       Vec3 a = load(points, q);
       appendLine(out, {a.x, a.y, a.z});
+      flushFull();
     }
   }
+  if (!out.empty()) write(out);
+}
+
+std::string formatWorld(const World& w, const State& state) {
+  std::string out;
+  formatWorldInBlocks(w, state, [&](std::string_view block) { out += block; });
   return out;
 }
 
 void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite) {
-  writeFileWhole(path, formatWorld(world, state), overwrite ? Existing::Replace : Existing::Refuse);
+  // The text goes out a block at a time: a large field's text is never held whole.
+  writeFileWhole(
+      path,
+      [&](std::FILE* file) {
+        formatWorldInBlocks(world, state, [file](std::string_view block) {
+          if (std::fwrite(block.data(), 1, block.size(), file) != block.size())
+            throw std::runtime_error(std::string("cannot write: ") + std::strerror(errno));
+        });
+      },
+      overwrite ? Existing::Replace : Existing::Refuse);
 }
 
 }  // namespace jello

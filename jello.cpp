@@ -2,7 +2,9 @@
 // and choose the exit status. Only this file and createWorld.cpp print a verdict and pick a
 // status for the whole program.
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "commandline.h"
 #include "graphics.h"
 #include "headless.h"
+#include "memory.h"
 #include "output.h"
 #include "report.h"
 #include "stability.h"
@@ -78,6 +81,12 @@ int runCommandLine(int argc, char** argv) {
   jello::JelloCommand command;
   const int status = jello::parseJelloCommandLine(argc, argv, &command);
   if (status != jello::kGoOn) return status;
+  constexpr double kBytesPerGB = 1e9, kMostBytes = 1e18;
+  if (command.maxMemoryGB > 0)
+    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(command.maxMemoryGB * kBytesPerGB, kMostBytes)));
+  // --bench and --map hold two models of the world at once.
+  if (command.mode == jello::JelloCommand::Mode::Bench || command.mode == jello::JelloCommand::Mode::Map)
+    jello::setWorldUse(jello::WorldUse::Bench);
   switch (command.mode) {
     case jello::JelloCommand::Mode::Bench: return jello::runBench(command.run);
     case jello::JelloCommand::Mode::Check:

@@ -6,6 +6,8 @@
 // pointIndex(i,j,k) = i*64 + j*8 + k, in the file's order.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,7 +22,11 @@ constexpr int kNumPoints = kLatticeSize * kLatticeSize * kLatticeSize;  // 512
 constexpr int kNumCoords = 3 * kNumPoints;                          // 1536 doubles per array
 constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);           // 1/7 m between neighbours
 constexpr double kBoxHalfSize = 2.0;                                // bounding box [-2,2]^3
-constexpr int kMaxResolution = 512;  // R^3 nodes * 24 bytes must fit in memory (3.2 GB here)
+// The largest field resolution. What a field of R^3 nodes costs is memory (memory.h; a world that
+// does not fit is refused before anything is allocated): 24 bytes a node held once by createWorld,
+// 80 by a run (the World read, the Model's copy of it and its 32-byte padded nodes). Peak RSS at
+// R = 512 (134M nodes; /usr/bin/time -v): createWorld 3.27 GB, a run with --dump 10.7 GB.
+constexpr int kMaxResolution = 512;
 
 constexpr int pointIndex(int i, int j, int k) {
   return (i * kLatticeSize + j) * kLatticeSize + k;
@@ -111,6 +117,19 @@ struct WorldFile {
   State state;
 };
 
+// Why a world in memory is one the reader would refuse (SPEC section 1's rules on its values),
+// by the part of the world at fault, so that a program that makes worlds can say which of its
+// inputs is to blame.
+struct WorldProblem {
+  enum class Part { Parameters, Plane, Field, Position, Velocity };
+  Part part = Part::Parameters;
+  std::size_t index = 0;  // the field node (Field) or the point (Position, Velocity)
+  std::string
+      what;  // one line, e.g. "the velocity of point [0][0][0] is (inf, 0, 0) m/s, not finite"
+};
+// The first problem of `world` and `state`, or none when formatWorld of them reads back.
+std::optional<WorldProblem> findWorldProblem(const World& world, const State& state);
+
 // Parses the text of a world file; `name` is used in error messages. Throws WorldFileError.
 WorldFile parseWorld(std::string_view text, const std::string& name);
 // Reads and parses a world file. Throws WorldFileError (also for unreadable files).
@@ -119,9 +138,13 @@ WorldFile readWorldFile(const std::string& path);
 // The text of a world file, numbers in shortest round-trip form: parseWorld of it gives back
 // bit-identical values.
 std::string formatWorld(const World& world, const State& state);
-// Writes formatWorld to `path` under the rules of output.h: whole, never over anything that is
-// not a regular file; over an existing regular file only with `overwrite` (without it the
-// check and the write are one atomic step). Throws OutputError (a std::runtime_error) with a
+// The same text handed to `write` in blocks of about 64 KB, in order: a world with a large field
+// (R = 512: gigabytes of text) is written without its whole text in memory.
+void formatWorldInBlocks(const World& world, const State& state,
+                         const std::function<void(std::string_view)>& write);
+// Writes the world to `path` in blocks under the rules of output.h: whole, never over anything
+// that is not a regular file; over an existing regular file only with `overwrite` (without it
+// the check and the write are one atomic step). Throws OutputError (a std::runtime_error) with a
 // one-line message on failure.
 void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite = true);
 

@@ -80,6 +80,10 @@ void checkWorldText(const std::uint8_t* data, std::size_t size) {
   }
   if (fromMemory.accepted) {
     if (!sameWorld(fromMemory.world, fromFile.world)) failed("memory and file disagree", "different worlds");
+    // createWorld's judge of a world in memory must pass every world the reader accepts.
+    if (auto problem = findWorldProblem(fromMemory.world.world, fromMemory.world.state)) {
+      failed("an accepted world has a problem", problem->what);
+    }
     const std::string written = formatWorld(fromMemory.world.world, fromMemory.world.state);
     Outcome again = outcomeOf([&] { return parseWorld(written, "round trip"); });
     if (!again.accepted) failed("a written world is refused", again.error);

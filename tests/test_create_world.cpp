@@ -2,6 +2,7 @@
 // the showcase worlds of world/README.md.
 #include <gtest/gtest.h>
 #include <muParser.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -304,6 +305,57 @@ TEST(CreateWorld, RefusesWorldsTheReaderWouldReject) {
   }
   EXPECT_EQ(test::readText(dir + "/bad.w"), "");
   EXPECT_EQ(createWorld("--preset rotate").status, 2) << "no -o";
+  test::removeTree(dir);
+}
+
+// Checked before any work: here a field expression that would be refused too, but later.
+TEST(CreateWorld, AnOutputThatCannotBeWrittenIsRefusedFirst) {
+  std::string dir = test::makeTempDir();
+  test::writeText(dir + "/mine.w", "my own work\n");
+  const std::string longName =
+      dir + "/" + std::string(252, 'n') + ".w";  // 254 with its ".w": allowed
+  const std::pair<std::string, std::string> cases[] = {
+      {dir + "/" + std::string(254, 'n') + ".w",
+       "the name is 256 bytes long, more than the 255 its folder's file system allows"},
+      {dir + "/no/such/folder/w.w",
+       "cannot write into " + dir + "/no/such/folder: No such file or directory"},
+      {dir + "/mine.w/w.w", "cannot write into " + dir + "/mine.w: it is not a folder"},
+      {dir, "is a directory"},
+      {dir + "/mine.w", "already exists; add --force to replace it"},
+  };
+  for (const auto& [path, why] : cases) {
+    Result r = createWorld("--field-expr 'x +* y; 0; 0' -o '" + path + "'");
+    EXPECT_EQ(r.status, 2) << path;
+    EXPECT_EQ(r.err, "createWorld: " + path + ": " + why + "\n");
+  }
+  Result r = createWorld("--field-expr 'x +* y; 0; 0' -o '" + longName + "'");
+  EXPECT_NE(r.err.find("--field-expr: fx:"), std::string::npos)
+      << "a 254-byte name was refused: " << r.err;
+  EXPECT_EQ(test::readText(dir + "/mine.w"), "my own work\n");
+  test::removeTree(dir);
+}
+
+// No line number of a text never written, no name of the file not written: the option to blame.
+TEST(CreateWorld, AnInvalidWorldIsExplainedByTheOptionsThatMadeIt) {
+  std::string dir = test::makeTempDir();
+  const std::string out = " -o '" + dir + "/out.w'";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--field-resolution 3 --field-swirl 1e308",
+       "createWorld: --field-swirl: the force at field node (0,0,0) is (inf, -inf, 0) N, not "
+       "finite\n"},
+      {"--cube-size 1e10 --spin 0 0 1e308",
+       "createWorld: --spin: the velocity of point [0][0][0] is (inf, -inf, 0) m/s, not finite\n"},
+      {"--cube-size 1e308 --skew-corner 1e308 0 0",
+       "createWorld: the world would be invalid: the position of point [7][7][7] is (inf, 1e+308, "
+       "1e+308) m, not "
+       "finite (from --cube-size, --skew-corner)\n"},
+  };
+  for (const auto& [options, message] : cases) {
+    Result r = createWorld(options + out);
+    EXPECT_EQ(r.status, 2) << options;
+    EXPECT_EQ(r.err, message) << options;
+  }
+  EXPECT_NE(::access((dir + "/out.w").c_str(), F_OK), 0) << "an invalid world was written";
   test::removeTree(dir);
 }
 

@@ -56,7 +56,7 @@ TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
     std::string dir = test::makeTempDir();
     test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
     test::CommandResult r =
-        test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, dir);
+        test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, {dir});
     EXPECT_EQ(r.status, 0) << r.err;
     std::vector<std::string> expected = {name, "rep"};
     std::sort(expected.begin(), expected.end());
@@ -188,7 +188,7 @@ void smallFiles() {
 TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs(
-      {"--headless", "--steps", "1", "--dump", dir + "/out.w", test::dataPath("still.w")}, "", smallFiles);
+      {"--headless", "--steps", "1", "--dump", dir + "/out.w", test::dataPath("still.w")}, {"", 0, smallFiles});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
@@ -201,7 +201,7 @@ TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) 
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002", "--integrators", "EULER",
                                               test::dataPath("rotate.w")},
-                                             "", smallFiles);
+                                             {"", 0, smallFiles});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("report.png was not drawn"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("report.png"), std::string::npos) << "named as drawn: " << r.out;
@@ -376,6 +376,14 @@ TEST(DefaultRun, AWorldWhoseNMakesTheDefaultRunEndlessIsRefusedWithWhatToDo) {
   EXPECT_NE(r.err.find("644245094100 steps long; say how long with --steps N or --time T"), std::string::npos) << r.err;
   r = test::runJelloArgs({"--headless", "--n", "2147483647", "--steps", "3", test::dataPath("still.w")});
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST(NoCrash, AWorldLargerThanMaxMemoryIsRefusedBeforeItIsRead) {
+  test::CommandResult r = test::runJelloArgs({"--headless", "--max-memory", "0.05", test::dataPath("rotate.w")});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(":7: not enough memory for this world: needs 0.136 GB, 0.05 GB available (resolution)"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(StandardOutput, AResultThatCannotBeWrittenIsAFailure) {

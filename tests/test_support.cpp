@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,7 +97,7 @@ CommandResult runShell(const std::string& script) {
   return result;
 }
 
-CommandResult runProgram(const std::vector<std::string>& argv, const std::string& cwd, void (*limits)()) {
+CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetup& setup) {
   std::string dir = makeTempDir();
   const std::string out = dir + "/out", err = dir + "/err";
   std::vector<char*> args;
@@ -104,19 +105,22 @@ CommandResult runProgram(const std::vector<std::string>& argv, const std::string
   args.push_back(nullptr);
   pid_t child = ::fork();
   if (child == 0) {
-    int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT, 0600),
-        e = ::open(err.c_str(), O_WRONLY | O_CREAT, 0600);
-    ::dup2(in, 0);
-    ::dup2(o, 1);
-    ::dup2(e, 2);
-    if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) ::_exit(126);
-    if (limits) limits();
+    // Only async-signal-safe calls between fork and exec (and the caller's `before`).
+    int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600),
+        e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (in < 0 || o < 0 || e < 0 || ::dup2(in, 0) < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0) ::_exit(126);
+    if (!setup.cwd.empty() && ::chdir(setup.cwd.c_str()) != 0) ::_exit(126);
+    if (setup.addressSpace > 0) {
+      rlimit limit{setup.addressSpace, setup.addressSpace};
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
+    }
+    if (setup.before) setup.before();
     ::alarm(kHangGuardSeconds);  // survives exec: a hang ends as a failed test, not a stuck suite
     ::execv(args[0], args.data());
     ::_exit(127);
   }
-  int raw = 0;
   CommandResult result;
+  int raw = 0;
   if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
   result.out = readText(out);
   result.err = readText(err);
@@ -124,10 +128,10 @@ CommandResult runProgram(const std::vector<std::string>& argv, const std::string
   return result;
 }
 
-CommandResult runJelloArgs(const std::vector<std::string>& args, const std::string& cwd, void (*limits)()) {
+CommandResult runJelloArgs(const std::vector<std::string>& args, const ProgramSetup& setup) {
   std::vector<std::string> argv = {JELLO_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
-  return runProgram(argv, cwd, limits);
+  return runProgram(argv, setup);
 }
 
 namespace {

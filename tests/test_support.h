@@ -1,6 +1,7 @@
 // test_support.h: shared helpers of the test suite.
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -40,16 +41,20 @@ CommandResult runJello(const std::string& args, const std::string& cwd = "", con
 std::string jelloCommand();
 // Runs a shell script (e.g. a pipeline around jelloCommand()), capturing its output.
 CommandResult runShell(const std::string& script);
-
-// Runs `argv` (argv[0] a path) with no shell in between, in `cwd` when given, standard input
-// from /dev/null, output captured; `limits` run in the child before exec (setrlimit, say). A
-// program still running after kHangGuardSeconds is stopped (status -1).
+// How runProgram starts a program.
+struct ProgramSetup {
+  std::string cwd;                 // working directory; "" for the test's own
+  std::uint64_t addressSpace = 0;  // RLIMIT_AS, bytes; 0 for none
+  void (*before)() = nullptr;      // run in the child just before exec (a setrlimit, say)
+};
+// A program still running after this long is stopped (status -1): a hang fails, never sticks.
 constexpr unsigned kHangGuardSeconds = 120;
-CommandResult runProgram(const std::vector<std::string>& argv, const std::string& cwd = "",
-                         void (*limits)() = nullptr);
+// Runs argv[0] (a path) with arguments argv[1..] directly (no shell), stdin from /dev/null,
+// output captured. status is -1 when it was killed by a signal (e.g. SIGABRT from an uncaught
+// std::bad_alloc, or the hang guard).
+CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetup& setup = {});
 // runProgram of the jello binary under test with these arguments.
-CommandResult runJelloArgs(const std::vector<std::string>& args, const std::string& cwd = "",
-                           void (*limits)() = nullptr);
+CommandResult runJelloArgs(const std::vector<std::string>& args, const ProgramSetup& setup = {});
 
 // Removes a directory tree made by makeTempDir.
 void removeTree(const std::string& dir);

@@ -1,7 +1,10 @@
 // Reader and writer of world files (SPEC.md section 1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <functional>
 #include <random>
 
 #include "test_support.h"
@@ -113,6 +116,54 @@ TEST(WorldReader, CrlfFilesReadTheSame) {
   expectSameWorld(parseWorld(text, "lf"), parseWorld(crlf, "crlf"));
 }
 
+// The message a reader of `text` (as a string and as a file) gives, or "" when it is accepted.
+std::string readerMessage(const std::string& text, const std::string& path) {
+  test::writeText(path, text);
+  std::string fromMemory, fromFile;
+  try {
+    parseWorld(text, path);
+  } catch (const WorldFileError& e) {
+    fromMemory = e.what();
+  }
+  try {
+    readWorldFile(path);
+  } catch (const WorldFileError& e) {
+    fromFile = e.what();
+  }
+  EXPECT_EQ(fromMemory, fromFile);
+  return fromFile;
+}
+
+TEST(WorldReader, AUtf8ByteOrderMarkIsSkippedAsWindowsEditorsWriteIt) {
+  std::string dir = test::makeTempDir();
+  std::string text = test::readText(dataPath("gravity.w"));
+  EXPECT_EQ(readerMessage("\xEF\xBB\xBF" + text, dir + "/bom.w"), "");
+  expectSameWorld(parseWorld(text, "plain"), readWorldFile(dir + "/bom.w"));
+  // Only at the start of the file: elsewhere its bytes are not text.
+  std::string inside = text.substr(0, 4) + "\xEF\xBB\xBF" + text.substr(4);
+  EXPECT_EQ(readerMessage(inside, dir + "/inside.w"),
+            dir + "/inside.w:2: byte 0xef in column 1: not a text file, not a world file (dt n)");
+  test::removeTree(dir);
+}
+
+TEST(WorldReader, ACrOnlyFileIsToldToConvertItsLineEnds) {
+  std::string dir = test::makeTempDir();
+  const std::string expected =
+      ":1: lines end with CR only (classic Mac OS line ends): convert the file to LF or CRLF "
+      "line ends (integrator)";
+  for (const char* world : {"gravity.w", "still.w"}) {
+    std::string cr = test::readText(dataPath(world));
+    std::replace(cr.begin(), cr.end(), '\n', '\r');
+    EXPECT_EQ(readerMessage(cr, dir + "/cr.w"), dir + "/cr.w" + expected) << world;
+  }
+  // A short CR-only file is not one long line, but the same mistake.
+  EXPECT_EQ(readerMessage("RK4\r0.001 1\r", dir + "/short.w"), dir + "/short.w" + expected);
+  // CRLF, and a CR before the LF of a line with trailing blanks, are fine.
+  EXPECT_EQ(readerMessage("RK4 \r \r\n", dir + "/crlf.w"),
+            dir + "/crlf.w:2: file ends early, expected 2 numbers (dt n)");
+  test::removeTree(dir);
+}
+
 TEST(WorldReader, IntegratorNamesAreCaseInsensitive) {
   std::string text = test::readText(dataPath("moveLeft.w"));
   const std::pair<const char*, Integrator> names[] = {
@@ -172,6 +223,67 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   expectSameWorld(f, readWorldFile(path));
   EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0) << "temporary file left behind";
   EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
+  test::removeTree(dir);
+}
+
+// findWorldProblem (createWorld's judge) and the reader agree: each value the reader refuses in
+// a file is the problem named, with its part and point or node.
+TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
+  using Part = WorldProblem::Part;
+  const WorldFile good = readWorldFile(dataPath("rotate.w"));
+  EXPECT_FALSE(findWorldProblem(good.world, good.state));
+  struct Case {
+    std::function<void(WorldFile&)> spoil;
+    Part part;
+    std::size_t index;
+    std::string what;
+  };
+  const Case cases[] = {
+      {[](WorldFile& f) { f.world.mass = 0; }, Part::Parameters, 0,
+       "mass must be > 0 and finite, got 0"},
+      {[](WorldFile& f) { f.world.dt = -1e-9; }, Part::Parameters, 0,
+       "dt must be > 0 and finite, got -1e-09"},
+      {[](WorldFile& f) { f.world.kCollision = INFINITY; }, Part::Parameters, 0,
+       "kCollision must be >= 0 and finite, got inf"},
+      {[](WorldFile& f) {
+         f.world.plane = {0, 0, 0, 1};
+       },
+       Part::Plane, 0, "the plane's normal (a,b,c) is zero"},
+      {[](WorldFile& f) { f.world.field.forces[3 * 931 + 2] = NAN; }, Part::Field, 931,
+       "the force at field node (1,1,1) is (0.018184, -0.018184, nan) N, not finite"},
+      {[](WorldFile& f) { f.state.p()[coordIndex(pointIndex(7, 7, 7), 0)] = INFINITY; },
+       Part::Position, 511, "the position of point [7][7][7] is (inf, 1, 1) m, not finite"},
+      {[](WorldFile& f) { f.state.v()[coordIndex(pointIndex(0, 1, 2), 1)] = -INFINITY; },
+       Part::Velocity, 10, "the velocity of point [0][1][2] is (0, -inf, 0) m/s, not finite"},
+  };
+  for (const Case& c : cases) {
+    WorldFile f = good;
+    c.spoil(f);
+    std::optional<WorldProblem> problem = findWorldProblem(f.world, f.state);
+    ASSERT_TRUE(problem) << c.what;
+    EXPECT_EQ(problem->part, c.part) << c.what;
+    EXPECT_EQ(problem->index, c.index) << c.what;
+    EXPECT_EQ(problem->what, c.what);
+    EXPECT_THROW(parseWorld(formatWorld(f.world, f.state), "spoilt.w"), WorldFileError) << c.what;
+  }
+}
+
+TEST(WorldWriter, WritesInBlocksOfAtMost64KilobytesTheSameBytesAsOneString) {
+  const WorldFile f = readWorldFile(dataPath("gravity.w"));
+  std::string joined;
+  std::size_t blocks = 0, largest = 0;
+  formatWorldInBlocks(f.world, f.state, [&](std::string_view block) {
+    ++blocks;
+    largest = std::max(largest, block.size());
+    joined += block;
+  });
+  const std::string text = formatWorld(f.world, f.state);
+  EXPECT_EQ(joined, text);
+  EXPECT_GE(blocks, text.size() / (65536 + 100));  // 5 for its 310 KB
+  EXPECT_LE(largest, 65536u + 100) << "a block is the whole text, not a part of it";
+  std::string dir = test::makeTempDir();
+  writeWorldFile(dir + "/out.w", f.world, f.state);
+  EXPECT_EQ(test::readText(dir + "/out.w"), text);
   test::removeTree(dir);
 }
 
