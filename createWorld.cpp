@@ -187,6 +187,8 @@ int main(int argc, char** argv) {
       if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return fail("--plane: the normal (a, b, c) must not be zero");
       w.hasPlane = true;
       w.plane = {plane[0], plane[1], plane[2], plane[3]};
+      if (std::string why = jello::planeProblem(w.plane); !why.empty())
+        return fail("--plane: " + why);
     }
 
     using Source = jello::FieldRecipe::Source;

@@ -19,6 +19,7 @@
 #include <string>
 #include <system_error>
 
+#include "physics.h"
 #include "world.h"
 
 namespace jello {
@@ -342,6 +343,9 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     if (w.plane.a == 0 && w.plane.b == 0 && w.plane.c == 0) {
       in.fail(in.line(), "the plane's normal (a,b,c) is zero", "plane a b c");
     }
+    // A normal of any size is simulated (normalised by a power of two); an offset too large for it
+    // is not.
+    if (std::string why = planeProblem(w.plane); !why.empty()) in.fail(in.line(), why, "plane d");
   }
 
   in.record(1, "resolution");

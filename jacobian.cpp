@@ -80,14 +80,12 @@ void wallJacobian(Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
 }
 
 void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
-  Vec3 normal{plane.a, plane.b, plane.c};
-  double s = dot(normal, p) + plane.d;
-  if (!(s * side < 0)) {
+  if (!(planeValue(plane, p) * side < 0)) {
     dFdp->setZero();
     dFdv->setZero();
     return;
   }
-  Eigen::Vector3d n = col(normal);
+  Eigen::Vector3d n(plane.a, plane.b, plane.c);
   Mat3 nn = n * n.transpose() / n.squaredNorm();
   *dFdp = -k * nn;
   *dFdv = -d * nn;
@@ -149,7 +147,7 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
     wallJacobian(pq, w.kCollision, w.dCollision, &wallP, &wallV);
     Mat3 blockP = wallP + fieldJacobian(w.field, pq), blockV = wallV;
     if (w.hasPlane) {
-      planeJacobian(w.plane, model.planeSide, pq, w.kCollision, w.dCollision, &planeP, &planeV);
+      planeJacobian(model.plane, model.planeSide, pq, w.kCollision, w.dCollision, &planeP, &planeV);
       blockP += planeP;
       blockV += planeV;
     }
