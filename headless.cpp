@@ -88,8 +88,21 @@ std::string newFramesDir(const std::string& parent, const std::string& stem) {
   }
 }
 
-long long stepsForTime(double time, double dt) {
-  return static_cast<long long>(std::ceil(time / dt * (1 - 1e-9)));
+std::optional<long long> stepsForTime(double time, double dt) {
+  const double steps = std::ceil(time / dt * (1 - 1e-9));
+  if (!(steps <= kMaxSteps)) return std::nullopt;  // also NaN and infinity
+  return static_cast<long long>(std::max(steps, 0.0));
+}
+
+std::string tooManyStepsMessage(double time, double dt) {
+  char steps[64] = "more steps than a double can count";
+  if (std::isfinite(time / dt)) std::snprintf(steps, sizeof steps, "%g steps", time / dt);
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "--time %g s at --dt %g s would take %s, more than the %g a run may take; choose a "
+                "shorter --time or a larger --dt",
+                time, dt, steps, kMaxSteps);
+  return text;
 }
 
 bool loadRun(const RunOptions& options, WorldFile* out) {
@@ -113,7 +126,14 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
 
   long long steps = kDefaultFrames * world.n;
   if (options.steps) steps = *options.steps;
-  if (options.time) steps = stepsForTime(*options.time, world.dt);
+  if (options.time) {
+    std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
+    if (!forTime) {
+      std::fprintf(stderr, "jello: %s\n", tooManyStepsMessage(*options.time, world.dt).c_str());
+      return kExitBadInput;
+    }
+    steps = *forTime;
+  }
 
   if (!options.dumpPath.empty()) {
     std::string why = whyNotWritable(options.dumpPath);

@@ -150,14 +150,16 @@ namespace {
 constexpr int kPaddedNode = 4;  // doubles per node in Model::paddedField
 
 // A coordinate's cell along one axis, and its position in it. The cell is clamped in floating
-// point, so that a stray NaN never reaches the integer conversion.
+// point, so that only a number in [0, lastCell] reaches the integer conversion: a NaN fails
+// g >= 0 and takes cell 0 (std::max(NaN, 0.0) would have kept it NaN).
 struct CellCoordinate {
   int cell;
   double t;  // position within the cell, 0..1
 };
 inline CellCoordinate cellCoordinate(double x, double cellsPerMetre, double lastCell) {
   double g = (x + kBoxHalfSize) * cellsPerMetre;
-  int cell = static_cast<int>(std::floor(std::min(std::max(g, 0.0), lastCell)));
+  const double clamped = !(g >= 0) ? 0.0 : g > lastCell ? lastCell : g;
+  int cell = static_cast<int>(std::floor(clamped));
   return {cell, g - cell};
 }
 // A node's force: its 3 doubles in the world's field, or 4 in the kernel's padded copy (the

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "guard.h"
+#include "headless.h"
 #include "integrators.h"
 #include "jacobian.h"
 #include "plot.h"
@@ -75,6 +76,13 @@ double modeLimit(Integrator integrator, const Mode& mode) {
     if (low > 0 && high / low < 1 + 1e-6) break;
   }
   return low;
+}
+
+// x rounded to an integer, clamped in floating point to long long's range first (NaN to 0): a
+// mode of an extreme world (omega^2 or damping near 1e308) never reaches an undefined conversion.
+long long roundedKey(double x) {
+  constexpr double kLimit = 9e18;
+  return std::isnan(x) ? 0 : std::llround(std::clamp(x, -kLimit, kLimit));
 }
 
 std::string number(double x) {
@@ -149,7 +157,7 @@ double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
   // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
   std::map<std::pair<long long, long long>, Mode> distinct;
   for (const Mode& m : modes) {
-    auto key = std::pair{std::llround(std::log(m.omegaSquared) * 1e9), std::llround(m.damping * 1e6)};
+    auto key = std::pair{roundedKey(std::log(m.omegaSquared) * 1e9), roundedKey(m.damping * 1e6)};
     distinct.emplace(key, m);
   }
   double limit = kLargestStep;
@@ -223,11 +231,13 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
 }
 
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+  // The smallest step tried is guess / 3: its runs must be a countable number of steps.
+  if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
   auto stable = [&](double dt) {
     State s = start;
     Stepper stepper(integrator);
     DivergenceGuard guard(model, start);
-    for (long i = 1, n = std::lround(time / dt); i <= n; ++i) {
+    for (long long i = 1, n = std::llround(time / dt); i <= n; ++i) {
       stepper.step(model, s, dt);
       if (!guard.check(s, i * dt).empty()) return false;
     }

@@ -82,7 +82,7 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
 
 // The largest dt at which real runs of `time` seconds from `start` stay plausible (the runtime
 // guard, every step), by bisection to 0.5% between a third and three times `guess`; NaN when
-// the limit is not in that range.
+// the limit is not in that range, or when runs at guess / 3 would take more than kMaxSteps.
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess);
 
 // jello --check --map DIR: kElastic swept against dt, the predicted and the observed (real

@@ -349,6 +349,31 @@ TEST(Field, NoFieldForceOutsideTheBox) {
   EXPECT_EQ(fieldForce(none, {0, 0, 0}).x, 0);
 }
 
+TEST(Field, ANotANumberCoordinateTakesAValidCellAndReadsNoOtherMemory) {
+  // Before, std::max(NaN, 0.0) let the NaN through to the int conversion (undefined; INT_MIN
+  // here, an index far outside the field), in the kernel and in the Jacobian alike.
+  ForceField field = gridOf(5, [](Vec3 p) { return Vec3{p.y, -p.x, 1}; });
+  World w = test::springsOnlyWorld();
+  w.field = field;
+  State state = test::restLattice();
+  const int nan = pointIndex(7, 7, 7), far = pointIndex(0, 0, 0);
+  store(state.p(), nan, {NAN, 0.5, 0.5});
+  for (KernelChoice choice : {KernelChoice::Specialised, KernelChoice::General}) {
+    Model model = makeModel(w, state, choice);
+    for (Vec3 outside : {Vec3{0, 0, 0}, Vec3{-2.5, 0, 0}}) {  // the field's own path, then the contact path
+      store(state.p(), far, outside);
+      std::vector<double> force = forcesOf(model, state);
+      EXPECT_TRUE(std::isnan(force[coordIndex(nan, 0)]));
+      const Vec3 f = load(force.data(), pointIndex(0, 0, 1));  // no spring to the NaN point
+      EXPECT_TRUE(std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z));
+    }
+  }
+  for (Vec3 p : {Vec3{NAN, 0, 0}, Vec3{0, NAN, 0}, Vec3{0, 0, NAN}}) {
+    Mat3 J = fieldJacobian(field, p);
+    EXPECT_EQ(J, Mat3::Zero()) << "no gradient where there is no field";
+  }
+}
+
 TEST(Forces, TotalForceSumsEveryTermOnEveryPoint) {
   // One point pushed through the floor and the plane, a uniform field: the total on it is the
   // sum of its springs, its wall, its plane and its field, each computed on its own.

@@ -2,6 +2,7 @@
 // degenerate geometry.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "guard.h"
@@ -82,6 +83,16 @@ TEST(Stability, VerdictsAndSuggestions) {
   EXPECT_EQ(verdictFor(1.2, 1), Verdict::Unstable);
   EXPECT_EQ(suggestedStep(6.6e-5), 5e-5);
   EXPECT_EQ(suggestedStep(1e-3), 5e-4);
+}
+
+TEST(Stability, AnObservedLimitNeedingMoreStepsThanARunMayTakeIsNotAttempted) {
+  // Runs of 1000 s at a third of 3e-10 s would be 1e13 steps: before, the map started them.
+  WorldFile f = readWorldFile(test::dataPath("jello.w"));
+  Model model = makeModel(f.world, f.state);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_TRUE(std::isnan(observedLimit(model, f.state, Integrator::Euler, 1000, 3e-10)));
+  EXPECT_TRUE(std::isnan(observedLimit(model, f.state, Integrator::Euler, 0.1, 0)));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1);
 }
 
 TEST(Guard, PassesPhysicsAndCatchesABlowUp) {
