@@ -76,6 +76,18 @@ std::string whyNotWritable(const std::string& path) {
   return {};
 }
 
+// Why RK45 stopped at step s: its tolerances are beyond what double arithmetic resolves.
+std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt) {
+  char text[320];
+  std::snprintf(
+      text, sizeof text,
+      "RK45 cannot meet --rtol %g --atol %g: at step %lld (t=%g s) its error estimate stayed above "
+      "them down to substeps of %.2g s, where rounding decides it; loosen them (the defaults are "
+      "--rtol 1e-6 --atol 1e-9)",
+      tolerances.rtol, tolerances.atol, s, s * dt, kSmallestSubstep * dt);
+  return text;
+}
+
 }  // namespace
 
 std::string newFramesDir(const std::string& parent, const std::string& stem) {
@@ -163,6 +175,11 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
               options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
   for (long long s = 1; s <= steps; ++s) {
     stepper.step(model, state, world.dt);
+    if (stepper.stats().failed > 0) {
+      std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
+                   toleranceFailure(options.tolerances, s, world.dt).c_str());
+      return kExitBadInput;
+    }
     // Every step: the cheap test of SPEC (non-finite, 100 m); every drawn frame, but not more
     // often than every kGuardEvery steps: the energy.
     std::string wrong;
