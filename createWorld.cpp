@@ -38,12 +38,17 @@ void warn(const std::string& message) { std::fprintf(stderr, "createWorld: warni
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
 void warnAbout(const jello::World& world, const jello::State& state) {
-  double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
-  if (world.dt > limit) {
+  const std::string beyond = jello::beyondDoubles(world, state);
+  const double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
+  if (!beyond.empty()) {
+    warn("the world's numbers are beyond what double arithmetic can simulate (" + beyond +
+         "): it will diverge at once");
+  } else if (world.dt > limit) {
     char text[200];
-    std::snprintf(text, sizeof text, "dt=%g exceeds %s's stable limit %.3g s for this world: it will diverge; try --dt %g",
-                  world.dt, jello::integratorName(world.integrator), limit, jello::suggestedStep(limit));
-    warn(text);
+    std::snprintf(
+        text, sizeof text, "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; ",
+        world.dt, jello::integratorName(world.integrator), jello::limitText(limit).c_str());
+    warn(text + jello::stepAdvice(limit));
   }
   int outside = 0;
   for (int c = 0; c < jello::kNumCoords; ++c)
