@@ -54,12 +54,17 @@ void warnAbout(jello::World& world, const jello::State& state) {
   // (for R = 512, 7.5 GB).
   jello::ForceField field = std::move(world.field);
   world.field = {};
-  double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
-  if (world.dt > limit) {
+  const std::string beyond = jello::beyondDoubles(world, state);
+  const double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
+  if (!beyond.empty()) {
+    warn("the world's numbers are beyond what double arithmetic can simulate (" + beyond +
+         "): it will diverge at once");
+  } else if (world.dt > limit) {
     char text[200];
-    std::snprintf(text, sizeof text, "dt=%g exceeds %s's stable limit %.3g s for this world: it will diverge; try --dt %g",
-                  world.dt, jello::integratorName(world.integrator), limit, jello::suggestedStep(limit));
-    warn(text);
+    std::snprintf(
+        text, sizeof text, "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; ",
+        world.dt, jello::integratorName(world.integrator), jello::limitText(limit).c_str());
+    warn(text + jello::stepAdvice(limit));
   }
   int outside = 0;
   for (int c = 0; c < jello::kNumCoords; ++c)
@@ -288,6 +293,8 @@ static int createWorld(int argc, char** argv) {
       if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return fail("--plane: the normal (a, b, c) must not be zero");
       w.hasPlane = true;
       w.plane = {plane[0], plane[1], plane[2], plane[3]};
+      if (std::string why = jello::planeProblem(w.plane); !why.empty())
+        return fail("--plane: " + why);
     }
 
     using Source = jello::FieldRecipe::Source;

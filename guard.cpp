@@ -28,11 +28,11 @@ double mechanicalEnergy(const Model& model, const State& state) {
     energy += 0.5 * w.kCollision * beyond * beyond;
   }
   if (w.hasPlane) {
-    const Plane& pl = w.plane;
+    // The normalised plane: its squared normal neither overflows nor underflows.
+    const Plane& pl = model.plane;
     double norm2 = pl.a * pl.a + pl.b * pl.b + pl.c * pl.c;
     for (int q = 0; q < kNumPoints; ++q) {
-      Vec3 p = load(state.p(), q);
-      double s = pl.a * p.x + pl.b * p.y + pl.c * p.z + pl.d;
+      double s = planeValue(pl, load(state.p(), q));
       if (s * model.planeSide < 0) energy += 0.5 * w.kCollision * s * s / norm2;
     }
   }

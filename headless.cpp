@@ -67,6 +67,18 @@ class Progress {
   Clock::time_point start_ = Clock::now();
 };
 
+// Why RK45 stopped at step s: its tolerances are beyond what double arithmetic resolves.
+std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt) {
+  char text[320];
+  std::snprintf(
+      text, sizeof text,
+      "RK45 cannot meet --rtol %g --atol %g: at step %lld (t=%g s) its error estimate stayed above "
+      "them down to substeps of %.2g s, where rounding decides it; loosen them (the defaults are "
+      "--rtol 1e-6 --atol 1e-9)",
+      tolerances.rtol, tolerances.atol, s, s * dt, kSmallestSubstep * dt);
+  return text;
+}
+
 }  // namespace
 
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
@@ -74,8 +86,21 @@ std::string whyNotDumpable(const std::string& dumpPath, const std::string& world
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 
-long long stepsForTime(double time, double dt) {
-  return static_cast<long long>(std::ceil(time / dt * (1 - 1e-9)));
+std::optional<long long> stepsForTime(double time, double dt) {
+  const double steps = std::ceil(time / dt * (1 - 1e-9));
+  if (!(steps <= kMaxSteps)) return std::nullopt;  // also NaN and infinity
+  return static_cast<long long>(std::max(steps, 0.0));
+}
+
+std::string tooManyStepsMessage(double time, double dt) {
+  char steps[64] = "more steps than a double can count";
+  if (std::isfinite(time / dt)) std::snprintf(steps, sizeof steps, "%g steps", time / dt);
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "--time %g s at --dt %g s would take %s, more than the %g a run may take; choose a "
+                "shorter --time or a larger --dt",
+                time, dt, steps, kMaxSteps);
+  return text;
 }
 
 bool loadRun(const RunOptions& options, WorldFile* out) {
@@ -104,7 +129,14 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     return kExitBadInput;
   }
   if (options.steps) steps = *options.steps;
-  if (options.time) steps = stepsForTime(*options.time, world.dt);
+  if (options.time) {
+    std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
+    if (!forTime) {
+      std::fprintf(stderr, "jello: %s\n", tooManyStepsMessage(*options.time, world.dt).c_str());
+      return kExitBadInput;
+    }
+    steps = *forTime;
+  }
 
   if (options.dumpPath) {
     std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
@@ -134,6 +166,11 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
               options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
   for (long long s = 1; s <= steps; ++s) {
     stepper.step(model, state, world.dt);
+    if (stepper.stats().failed > 0) {
+      std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
+                   toleranceFailure(options.tolerances, s, world.dt).c_str());
+      return kExitBadInput;
+    }
     // Every step: the cheap test of SPEC (non-finite, 100 m); every drawn frame, but not more
     // often than every kGuardEvery steps: the energy.
     std::string wrong;

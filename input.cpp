@@ -21,6 +21,7 @@
 #include <system_error>
 
 #include "memory.h"
+#include "physics.h"
 #include "world.h"
 
 #include "output.h"
@@ -424,6 +425,9 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     if (w.plane.a == 0 && w.plane.b == 0 && w.plane.c == 0) {
       in.fail(in.line(), "the plane's normal (a,b,c) is zero", "plane a b c");
     }
+    // A normal of any size is simulated (normalised by a power of two); an offset too large for it
+    // is not.
+    if (std::string why = planeProblem(w.plane); !why.empty()) in.fail(in.line(), why, "plane d");
   }
 
   in.record(1, "resolution");

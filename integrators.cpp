@@ -6,6 +6,7 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace jello {
@@ -48,7 +49,31 @@ void axpy(const std::vector<double>& y, double h, const std::vector<double>& k, 
   for (std::size_t i = 0; i < y.size(); ++i) out[i] = y[i] + h * k[i];
 }
 
+bool allFinite(const std::vector<double>& y) {
+  for (double x : y)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
 }  // namespace
+
+double rmsNorm(const double* x, std::size_t n) {
+  double sumSquares = 0;
+  for (std::size_t i = 0; i < n; ++i) sumSquares += x[i] * x[i];
+  if (sumSquares >= std::numeric_limits<double>::min() &&
+      sumSquares <= std::numeric_limits<double>::max())
+    return std::sqrt(sumSquares / n);
+  // Out of range, or a NaN: scaled by the largest term, which makes every square at most 1.
+  double largest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (std::isnan(x[i])) return NAN;
+    largest = std::max(largest, std::fabs(x[i]));
+  }
+  if (largest == 0 || std::isinf(largest)) return largest;
+  double scaledSum = 0;
+  for (std::size_t i = 0; i < n; ++i) scaledSum += (x[i] / largest) * (x[i] / largest);
+  return largest * std::sqrt(scaledSum / n);
+}
 
 struct Stepper::Buffers {
   std::vector<double> k[kStages], temp, next;
@@ -176,18 +201,22 @@ void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
           }
           f(s == kStages - 1 ? b.next : b.temp, b.k[s]);
         }
-        double sumSquares = 0;
+        // The scaled errors go into b.temp (the stages are done with it). Their squares
+        // overflow below a tolerance of about 1e-160: rmsNorm keeps the norm finite then.
         for (std::size_t i = 0; i < n; ++i) {
           double error = 0;
           for (int j = 0; j < kStages; ++j) error += kErrorWeights[j] * b.k[j][i];
           double scale = tolerances_.atol + tolerances_.rtol * std::max(std::fabs(y[i]), std::fabs(b.next[i]));
-          sumSquares += (h * error / scale) * (h * error / scale);
+          b.temp[i] = h * error / scale;
         }
-        double norm = std::sqrt(sumSquares / n);
-        if (!std::isfinite(norm)) {  // the state blew up: hand it back, the caller stops
-          y = b.next;
-          ++stats_.steps;
-          break;
+        double norm = rmsNorm(b.temp.data(), n);
+        if (!std::isfinite(norm)) {
+          if (!allFinite(b.next)) {  // the state blew up: hand it back, the caller stops
+            y = b.next;
+            ++stats_.steps;
+            break;
+          }
+          norm = INFINITY;  // an error beyond measure on a finite state: rejected, never accepted
         }
         double factor =
             norm == 0 ? kMaxGrowth
@@ -202,9 +231,14 @@ void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
           rk45Step_ = std::min(h * factor, dt);
         } else {
           ++stats_.rejected;
+          if (h <= kSmallestSubstep * dt) {  // no substep a double can take meets the tolerance
+            ++stats_.failed;
+            std::fill(y.begin(), y.end(), NAN);
+            break;
+          }
           factor = std::min(factor, 1.0);
         }
-        h = std::min(h * factor, dt);
+        h = std::max(std::min(h * factor, dt), std::min(kSmallestSubstep * dt, h));
       }
       break;
     }

@@ -42,7 +42,21 @@ struct StepStats {
   long long evaluations = 0;  // derivative evaluations
   long long jacobians = 0;    // Jacobian assemblies (IMPLICIT)
   long long newtonIterations = 0;
+  // RK45 steps abandoned: their error estimate stayed above the tolerance down to the smallest
+  // substep, kSmallestSubstep * dt; such a step leaves NaN in the state (see Stepper::step).
+  long long failed = 0;
 };
+
+// RK45's smallest substep, as a fraction of dt: 16 machine epsilons, as MATLAB's ode45 bounds
+// its step by 16 eps |t|. Below it a substep is lost in the rounding of the time within the
+// step, and the error estimate is rounding, not truncation: a tolerance the estimate still
+// exceeds there (--rtol 1e-300) cannot be met by double arithmetic.
+constexpr double kSmallestSubstep = 16 * 2.220446049250313e-16;
+
+// The root mean square of x[0..n), computed without overflow or underflow: the plain sum of
+// squares where it stays in range (bit for bit the usual formula), otherwise the sum of the
+// squares of x / max|x| (as hypot does). Infinite when an x is, NaN when an x is NaN.
+double rmsNorm(const double* x, std::size_t n);
 
 // The theoretical order of convergence.
 int orderOf(Integrator integrator);
@@ -56,6 +70,9 @@ class Stepper {
   Stepper(Stepper&&) noexcept;
   Stepper& operator=(Stepper&&) noexcept;
 
+  // One step of dt. RK45 takes substeps; when one is rejected at the smallest substep
+  // (kSmallestSubstep * dt), the step is abandoned: y becomes NaN, so that no caller takes it
+  // for a result, and stats().failed counts it.
   void step(const OdeSystem& system, std::vector<double>& y, double dt);
   // The jello: one step of the model, with the user's pull if any.
   void step(const Model& model, State& state, double dt, const Pull* pull = nullptr);

@@ -80,14 +80,12 @@ void wallJacobian(Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
 }
 
 void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv) {
-  Vec3 normal{plane.a, plane.b, plane.c};
-  double s = dot(normal, p) + plane.d;
-  if (!(s * side < 0)) {
+  if (!(planeValue(plane, p) * side < 0)) {
     dFdp->setZero();
     dFdv->setZero();
     return;
   }
-  Eigen::Vector3d n = col(normal);
+  Eigen::Vector3d n(plane.a, plane.b, plane.c);
   Mat3 nn = n * n.transpose() / n.squaredNorm();
   *dFdp = -k * nn;
   *dFdv = -d * nn;
@@ -96,7 +94,9 @@ void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, 
 Mat3 fieldJacobian(const ForceField& field, Vec3 p) {
   Mat3 J = Mat3::Zero();
   const int r = field.resolution;
-  if (r < 2 || std::fabs(p.x) > kBoxHalfSize || std::fabs(p.y) > kBoxHalfSize || std::fabs(p.z) > kBoxHalfSize)
+  // Outside the box, or not a number (which fails every comparison): no field, no gradient.
+  if (r < 2 || !(std::fabs(p.x) <= kBoxHalfSize && std::fabs(p.y) <= kBoxHalfSize &&
+                 std::fabs(p.z) <= kBoxHalfSize))
     return J;
   const double coord[3] = {p.x, p.y, p.z};
   const double perMetre = (r - 1) / (2 * kBoxHalfSize);  // dt/dx of the cell coordinate
@@ -104,7 +104,8 @@ Mat3 fieldJacobian(const ForceField& field, Vec3 p) {
   double t[3];
   for (int axis = 0; axis < 3; ++axis) {
     double g = (coord[axis] + kBoxHalfSize) * (r - 1) / (2 * kBoxHalfSize);
-    cell[axis] = std::clamp(static_cast<int>(std::floor(g)), 0, r - 2);
+    // g is in [0, r - 1] inside the box; clamped before the conversion all the same.
+    cell[axis] = static_cast<int>(std::floor(std::clamp(g, 0.0, r - 2.0)));
     t[axis] = g - cell[axis];
   }
   for (int corner = 0; corner < 8; ++corner) {
@@ -149,7 +150,7 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
     wallJacobian(pq, w.kCollision, w.dCollision, &wallP, &wallV);
     Mat3 blockP = wallP + fieldJacobian(w.field, pq), blockV = wallV;
     if (w.hasPlane) {
-      planeJacobian(w.plane, model.planeSide, pq, w.kCollision, w.dCollision, &planeP, &planeV);
+      planeJacobian(model.plane, model.planeSide, pq, w.kCollision, w.dCollision, &planeP, &planeV);
       blockP += planeP;
       blockV += planeV;
     }

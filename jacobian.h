@@ -25,6 +25,7 @@ void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Mat3* 
 // Derivatives of wallForce: -k e e^T and -d e e^T for each wall the point is beyond.
 void wallJacobian(Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv);
 // Derivatives of planeForce: -k n n^T / |n|^2 and -d n n^T / |n|^2 when the point is across.
+// `plane` as planeForce takes it (Model::plane, normalised).
 void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Mat3* dFdp, Mat3* dFdv);
 // Derivative of fieldForce with respect to p: the gradient of the trilinear interpolation
 // inside the point's cell; zero outside the box and for R < 2.

@@ -120,14 +120,29 @@ Vec3 wallForce(Vec3 p, Vec3 v, double k, double d) {
   return force;
 }
 
+Plane normalisedPlane(const Plane& plane) {
+  const double largest = std::max({std::fabs(plane.a), std::fabs(plane.b), std::fabs(plane.c)});
+  if (largest == 0 || !std::isfinite(largest)) return plane;  // refused by the reader already
+  int exponent;
+  std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
+  return {std::ldexp(plane.a, -exponent), std::ldexp(plane.b, -exponent),
+          std::ldexp(plane.c, -exponent), std::ldexp(plane.d, -exponent)};
+}
+
+std::string planeProblem(const Plane& plane) {
+  if (plane.a == 0 && plane.b == 0 && plane.c == 0) return "the plane's normal (a,b,c) is zero";
+  if (!std::isfinite(normalisedPlane(plane).d)) {
+    return "the plane is too far from the origin to simulate: d is more than 1e308 times the "
+           "largest of |a|, |b|, |c|, beyond the range of doubles";
+  }
+  return "";
+}
+
 int pointsAcrossPlane(const Model& model, const State& state) {
   if (!model.world.hasPlane) return 0;
-  const Plane& pl = model.world.plane;
   int across = 0;
-  for (int q = 0; q < kNumPoints; ++q) {
-    Vec3 p = load(state.p(), q);
-    if ((pl.a * p.x + pl.b * p.y + pl.c * p.z + pl.d) * model.planeSide < 0) ++across;
-  }
+  for (int q = 0; q < kNumPoints; ++q)
+    if (planeValue(model.plane, load(state.p(), q)) * model.planeSide < 0) ++across;
   return across;
 }
 
@@ -135,14 +150,16 @@ namespace {
 constexpr int kPaddedNode = 4;  // doubles per node in Model::paddedField
 
 // A coordinate's cell along one axis, and its position in it. The cell is clamped in floating
-// point, so that a stray NaN never reaches the integer conversion.
+// point, so that only a number in [0, lastCell] reaches the integer conversion: a NaN fails
+// g >= 0 and takes cell 0 (std::max(NaN, 0.0) would have kept it NaN).
 struct CellCoordinate {
   int cell;
   double t;  // position within the cell, 0..1
 };
 inline CellCoordinate cellCoordinate(double x, double cellsPerMetre, double lastCell) {
   double g = (x + kBoxHalfSize) * cellsPerMetre;
-  int cell = static_cast<int>(std::floor(std::min(std::max(g, 0.0), lastCell)));
+  const double clamped = !(g >= 0) ? 0.0 : g > lastCell ? lastCell : g;
+  int cell = static_cast<int>(std::floor(clamped));
   return {cell, g - cell};
 }
 // A node's force: its 3 doubles in the world's field, or 4 in the kernel's padded copy (the
@@ -323,7 +340,7 @@ void forceKernel(const Model& model, const double* p, const double* v, double* f
     walls[0] = bounds.upper.x > kBoxHalfSize || bounds.lower.x < -kBoxHalfSize;
     walls[1] = bounds.upper.y > kBoxHalfSize || bounds.lower.y < -kBoxHalfSize;
     walls[2] = bounds.upper.z > kBoxHalfSize || bounds.lower.z < -kBoxHalfSize;
-    plane = plane && mayCrossPlane(w.plane, model.planeSide, bounds);
+    plane = plane && mayCrossPlane(model.plane, model.planeSide, bounds);
   }
   if (walls[0] || walls[1] || walls[2] || plane) {
     // Some point may touch a wall or the plane: the contact forces of all points first (a
@@ -335,7 +352,7 @@ void forceKernel(const Model& model, const double* p, const double* v, double* f
       Vec3 f;
       for (int axis = 0; axis < 3; ++axis)
         if (walls[axis]) f += wallForceAlong(axis, pq, vq, w.kCollision, w.dCollision);
-      if (plane) f += planeForce(w.plane, model.planeSide, pq, vq, w.kCollision, w.dCollision);
+      if (plane) f += planeForce(model.plane, model.planeSide, pq, vq, w.kCollision, w.dCollision);
       store(contact, q, f);
     }
     for (int q = 0; q < kNumPoints; ++q)
@@ -383,12 +400,11 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
       for (int axis = 0; axis < 3; ++axis) model.paddedField[kPaddedNode * n + axis] = world.field.forces[3 * n + axis];
   }
   if (world.hasPlane) {
+    model.plane = normalisedPlane(world.plane);
     Vec3 centroid;
     for (int q = 0; q < kNumPoints; ++q) centroid += load(initial.p(), q);
     centroid = (1.0 / kNumPoints) * centroid;
-    const Plane& pl = world.plane;
-    double s = pl.a * centroid.x + pl.b * centroid.y + pl.c * centroid.z + pl.d;
-    model.planeSide = s >= 0 ? 1 : -1;
+    model.planeSide = planeValue(model.plane, centroid) >= 0 ? 1 : -1;
   }
   return model;
 }

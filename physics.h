@@ -89,11 +89,29 @@ struct Model {
   // A trilinear field's nodes, 4 doubles each (x, y, z, 0): the kernel's copy, for aligned
   // vector arithmetic.
   std::vector<double> paddedField;
+  // The world's inclined plane as the forces use it: normalisedPlane(world.plane).
+  Plane plane;
   // +1 or -1: the sign of a*x + b*y + c*z + d on the allowed side of the inclined plane, the
   // side holding the centroid of the initial positions (+1 when the centroid is on the plane).
   double planeSide = 1;
 };
 Model makeModel(const World& world, const State& initial, KernelChoice choice = KernelChoice::Specialised);
+
+// The same plane scaled by a power of two, so that its largest normal component lies in
+// [0.5, 1): the squared normal of a plane such as (1e-300, 0, 0, 0) or (1e200, 1e200, 1e200,
+// -1.5e200) neither underflows nor overflows. Scaling by a power of two is exact, so every
+// force of an ordinary plane stays bit for bit what the unscaled plane gives. A normal
+// component far smaller than the largest (by more than 2^1022) may round to zero: its effect
+// on the plane was below double's resolution anyway. d is not finite when the plane is beyond
+// the range of doubles (see planeProblem).
+Plane normalisedPlane(const Plane& plane);
+// Why the plane cannot be simulated, "" when it can: its normal is zero, or its normalised d
+// is not finite (the plane lies further from the origin than about 1e308 m).
+std::string planeProblem(const Plane& plane);
+// a*x + b*y + c*z + d at p: the one place it is computed (positive on the normal's side).
+inline double planeValue(const Plane& plane, Vec3 p) {
+  return dot(Vec3{plane.a, plane.b, plane.c}, p) + plane.d;
+}
 
 // Returns L/|L| and writes |L|; a zero vector gives a zero direction. The one place where
 // zero-length vectors are dealt with: every force term built on it exerts no force along a
@@ -135,10 +153,11 @@ inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, double k, double d) {
 Vec3 wallForce(Vec3 p, Vec3 v, double k, double d);
 // Collision spring to the projection on the plane when the point is strictly on the side of
 // sign -side (side = Model::planeSide). Computed for every point and selected, so that the
-// kernel's contact loop has no branch.
+// kernel's contact loop has no branch. The model passes its normalised plane (Model::plane),
+// whose |n|^2 neither overflows nor underflows.
 inline Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d) {
   Vec3 normal{plane.a, plane.b, plane.c};
-  double s = dot(normal, p) + plane.d;
+  double s = planeValue(plane, p);
   Vec3 L = (s / dot(normal, normal)) * normal;  // p minus its projection p - (s/|n|^2) n
   Vec3 f = collisionForce(L, v, k, d);
   const bool across = s * side < 0;

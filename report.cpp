@@ -48,6 +48,7 @@ struct Run {
 };
 
 // From the start to time T in steps of dt (the last one shorter if dt does not divide T).
+// runReport has checked that T/dt is a step count (stepsForTime) for every dt it passes.
 Run simulate(const Model& model, const State& start, Integrator integrator, double dt, double time,
              Tolerances tolerances = {}) {
   Run run;
@@ -210,6 +211,11 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   const State& start = file.state;
   const Model model = makeModel(world, start);
   const double T = options.time;
+  // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
+  if (!stepsForTime(T, world.dt)) {
+    std::fprintf(stderr, "jello: --report: %s\n", tooManyStepsMessage(T, world.dt).c_str());
+    return kExitBadInput;
+  }
   std::vector<Integrator> integrators = options.integrators;
   if (integrators.empty()) integrators.assign(std::begin(kAllIntegrators), std::end(kAllIntegrators));
 

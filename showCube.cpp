@@ -285,7 +285,7 @@ std::vector<Vec3> planeInBox(const Plane& plane) {
   const Vec3 n{plane.a, plane.b, plane.c};
   std::vector<Vec3> points;
   for (const auto& [p, q] : boxEdges()) {
-    double sp = dot(n, p) + plane.d, sq = dot(n, q) + plane.d;
+    double sp = planeValue(plane, p), sq = planeValue(plane, q);
     // sp == sq: the edge lies in the plane (its ends come from the edges that meet it there)
     // or parallel to it.
     if (sp * sq > 0 || sp == sq) continue;
@@ -426,7 +426,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera, con
   SurfaceColors colors = colorsFor(model, state, options.coloring);
   drawSurface(state, colors, options.wireframe);
   drawSprings(model, state, options);
-  if (model.world.hasPlane) drawPlane(model.world.plane);
+  if (model.world.hasPlane) drawPlane(model.plane);
   if (pull && pull->point >= 0) drawPull(state, *pull);
   if (options.coloring != Coloring::Plain) drawLegend(colors, width, height);
 }

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "guard.h"
+#include "headless.h"
 #include "integrators.h"
 #include "jacobian.h"
 #include "output.h"
@@ -78,6 +79,13 @@ double modeLimit(Integrator integrator, const Mode& mode) {
   return low;
 }
 
+// x rounded to an integer, clamped in floating point to long long's range first (NaN to 0): a
+// mode of an extreme world (omega^2 or damping near 1e308) never reaches an undefined conversion.
+long long roundedKey(double x) {
+  constexpr double kLimit = 9e18;
+  return std::isnan(x) ? 0 : std::llround(std::clamp(x, -kLimit, kLimit));
+}
+
 std::string number(double x) {
   if (std::isinf(x)) return "unbounded";
   char text[32];
@@ -91,11 +99,16 @@ Linearisation linearise(const Model& model, const State& state) {
   AccelerationJacobian jacobian;
   accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
   Eigen::MatrixXd stiffness(jacobian.dAdp), damping(jacobian.dAdv);
+  Linearisation out;
+  // The eigensolver on an inf or a NaN takes minutes to say nothing.
+  if (!stiffness.allFinite() || !damping.allFinite()) {
+    out.finite = false;
+    return out;
+  }
   stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness);
   const Eigen::MatrixXd& phi = solver.eigenvectors();
   const Eigen::MatrixXd dampingTimesPhi = damping * phi;
-  Linearisation out;
   out.lowestDamping = INFINITY;
   const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < phi.cols(); ++i) {
@@ -129,6 +142,10 @@ Linearisation lineariseAtRest(const World& world) {
     return Eigen::VectorXd(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly).eigenvalues());
   }();
   Linearisation out;
+  if (!std::isfinite(world.kElastic / world.mass) || !std::isfinite(world.dElastic / world.mass)) {
+    out.finite = false;
+    return out;
+  }
   out.lowestDamping = INFINITY;
   const double rigid = kRigid * unitLattice.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
@@ -150,7 +167,7 @@ double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
   // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
   std::map<std::pair<long long, long long>, Mode> distinct;
   for (const Mode& m : modes) {
-    auto key = std::pair{std::llround(std::log(m.omegaSquared) * 1e9), std::llround(m.damping * 1e6)};
+    auto key = std::pair{roundedKey(std::log(m.omegaSquared) * 1e9), roundedKey(m.damping * 1e6)};
     distinct.emplace(key, m);
   }
   double limit = kLargestStep;
@@ -177,20 +194,58 @@ State faceOnWallState() {
   return s;
 }
 
+std::string beyondDoubles(const World& world, const State& initial) {
+  double largestField = 0;
+  for (double f : world.field.forces) largestField = std::max(largestField, std::fabs(f));
+  const struct {
+    const char* name;
+    double value;
+  } parameters[] = {{"kElastic", world.kElastic},
+                    {"dElastic", world.dElastic},
+                    {"kCollision", world.kCollision},
+                    {"dCollision", world.dCollision},
+                    {"the largest field force", largestField}};
+  char text[200];
+  for (const auto& parameter : parameters) {
+    const double perKilogram = parameter.value / world.mass;
+    if (!std::isfinite(perKilogram * kHeadroom)) {
+      std::snprintf(
+          text, sizeof text, "%s / mass = %g / %g gives %g%s", parameter.name, parameter.value,
+          world.mass, perKilogram,
+          std::isfinite(perKilogram) ? ", too near double's largest number to take a step" : "");
+      return text;
+    }
+  }
+  for (int q = 0; q < kNumPoints; ++q) {
+    const Vec3 v = load(initial.v(), q);
+    if (!std::isfinite(dot(v, v) * kHeadroom)) {
+      std::snprintf(text, sizeof text,
+                    "the velocity of p%s, (%g, %g, %g) m/s: its square (kinetic energy) overflows",
+                    latticeLabel(q).c_str(), v.x, v.y, v.z);
+      return text;
+    }
+  }
+  return "";
+}
+
 double StabilityReport::critical(Integrator integrator) const {
   auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), integrator);
   if (at == kExplicitIntegrators.end()) return INFINITY;
+  if (!beyond.empty()) return NAN;
   return criticalRest[static_cast<std::size_t>(at - kExplicitIntegrators.begin())];
 }
 
 StabilityReport analyseStability(const World& world, const State& initial) {
   StabilityReport report;
+  report.beyond = beyondDoubles(world, initial);
+  if (!report.beyond.empty()) return report;  // nothing to analyse, in microseconds
   Model model = makeModel(world, initial);
   report.initial = linearise(model, initial);
   report.rest = lineariseAtRest(world);
   Linearisation wall = linearise(model, faceOnWallState());
   for (Integrator integrator : kExplicitIntegrators) {
-    report.criticalInitial.push_back(criticalStep(integrator, report.initial.modes));
+    report.criticalInitial.push_back(
+        report.initial.finite ? criticalStep(integrator, report.initial.modes) : NAN);
     report.criticalRest.push_back(criticalStep(integrator, report.rest.modes));
     report.criticalFaceOnWall.push_back(criticalStep(integrator, wall.modes));
   }
@@ -200,7 +255,9 @@ StabilityReport analyseStability(const World& world, const State& initial) {
 double predictedLimit(const World& world, const State& initial, Integrator integrator) {
   if (integrator == Integrator::Implicit) return INFINITY;
   Model model = makeModel(world, initial);
-  return std::min(criticalStep(integrator, linearise(model, initial).modes),
+  const Linearisation atStart = linearise(model, initial);
+  if (!atStart.finite) return NAN;
+  return std::min(criticalStep(integrator, atStart.modes),
                   criticalStep(integrator, linearise(model, faceOnWallState()).modes));
 }
 
@@ -210,25 +267,53 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
   std::snprintf(head, sizeof head, "diverged at step %lld (t=%.6g s): ", step, time);
   std::string out = head + reason + "; ";
   const char* name = integratorName(world.integrator);
+  // Checks of microseconds first: an eigen-analysis of such a world would say nothing, slowly.
+  if (findDivergedPoint(initial) >= 0) {
+    return out +
+           "the initial state is already beyond the guard (not finite, or more than 100 m from the "
+           "origin): no step will do; start the cube inside the box";
+  }
+  const std::string beyond = beyondDoubles(world, initial);
+  if (!beyond.empty()) {
+    return out + "the world's numbers are beyond what double arithmetic can simulate (" + beyond +
+           "): no step will do";
+  }
+  // The rest lattice's limit takes milliseconds; when it is already below what the analysis
+  // resolves, the springs alone rule every step out and the eigensolves are spared.
+  if (world.integrator != Integrator::Implicit &&
+      criticalStep(world.integrator, lineariseAtRest(world).modes) == 0)
+    return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
   double limit = predictedLimit(world, initial, world.integrator);
+  if (limit == 0) return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
+  if (std::isnan(limit)) {
+    return out +
+           "the forces' derivatives at the initial state are not finite numbers: the world's "
+           "numbers are beyond what double arithmetic can simulate, and no step will do";
+  }
   if (!std::isfinite(limit)) {
-    return out + "dt=" + number(world.dt) + " with " + name + ", which has no stability limit; try a smaller --dt";
+    return out + "dt=" + number(world.dt) + " with " + name + ", which has no stability limit; " +
+           (world.dt / 2 >= std::numeric_limits<double>::min()
+                ? "try a smaller --dt"
+                : "no step will do (dt is the smallest a double holds)");
   }
   if (world.dt > limit) {
-    return out + "dt=" + number(world.dt) + " exceeds " + name + "'s stable limit " + number(limit) +
-           " for this world; try --dt " + number(suggestedStep(limit)) + " or --integrator IMPLICIT";
+    return out + "dt=" + number(world.dt) + " exceeds " + name + "'s stable limit " +
+           limitText(limit) + " for this world; " + stepAdvice(limit);
   }
-  return out + "dt=" + number(world.dt) + " is within " + name + "'s predicted limit " + number(limit) +
-         " for this world, but the motion left it (a harder contact than a face on a wall?); try --dt " +
-         number(suggestedStep(world.dt)) + " or --integrator IMPLICIT";
+  return out + "dt=" + number(world.dt) + " is within " + name + "'s predicted limit " +
+         number(limit) +
+         " for this world, but the motion left it (a harder contact than a face on a wall?); " +
+         stepAdvice(world.dt);
 }
 
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+  // The smallest step tried is guess / 3: its runs must be a countable number of steps.
+  if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
   auto stable = [&](double dt) {
     State s = start;
     Stepper stepper(integrator);
     DivergenceGuard guard(model, start);
-    for (long i = 1, n = std::lround(time / dt); i <= n; ++i) {
+    for (long long i = 1, n = std::llround(time / dt); i <= n; ++i) {
       stepper.step(model, s, dt);
       if (!guard.check(s, i * dt).empty()) return false;
     }
@@ -343,7 +428,33 @@ double suggestedStep(double critical) {
   return decade;
 }
 
+std::string limitText(double limit) {
+  if (limit == 0) return "below " + number(kShortestResolvedStep);
+  if (std::isnan(limit)) return "none (not finite)";
+  return number(limit);
+}
+
+std::string stepAdvice(double critical) {
+  const double step = suggestedStep(critical);
+  // --dt takes any finite step > 0; a subnormal one has lost precision, and 0 is refused.
+  if (step >= std::numeric_limits<double>::min() && std::isfinite(step))
+    return "try --dt " + number(step) + " or --integrator IMPLICIT";
+  if (critical == 0) {
+    return "no step will do: the stable limit is below " + number(kShortestResolvedStep) +
+           " s (modes faster than about 1e18 rad/s); soften the world (kElastic, kCollision, mass) "
+           "or try --integrator IMPLICIT";
+  }
+  return "no step will do: 80% of " + number(critical) +
+         " s is below the smallest normal double; soften the world or try --integrator IMPLICIT";
+}
+
 std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  if (!r.beyond.empty()) {
+    return worldPath +
+           ": the world's numbers are beyond what double arithmetic can simulate: " + r.beyond +
+           "\n  its first step overflows, or leaves the guard's 100 m: no practical step of any "
+           "integrator will do, and no stability analysis was made\n";
+  }
   std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
   char line[256];
   std::snprintf(line, sizeof line,
@@ -354,7 +465,11 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
   std::snprintf(line, sizeof line,
                 "  at the initial state: highest frequency %.4g rad/s, damping rates %.3g to %.3g 1/s\n",
                 r.initial.highestFrequency, r.initial.lowestDamping, r.initial.highestDamping);
-  out += line;
+  out +=
+      r.initial.finite
+          ? line
+          : "  at the initial state: the forces' derivatives are not finite numbers (beyond double "
+            "arithmetic): no analysis\n";
   if (r.initial.growing) {
     out += "  " + std::to_string(r.initial.growing) +
            " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
@@ -364,8 +479,8 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
   for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
     Integrator integrator = kExplicitIntegrators[i];
     std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(integrator),
-                  number(r.criticalRest[i]).c_str(), number(r.criticalInitial[i]).c_str(),
-                  number(r.criticalFaceOnWall[i]).c_str());
+                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
+                  limitText(r.criticalFaceOnWall[i]).c_str());
     out += line;
   }
   out += "  IMPLICIT     unbounded (A-stable)\n\n";
@@ -373,23 +488,24 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
   Verdict verdict = verdictFor(world.dt, critical);
   out += "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
          verdictName(verdict);
-  if (std::isfinite(critical)) {
+  if (critical == 0) {
+    out += " (the limit is " + limitText(critical) + " s)";
+  } else if (std::isfinite(critical)) {
     std::snprintf(line, sizeof line, " (%.0f%% of the limit %s)", 100 * world.dt / critical, number(critical).c_str());
     out += line;
   }
   out += "\n";
-  if (verdict != Verdict::Stable && std::isfinite(critical)) {
-    out += "  try --dt " + number(suggestedStep(critical)) + " or --integrator IMPLICIT\n";
-  }
+  if (verdict != Verdict::Stable && std::isfinite(critical))
+    out += "  " + stepAdvice(critical) + "\n";
   auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
   if (at != kExplicitIntegrators.end()) {
     std::size_t i = static_cast<std::size_t>(at - kExplicitIntegrators.begin());
     if (world.dt > r.criticalInitial[i]) {
-      out += "  at the initial state the limit is " + number(r.criticalInitial[i]) +
+      out += "  at the initial state the limit is " + limitText(r.criticalInitial[i]) +
              " s: the start's deformation may destabilise this step for a while\n";
     }
     if (world.dt > r.criticalFaceOnWall[i]) {
-      out += "  while a face presses on a wall the limit is " + number(r.criticalFaceOnWall[i]) +
+      out += "  while a face presses on a wall the limit is " + limitText(r.criticalFaceOnWall[i]) +
              " s: contact may destabilise this step\n";
     }
   }
@@ -401,6 +517,12 @@ std::string stabilityJson(const std::string& worldPath, const World& world, cons
   j["world"] = worldPath;
   j["dt"] = world.dt;
   j["integrator"] = integratorName(world.integrator);
+  if (!r.beyond.empty()) {
+    j["beyond_double_arithmetic"] = r.beyond;
+    j["verdict"] = "beyond double arithmetic";
+    j["critical_dt"] = nullptr;
+    return j.dump(2) + "\n";
+  }
   j["modes"] = r.rest.modes.size();
   j["highest_frequency"] = r.rest.highestFrequency;
   j["damping_rates"] = {r.rest.lowestDamping, r.rest.highestDamping};

@@ -25,6 +25,9 @@ struct Mode {
 };
 
 struct Linearisation {
+  // False when the forces' derivatives at the state hold a number that is not finite: no
+  // eigen-analysis is run on such a matrix, and there are no modes.
+  bool finite = true;
   std::vector<Mode> modes;    // the oscillating ones, omega > 0
   int growing = 0;            // modes with negative stiffness (buckling): physical, not numerical
   double highestFrequency = 0;  // rad/s
@@ -41,8 +44,22 @@ Linearisation linearise(const Model& model, const State& state);
 // milliseconds after the first call.
 Linearisation lineariseAtRest(const World& world);
 
-// The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT.
+// The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT; 0 when
+// it is below kShortestResolvedStep (a mode faster than about 1e18 rad/s).
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes);
+// The shortest limit criticalStep resolves: 2^-60 s, 60 halvings of its largest step, 1 s.
+constexpr double kShortestResolvedStep = 8.673617379884035e-19;
+
+// Why the world's numbers are beyond what double arithmetic can simulate, "" when they are not:
+// a rate per kilogram (kElastic, dElastic, kCollision or dCollision over the mass, or the
+// largest field force over it) that is not finite with a factor kHeadroom to spare, or an
+// initial velocity whose square is not. Such a world's forces overflow at its first step
+// whatever the step; no eigen-analysis is run on it (its matrix would hold inf or NaN, on which
+// the eigensolver spends minutes for nothing). Takes microseconds.
+std::string beyondDoubles(const World& world, const State& initial);
+// The margin beyondDoubles keeps: stretches up to the guard's 200 m times the ~50 springs on a
+// point, and the sums of the integrators' stages, stay finite.
+constexpr double kHeadroom = 1e6;
 
 // The rest lattice, and the rest lattice with its x = min face pressed 1 mm into the wall
 // x = -2 (64 collision springs active), both at rest.
@@ -50,6 +67,9 @@ State restState();
 State faceOnWallState();
 
 struct StabilityReport {
+  // beyondDoubles of the world: when it is not empty, nothing else was analysed and the vectors
+  // below are empty.
+  std::string beyond;
   Linearisation rest, initial;
   std::vector<double> criticalRest, criticalInitial, criticalFaceOnWall;  // by kExplicitIntegrators
   // The headline limit: at rest, the state every damped world settles towards (a deformed start
@@ -71,7 +91,8 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
 std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& report);
 
 // The limit that matters when a run has diverged: the smaller of the limits at the initial
-// state and with a face on a wall (two eigensolves, a few seconds).
+// state and with a face on a wall (two eigensolves, a few seconds). NaN when the forces'
+// derivatives there are not finite (no analysis is run then).
 double predictedLimit(const World& world, const State& initial, Integrator integrator);
 
 // The one-line diagnosis of a diverged run, without the "jello: " prefix: where, why, and
@@ -82,7 +103,7 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
 
 // The largest dt at which real runs of `time` seconds from `start` stay plausible (the runtime
 // guard, every step), by bisection to 0.5% between a third and three times `guess`; NaN when
-// the limit is not in that range.
+// the limit is not in that range, or when runs at guess / 3 would take more than kMaxSteps.
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess);
 
 // jello --check --map DIR: kElastic swept against dt, the predicted and the observed (real
@@ -91,7 +112,14 @@ double observedLimit(const Model& model, const State& start, Integrator integrat
 int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
                       double time, bool overwrite);
 
+// A predicted limit in words, "%.3g" of it: criticalStep's 0 is "below 8.67e-19" (not zero),
+// NaN "none (not finite)".
+std::string limitText(double limit);
+
 // A step to suggest: 80% of the predicted limit, rounded down to 1, 2 or 5 times a power of 10.
 double suggestedStep(double critical);
+// "try --dt 5e-05 or --integrator IMPLICIT" for a limit, or, when suggestedStep would give a step
+// --dt refuses or a double cannot hold normally (0, subnormal), why no step will do.
+std::string stepAdvice(double critical);
 
 }  // namespace jello

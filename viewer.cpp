@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "graphics.h"
@@ -173,8 +174,11 @@ void advance() {
     // Simulated time follows the wall clock when the machine keeps up; otherwise it runs as
     // fast as it can, like the course's viewer.
     double behind = v.realTimeStartSim + seconds(v.realTimeStart, Clock::now()) - v.time();
-    count = static_cast<int>(std::floor(std::min(behind, kMaxCatchUpSeconds) / v.dt));
-    if (count <= 0) return;
+    // Compared before the conversion: a tiny dt (1e-300) asks for more steps than an int holds;
+    // the frame budget below stops the loop long before that many anyway.
+    const double wanted = std::floor(std::min(behind, kMaxCatchUpSeconds) / v.dt);
+    if (!(wanted >= 1)) return;
+    count = static_cast<int>(std::min(wanted, double(std::numeric_limits<int>::max())));
   }
   v.lastGood = v.state;
   const Pull* pull = v.pull.point >= 0 ? &v.pull : nullptr;

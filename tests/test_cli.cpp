@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 
@@ -73,6 +74,37 @@ TEST(Cli, TimeIsConvertedToSteps) {
   EXPECT_EQ(stepsForTime(1.0, 0.001), 1000);
   EXPECT_EQ(stepsForTime(0.3, 0.1), 3);
   EXPECT_EQ(stepsForTime(0.25, 0.1), 3);
+}
+
+TEST(Cli, ATimeOfMoreStepsThanARunMayTakeIsRefusedNamingTimeAndDt) {
+  // Before: steps=-9223372036854775807, exit 0, nothing simulated.
+  EXPECT_EQ(stepsForTime(1e9, 1e-3), 999999999000LL) << "kMaxSteps (less the slack) is allowed";
+  EXPECT_EQ(stepsForTime(1.1e9, 1e-3), std::nullopt);
+  EXPECT_EQ(stepsForTime(1e16, 1e-3), std::nullopt);
+  EXPECT_EQ(stepsForTime(1, 1e-300), std::nullopt);
+  EXPECT_EQ(stepsForTime(1e300, 1e-300), std::nullopt) << "T/dt = inf";
+  const std::string world = " '" + dataPath("jello.w") + "'";
+  for (const char* args : {"--headless --time 1e16", "--headless --dt 1e-300 --time 1",
+                           "--headless --time 1e300 --dt 1e-300"}) {
+    test::CommandResult r = runJello(args + world);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("--time"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--dt"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "") << args;
+  }
+  test::CommandResult r = runJello("--headless --time 1e16 --dt 0.001" + world);
+  EXPECT_EQ(r.err,
+            "jello: --time 1e+16 s at --dt 0.001 s would take 1e+19 steps, more than the 1e+12 a run may "
+            "take; choose a shorter --time or a larger --dt\n");
+  // --report runs the world's own dt to --time: refused before its folder is made.
+  std::string dir = test::makeTempDir();
+  r = runJello("--report '" + dir + "/report' --dt 1e-300" + world);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("--time 1 s at --dt 1e-300 s"), std::string::npos) << r.err;
+  EXPECT_EQ(::access((dir + "/report").c_str(), F_OK), -1);
+  test::removeTree(dir);
 }
 
 TEST(Cli, WithoutADisplayItSaysSoAndRunsHeadless) {

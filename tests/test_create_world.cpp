@@ -356,6 +356,20 @@ TEST(CreateWorld, AnInvalidWorldIsExplainedByTheOptionsThatMadeIt) {
     EXPECT_EQ(r.err, message) << options;
   }
   EXPECT_NE(::access((dir + "/out.w").c_str(), F_OK), 0) << "an invalid world was written";
+}
+
+TEST(CreateWorld, RefusesAPlaneBeyondTheRangeOfDoublesAndWritesOneWithATinyNormal) {
+  std::string dir = test::makeTempDir();
+  Result far = createWorld("--plane 1e-300 0 0 1e10 -o '" + dir + "/far.w'");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err,
+            "createWorld: --plane: the plane is too far from the origin to simulate: d is more "
+            "than 1e308 times the "
+            "largest of |a|, |b|, |c|, beyond the range of doubles\n");
+  EXPECT_EQ(test::readText(dir + "/far.w"), "");
+  Result tiny = createWorld("--plane 1e-300 0 0 -0.5e-300 -o '" + dir + "/tiny.w'");
+  EXPECT_EQ(tiny.status, 0) << tiny.err;
+  EXPECT_EQ(readWorldFile(dir + "/tiny.w").world.plane.a, 1e-300);
   test::removeTree(dir);
 }
 

@@ -6,6 +6,8 @@
 #include <random>
 #include <set>
 
+#include "guard.h"
+#include "jacobian.h"
 #include "physics.h"
 #include "test_support.h"
 
@@ -182,6 +184,82 @@ TEST(Plane, AllowedSideIsTheSideOfTheInitialCentroid) {
   EXPECT_EQ(makeModel(w, rest).planeSide, 1);
 }
 
+// The rest lattice with the plane x = 0.25 (or a multiple of it): the points of the face i = 0
+// and of i = 1 (x = 1/7) are across it, the centroid is not.
+Model latticeWithPlane(Plane plane) {
+  World w = test::springsOnlyWorld();
+  w.kCollision = 1000;
+  w.dCollision = 0.25;
+  w.hasPlane = true;
+  w.plane = plane;
+  return makeModel(w, test::restLattice());
+}
+
+std::vector<double> forcesOf(const Model& model, const State& state) {
+  std::vector<double> force(kNumCoords);
+  computeForces(model, state.p(), state.v(), force.data());
+  return force;
+}
+
+TEST(Plane, ANormalOfAnySizePushesBackWithTheForceOfTheUnitNormal) {
+  // Before, (1e-300, 0, 0, ...) gave |n|^2 = 0 and a NaN force; (1e200, ...) gave |n|^2 = inf
+  // and no force at all.
+  State rest = test::restLattice();
+  store(rest.v(), 0, {-1, 0.5, 0});
+  const std::vector<double> unit = forcesOf(latticeWithPlane({1, 0, 0, -0.25}), rest);
+  const Vec3 across = load(unit.data(), 0);
+  ASSERT_GT(across.x, 100) << "the unit plane pushes the point at x = 0 back to positive x";
+  for (double scale : {1e-300, 5e-320, 1e200, 1e300}) {
+    const Model model = latticeWithPlane({scale, 0, 0, -0.25 * scale});
+    EXPECT_TRUE(std::isfinite(model.plane.a * model.plane.a)) << scale;
+    EXPECT_EQ(pointsAcrossPlane(model, rest), 2 * kLatticeSize * kLatticeSize) << scale;
+    const std::vector<double> force = forcesOf(model, rest);
+    for (int c = 0; c < kNumCoords; ++c)
+      ASSERT_NEAR(force[c], unit[c], 1e-12 * std::fabs(unit[c])) << scale << " " << c;
+  }
+  // The plane x + y + z = 1.5 scaled by 1e200 (the issue's): the corner at the origin is across.
+  const std::vector<double> tilted = forcesOf(latticeWithPlane({1, 1, 1, -1.5}), rest);
+  const std::vector<double> huge =
+      forcesOf(latticeWithPlane({1e200, 1e200, 1e200, -1.5e200}), rest);
+  ASSERT_GT(load(tilted.data(), 0).x, 100);
+  for (int c = 0; c < kNumCoords; ++c)
+    ASSERT_NEAR(huge[c], tilted[c], 1e-12 * std::fabs(tilted[c])) << c;
+}
+
+TEST(Plane, APlaneScaledByAPowerOfTwoGivesBitIdenticalForcesJacobiansAndEnergies) {
+  State state = test::restLattice();
+  store(state.v(), 0, {-1, 0.5, 0});
+  const Model unit = latticeWithPlane({1, 0.5, 0.25, -0.6});
+  for (int exponent : {-1000, -3, 5, 900, 1020}) {  // every coefficient stays a normal double
+    const Model scaled = latticeWithPlane({std::ldexp(1, exponent), std::ldexp(0.5, exponent),
+                                           std::ldexp(0.25, exponent), std::ldexp(-0.6, exponent)});
+    EXPECT_EQ(forcesOf(scaled, state), forcesOf(unit, state)) << exponent;
+    AccelerationJacobian a, b;
+    accelerationJacobian(unit, state.p(), state.v(), nullptr, &a);
+    accelerationJacobian(scaled, state.p(), state.v(), nullptr, &b);
+    EXPECT_EQ(Eigen::MatrixXd(a.dAdp), Eigen::MatrixXd(b.dAdp)) << exponent;
+    EXPECT_EQ(mechanicalEnergy(scaled, state), mechanicalEnergy(unit, state)) << exponent;
+  }
+}
+
+TEST(Plane, APlaneBeyondTheRangeOfDoublesIsRefusedByTheReader) {
+  // d / a = 1e310: the plane is further than any double can say; a normal of 1e-300 alone is fine.
+  World w = test::springsOnlyWorld();
+  w.hasPlane = true;
+  w.plane = {1e-300, 0, 0, 1e10};
+  EXPECT_NE(planeProblem(w.plane), "");
+  EXPECT_EQ(planeProblem({1e-300, 0, 0, 1e-290}), "");
+  EXPECT_EQ(planeProblem({1e300, -1e300, 0, 1e-300}), "");
+  try {
+    parseWorld(formatWorld(w, test::restLattice()), "far.w");
+    FAIL() << "a plane 1e310 m away was read";
+  } catch (const WorldFileError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "far.w:6: the plane is too far from the origin to simulate: d is more than 1e308 "
+              "times the largest of |a|, |b|, |c|, beyond the range of doubles (plane d)");
+  }
+}
+
 ForceField gridOf(int r, const std::function<Vec3(Vec3)>& f) {
   ForceField field;
   field.resolution = r;
@@ -269,6 +347,31 @@ TEST(Field, NoFieldForceOutsideTheBox) {
   }
   ForceField none;
   EXPECT_EQ(fieldForce(none, {0, 0, 0}).x, 0);
+}
+
+TEST(Field, ANotANumberCoordinateTakesAValidCellAndReadsNoOtherMemory) {
+  // Before, std::max(NaN, 0.0) let the NaN through to the int conversion (undefined; INT_MIN
+  // here, an index far outside the field), in the kernel and in the Jacobian alike.
+  ForceField field = gridOf(5, [](Vec3 p) { return Vec3{p.y, -p.x, 1}; });
+  World w = test::springsOnlyWorld();
+  w.field = field;
+  State state = test::restLattice();
+  const int nan = pointIndex(7, 7, 7), far = pointIndex(0, 0, 0);
+  store(state.p(), nan, {NAN, 0.5, 0.5});
+  for (KernelChoice choice : {KernelChoice::Specialised, KernelChoice::General}) {
+    Model model = makeModel(w, state, choice);
+    for (Vec3 outside : {Vec3{0, 0, 0}, Vec3{-2.5, 0, 0}}) {  // the field's own path, then the contact path
+      store(state.p(), far, outside);
+      std::vector<double> force = forcesOf(model, state);
+      EXPECT_TRUE(std::isnan(force[coordIndex(nan, 0)]));
+      const Vec3 f = load(force.data(), pointIndex(0, 0, 1));  // no spring to the NaN point
+      EXPECT_TRUE(std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z));
+    }
+  }
+  for (Vec3 p : {Vec3{NAN, 0, 0}, Vec3{0, NAN, 0}, Vec3{0, 0, NAN}}) {
+    Mat3 J = fieldJacobian(field, p);
+    EXPECT_EQ(J, Mat3::Zero()) << "no gradient where there is no field";
+  }
 }
 
 TEST(Forces, TotalForceSumsEveryTermOnEveryPoint) {

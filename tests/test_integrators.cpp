@@ -290,6 +290,39 @@ TEST(Rk45, MeetsItsToleranceWithinAFactorOfTen) {
   }
 }
 
+TEST(Rk45, TheErrorNormNeitherOverflowsNorUnderflows) {
+  const double ordinary[] = {3, 4}, huge[] = {3e200, 4e200}, tiny[] = {3e-200, 4e-200};
+  EXPECT_EQ(rmsNorm(ordinary, 2), std::sqrt(12.5)) << "the usual formula, bit for bit";
+  EXPECT_NEAR(rmsNorm(huge, 2), std::sqrt(12.5) * 1e200, 1e-15 * 1e200);  // the squares overflow
+  EXPECT_NEAR(rmsNorm(tiny, 2), std::sqrt(12.5) * 1e-200, 1e-15 * 1e-200);  // ... or underflow
+  const double infinite[] = {1, INFINITY}, notANumber[] = {NAN, 1e300};
+  EXPECT_EQ(rmsNorm(infinite, 2), INFINITY);
+  EXPECT_TRUE(std::isnan(rmsNorm(notANumber, 2)));
+}
+
+TEST(Rk45, AToleranceBelowWhatDoublesResolveIsRejectedNeverAccepted) {
+  // rtol = atol = 1e-300: the scaled errors are about 1e290, their squares overflow. Before,
+  // the infinite norm was taken for a blown-up state and the step of 0.01 s accepted
+  // unchecked (the run diverged at step 2).
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  Model model = makeModel(f.world, f.state);
+  Stepper stepper(Integrator::RK45, {1e-300, 1e-300});
+  State s = f.state;
+  stepper.step(model, s, 0.01);
+  EXPECT_EQ(stepper.stats().steps, 0) << "no substep meets 1e-300";
+  // Shrunk by the controller's 0.2 from 0.01 s to the smallest substep, 3.6e-17 s, then given up.
+  EXPECT_EQ(stepper.stats().rejected, 22);
+  EXPECT_EQ(stepper.stats().failed, 1);
+  EXPECT_TRUE(std::isnan(s.y[0])) << "an abandoned step is never mistaken for a result";
+  // A tolerance double arithmetic can still resolve, 1e-14, is met in small substeps.
+  Stepper fine(Integrator::RK45, {1e-14, 1e-14});
+  State t = f.state;
+  fine.step(model, t, 0.01);
+  EXPECT_EQ(fine.stats().failed, 0);
+  EXPECT_GT(fine.stats().steps, 100);
+  EXPECT_EQ(findDivergedPoint(t), -1);
+}
+
 TEST(Conservation, SymplecticSchemesKeepTheEnergyOfAnUndampedCubeForTenSeconds) {
   World w = test::springsOnlyWorld();
   w.kElastic = 100;

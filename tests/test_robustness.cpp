@@ -273,6 +273,16 @@ TEST(MemoryLimits, ARunThatFitsItsLimitCanDumpItsWorld) {
   test::removeTree(dir);
 }
 
+TEST(Tolerances, RK45WithToleranceBeyondDoublesStopsAtOnceNamingThem) {
+  // Before: the error control switched off, the run diverged at step 2 and its diagnosis took
+  // minutes; now the first step is given up after 22 rejections.
+  test::CommandResult r = runOn(test::dataPath("rotate.w"), "--integrator RK45 --rtol 1e-300 --atol 1e-300 --dt 0.01");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("RK45 cannot meet --rtol 1e-300 --atol 1e-300: at step 1 (t=0.01 s)"), std::string::npos)
+      << r.err;
+}
+
 // The same world, integrator and options give the same bits, run to run: in one process (two
 // steppers) and in two processes (the dumps of two runs).
 TEST(Determinism, SameInputsGiveBitIdenticalResults) {

@@ -2,7 +2,9 @@
 // degenerate geometry.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "guard.h"
 #include "integrators.h"
@@ -84,6 +86,86 @@ TEST(Stability, VerdictsAndSuggestions) {
   EXPECT_EQ(suggestedStep(1e-3), 5e-4);
 }
 
+TEST(Stability, AnObservedLimitNeedingMoreStepsThanARunMayTakeIsNotAttempted) {
+  // Runs of 1000 s at a third of 3e-10 s would be 1e13 steps: before, the map started them.
+  WorldFile f = readWorldFile(test::dataPath("jello.w"));
+  Model model = makeModel(f.world, f.state);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_TRUE(std::isnan(observedLimit(model, f.state, Integrator::Euler, 1000, 3e-10)));
+  EXPECT_TRUE(std::isnan(observedLimit(model, f.state, Integrator::Euler, 0.1, 0)));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(Stability, NoStepIsAdvisedThatDtWouldRefuse) {
+  EXPECT_EQ(stepAdvice(1e-3), "try --dt 0.0005 or --integrator IMPLICIT");
+  for (double limit : {0.0, 1e-320, 5e-324}) {  // below what the analysis resolves; subnormal
+    const std::string advice = stepAdvice(limit);
+    EXPECT_EQ(advice.find("--dt"), std::string::npos) << advice;
+    EXPECT_EQ(advice.rfind("no step will do: ", 0), 0u) << advice;
+  }
+  EXPECT_EQ(limitText(0), "below 8.67e-19");
+}
+
+TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
+  // Before, kElastic 1e308 took over two minutes (an eigensolver on inf and NaN) to advise
+  // "try --dt 0"; a velocity of 1e308, seconds to blame the step.
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  World stiff = f.world;
+  stiff.kElastic = 1e308;
+  State fast = f.state;
+  store(fast.v(), pointIndex(1, 2, 3), {0, 1e308, 0});
+  const struct {
+    World world;
+    State state;
+    const char* says;
+  } cases[] = {
+      {stiff, f.state, "kElastic / mass = 1e+308 / 0.001953 gives inf"},
+      {f.world, fast,
+       "the velocity of p[1][2][3], (0, 1e+308, 0) m/s: its square (kinetic energy) overflows"}};
+  for (const auto& c : cases) {
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(beyondDoubles(c.world, c.state), c.says);
+    const std::string message =
+        divergenceMessage(c.world, c.state, 1, 0.001, "point p[0][0][0] is no longer finite");
+    EXPECT_NE(message.find("beyond what double arithmetic can simulate (" + std::string(c.says) +
+                           "): no step will do"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("--dt"), std::string::npos) << message;
+    const StabilityReport report = analyseStability(c.world, c.state);
+    EXPECT_EQ(report.beyond, c.says);
+    const std::string text = stabilityText("w.w", c.world, report);
+    EXPECT_EQ(text.find("rad/s"), std::string::npos) << text;
+    EXPECT_NE(text.find("no practical step of any integrator will do"), std::string::npos) << text;
+    EXPECT_EQ(
+        nlohmann::json::parse(stabilityJson("w.w", c.world, report))["beyond_double_arithmetic"],
+        c.says);
+    EXPECT_LT(secondsSince(start), 0.1);
+  }
+  // One decade inside the range: the rates are finite, the springs too fast for any step. The
+  // diagnosis answers from the rest lattice (milliseconds once it is known) and names no --dt.
+  stiff.kElastic = 1e290;
+  EXPECT_EQ(beyondDoubles(stiff, f.state), "");
+  lineariseAtRest(stiff);  // the unit lattice's eigensolve, once per process
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message =
+      divergenceMessage(stiff, f.state, 1, 0.001, "point p[0][0][0] is no longer finite");
+  EXPECT_LT(secondsSince(start), 0.1);
+  EXPECT_NE(
+      message.find("dt=0.001 with RK4: no step will do: the stable limit is below 8.67e-19 s"),
+      std::string::npos)
+      << message;
+  // A matrix with an inf is never handed to the eigensolver.
+  stiff.kElastic = 1e308;
+  Model model = makeModel(stiff, f.state);
+  EXPECT_FALSE(linearise(model, f.state).finite);
+  EXPECT_TRUE(std::isnan(predictedLimit(stiff, f.state, Integrator::RK4)));
+}
+
 TEST(Guard, PassesPhysicsAndCatchesABlowUp) {
   WorldFile f = readWorldFile(test::dataPath("gravity.w"));  // a field that does work
   Model model = makeModel(f.world, f.state);
@@ -139,6 +221,45 @@ TEST(Degenerate, GeometryGivesNoNaN) {
 
 namespace jello {
 namespace {
+
+// rotate.w with one number of its text changed: line `line` (1-based) becomes `text`.
+std::string rotateWith(const std::string& dir, int line, const std::string& text) {
+  std::istringstream in(test::readText(test::dataPath("rotate.w")));
+  std::string out;
+  int number = 0;
+  for (std::string l; std::getline(in, l);) out += (++number == line ? text : l) + "\n";
+  const std::string path = dir + "/extreme.w";
+  test::writeText(path, out);
+  return path;
+}
+
+TEST(CheckCommand, AnswersAtOnceOnAWorldBeyondDoubles) {
+  // Before: 142 s, "inf rad/s" and every limit 0; a run's diagnosis, 138 s and "try --dt 0".
+  std::string dir = test::makeTempDir();
+  const std::string world = rotateWith(dir, 3, "1e308 0.25 1000 0.25");
+  const auto start = std::chrono::steady_clock::now();
+  test::CommandResult check = test::runJello("--check '" + world + "'", "", "timeout 20");
+  EXPECT_EQ(check.status, 0) << check.err;
+  EXPECT_EQ(
+      check.out,
+      world +
+          ": the world's numbers are beyond what double arithmetic can simulate: kElastic / mass = "
+          "1e+308 / 0.001953 gives inf\n  its first step overflows, or leaves the guard's 100 m: "
+          "no "
+          "practical step of any integrator will do, and no stability analysis was made\n");
+  test::CommandResult run =
+      test::runJello("--headless --steps 5 '" + world + "'", "", "timeout 20");
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_NE(run.err.find("diverged at step 1 (t=0.001 s): point p[0][0][0] is no longer finite; "
+                         "the world's numbers "
+                         "are beyond what double arithmetic can simulate (kElastic / mass = 1e+308 "
+                         "/ 0.001953 gives "
+                         "inf): no step will do\n"),
+            std::string::npos)
+      << run.err;
+  EXPECT_LT(secondsSince(start), 5) << "both answers together";
+  test::removeTree(dir);
+}
 
 TEST(CheckCommand, TextJsonAndMap) {
   test::CommandResult text = test::runJello("--check '" + test::dataPath("rotate.w") + "'");

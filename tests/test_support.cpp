@@ -188,6 +188,7 @@ std::vector<MalformedCase> malformedCases() {
       {"plane_flag_2", with(5, "2"), 5, "incPlanePresent"},
       {"plane_flag_word", with(5, "yes"), 5, "incPlanePresent"},
       {"zero_plane_normal", with(6, "0 0 0 4"), 6, "plane a b c"},
+      {"plane_beyond_the_range_of_doubles", with(6, "1e-300 0 0 1e10"), 6, "plane d"},
       {"short_plane", with(6, "1 -1 -1"), 6, "plane a b c d"},
       {"negative_resolution", with(7, "-1"), 7, "resolution"},
       {"huge_resolution", with(7, "100000"), 7, "resolution"},
