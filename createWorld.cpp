@@ -77,35 +77,6 @@ void warnAbout(jello::World& world, const jello::State& state) {
   world.field = std::move(field);
 }
 
-// Why `path` cannot take createWorld's output, or "" when it can: checked before any work (a field
-// to build, a world to read), so that the refusal comes first.
-std::string whyNotWritable(const std::string& path, bool force) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) == 0) {
-    if (S_ISDIR(info.st_mode)) return "is a directory";
-    if (!force) return "already exists; add --force to replace it";
-  }
-  const std::size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "."
-                          : slash == 0               ? "/"
-                                                     : path.substr(0, slash);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.empty()) return "names a folder, not a file";
-  if (::stat(dir.c_str(), &info) != 0)
-    return "cannot write into " + dir + ": " + std::strerror(errno);
-  if (!S_ISDIR(info.st_mode)) return "cannot write into " + dir + ": it is not a folder";
-  if (::access(dir.c_str(), W_OK) != 0)
-    return "cannot write into " + dir + ": " + std::strerror(errno);
-  long nameMax = ::pathconf(dir.c_str(), _PC_NAME_MAX);
-  if (nameMax <= 0) nameMax = NAME_MAX;
-  if (name.size() > static_cast<std::size_t>(nameMax)) {
-    return "the name is " + std::to_string(name.size()) + " bytes long, more than the " +
-           std::to_string(nameMax) + " its folder's file system allows";
-  }
-  if (path.size() >= PATH_MAX)
-    return "the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes";
-  return {};
-}
 
 // The options given that shape `part` of a world, in the order of --help: what a message about
 // that part names. A --preset or a --from world is valid by itself, so neither is named.
@@ -261,8 +232,10 @@ static int createWorld(int argc, char** argv) {
       return kExitOk;
     }
     if (output.empty()) return fail("say where to write the world: -o FILE (see createWorld --help)");
-    if (std::string why = whyNotWritable(output, force); !why.empty())
-      return fail(output + ": " + why);
+    // Checked before any work (a field to build, a world to read), so that the refusal comes first.
+    if (std::string why = jello::whyNotWritable(output, force ? jello::Existing::Replace : jello::Existing::Refuse);
+        !why.empty())
+      return fail(output + ": " + why + (why == "already exists" ? "; add --force to replace it" : ""));
 
     jello::setWorldUse(jello::WorldUse::Create);
     jello::Recipe recipe = jello::defaultRecipe();

@@ -78,7 +78,7 @@ std::string whyNotReplaceable(const std::string& path, Existing existing, struct
     return {};
   }
   if (S_ISLNK(found->st_mode)) return "is a symbolic link; name the file itself";
-  if (S_ISDIR(found->st_mode)) return "is a folder";
+  if (S_ISDIR(found->st_mode)) return "is a directory";
   if (!S_ISREG(found->st_mode)) return "is not a regular file (a device, FIFO or socket); it is never replaced";
   if (existing == Existing::Refuse) return "already exists";
   if ((found->st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0) return "is read-only; it is not replaced";
@@ -114,14 +114,19 @@ std::string whyNotWritable(const std::string& path, Existing existing) {
   struct stat found {};
   std::string why = whyNotReplaceable(path, existing, &found);
   if (!why.empty()) return why;
-  const std::string dir = folderOf(path);
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = folderOf(path), name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (name.empty()) return "names a folder, not a file";
   struct stat info {};
-  if (::stat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) return "no folder " + dir;
+  if (::stat(dir.c_str(), &info) != 0) return "cannot write into " + dir + ": " + std::strerror(errno);
+  if (!S_ISDIR(info.st_mode)) return "cannot write into " + dir + ": it is not a folder";
   if (::access(dir.c_str(), W_OK) != 0) return "cannot write into " + dir + ": " + std::strerror(errno);
-  const std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
   long longest = ::pathconf(dir.c_str(), _PC_NAME_MAX);
-  if (longest > 0 && name.size() > static_cast<std::size_t>(longest))
-    return "the name is longer than the " + std::to_string(longest) + " bytes a file name may have here";
+  if (longest <= 0) longest = NAME_MAX;
+  if (name.size() > static_cast<std::size_t>(longest))
+    return "the name is " + std::to_string(name.size()) + " bytes long, more than the " + std::to_string(longest) +
+           " its folder's file system allows";
+  if (path.size() >= PATH_MAX) return "the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes";
   return {};
 }
 

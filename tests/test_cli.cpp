@@ -203,7 +203,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
                       UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open", true},
                       UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
-                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a folder"},
+                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
                       UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& info) { return std::string(info.param.name); });
 

@@ -116,7 +116,7 @@ TEST(DumpRule, NeverReplacesADeviceALinkAFolderAReadOnlyFileOrTheWorldItself) {
   const bool haveDevice = ::mknod(device.c_str(), S_IFCHR | 0666, ::makedev(1, 7)) == 0;
   std::vector<std::pair<std::string, std::string>> cases = {{dir + "/link.w", "symbolic link"},
                                                        {dir + "/fifo.w", "not a regular file"},
-                                                       {dir, "is a folder"},
+                                                       {dir, "is a directory"},
                                                        {readOnly, "read-only"},
                                                        {world, "the world being run"},
                                                        {dir + "/./w.w", "the world being run"}};
@@ -164,7 +164,7 @@ TEST(DumpRule, ALongValidNameIsWrittenAndATooLongOneIsRefusedBeforeTheRun) {
   r = dump(dir + "/" + tooLong, test::dataPath("still.w"));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "") << "refused before the run";
-  EXPECT_NE(r.err.find("longer than"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bytes long, more than the 255 its folder's file system allows"), std::string::npos) << r.err;
   test::removeTree(dir);
 }
 
