@@ -197,8 +197,10 @@ std::string describeWorld(const World& w, const State& state) {
   if (std::string beyond = beyondDoubles(w, state); !beyond.empty()) {
     out += "stability   beyond what double arithmetic can simulate: " + beyond + "\n";
   } else if (std::isfinite(limit)) {
-    out += format("stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
-                  integratorName(w.integrator), w.dt, verdictName(verdictFor(w.dt, limit)), 100 * w.dt / limit, limit);
+    out += format(
+        "stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
+        integratorName(w.integrator), w.dt,
+        verdictName(verdictFor(w.dt, limit, stableFraction(w, state))), 100 * w.dt / limit, limit);
   } else {
     out += format("stability   %s: no step limit\n", integratorName(w.integrator));
   }

@@ -66,24 +66,53 @@ constexpr double kHeadroom = 1e6;
 State restState();
 State faceOnWallState();
 
+// The verdict's margin. The limits are those of small motions about a fixed state; a cube's own
+// large motion modulates its springs' stiffness, and a fast mode with little damping can be
+// pumped by that modulation (parametric resonance) at steps the frozen analysis calls stable:
+// undamped rotate.w with its corner pulled out by 0.17 or 0.35 m diverges under SYMPLECTIC at
+// 0.91 or 0.82 of the predicted limit, stretched by 30% at 0.58 of it, while the highest
+// frequency along those motions stays within 1% of the prediction's. So a step is called
+// stable below kStableFraction of the limit, and, for a cube whose fast modes are lightly
+// damped and which starts deformed, only below kLargeMotionStableFraction of it; above that it
+// is marginal.
+constexpr double kStableFraction = 0.8;
+constexpr double kLargeMotionStableFraction = 0.5;
+// Lightly damped: the fastest mode at rest loses less than this fraction of its amplitude per
+// radian (damping rate / frequency). Deformed: some spring strained by more than kDeformed.
+constexpr double kLightDamping = 0.02;
+constexpr double kDeformed = 0.01;
+
+// The largest |length - rest| / rest over the springs at `state`.
+double largestStrain(const State& state);
+// kLargeMotionStableFraction for a lightly damped world starting deformed, kStableFraction
+// otherwise (a lattice eigensolve the first time, then microseconds).
+double stableFraction(const World& world, const State& initial);
+
 struct StabilityReport {
   // beyondDoubles of the world: when it is not empty, nothing else was analysed and the vectors
   // below are empty.
   std::string beyond;
   Linearisation rest, initial;
   std::vector<double> criticalRest, criticalInitial, criticalFaceOnWall;  // by kExplicitIntegrators
+  double largestStrain = 0;                                               // at the initial state
+  double stableFraction = kStableFraction;  // of verdictLimit, see above
   // The headline limit: at rest, the state every damped world settles towards (a deformed start
   // or a contact may lower it for a while: see criticalInitial, criticalFaceOnWall). Infinite
   // for IMPLICIT.
   double critical(Integrator integrator) const;
+  // The limit the verdict compares the world's dt with: the smaller of those at rest and at the
+  // initial state.
+  double verdictLimit(Integrator integrator) const;
 };
 
 // The whole analysis of a world (about three seconds).
 StabilityReport analyseStability(const World& world, const State& initial);
 
 enum class Verdict { Stable, NearLimit, Unstable };
-// Stable below 80% of the limit, NearLimit within 20% of it, Unstable beyond it.
-Verdict verdictFor(double dt, double critical);
+// Stable below `stableFraction` of the limit, NearLimit (marginal) from there to the limit,
+// Unstable beyond it.
+Verdict verdictFor(double dt, double critical, double stableFraction = kStableFraction);
+// "stable", "marginal" or "unstable".
 const char* verdictName(Verdict verdict);
 
 // The human report of jello --check, and its JSON.
@@ -116,10 +145,11 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
 // NaN "none (not finite)".
 std::string limitText(double limit);
 
-// A step to suggest: 80% of the predicted limit, rounded down to 1, 2 or 5 times a power of 10.
-double suggestedStep(double critical);
+// A step to suggest: `stableFraction` of the predicted limit, rounded down to 1, 2 or 5 times a
+// power of 10.
+double suggestedStep(double critical, double stableFraction = kStableFraction);
 // "try --dt 5e-05 or --integrator IMPLICIT" for a limit, or, when suggestedStep would give a step
 // --dt refuses or a double cannot hold normally (0, subnormal), why no step will do.
-std::string stepAdvice(double critical);
+std::string stepAdvice(double critical, double stableFraction = kStableFraction);
 
 }  // namespace jello

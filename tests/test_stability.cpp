@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "guard.h"
@@ -84,6 +85,10 @@ TEST(Stability, VerdictsAndSuggestions) {
   EXPECT_EQ(verdictFor(1.2, 1), Verdict::Unstable);
   EXPECT_EQ(suggestedStep(6.6e-5), 5e-5);
   EXPECT_EQ(suggestedStep(1e-3), 5e-4);
+  EXPECT_EQ(verdictFor(0.6, 1, kLargeMotionStableFraction), Verdict::NearLimit);
+  EXPECT_EQ(verdictFor(0.45, 1, kLargeMotionStableFraction), Verdict::Stable);
+  EXPECT_EQ(suggestedStep(1e-3, kLargeMotionStableFraction), 5e-4);
+  EXPECT_EQ(std::string(verdictName(Verdict::NearLimit)), "marginal");
 }
 
 TEST(Stability, AnObservedLimitNeedingMoreStepsThanARunMayTakeIsNotAttempted) {
@@ -164,6 +169,77 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
   Model model = makeModel(stiff, f.state);
   EXPECT_FALSE(linearise(model, f.state).finite);
   EXPECT_TRUE(std::isnan(predictedLimit(stiff, f.state, Integrator::RK4)));
+}
+
+// rotate.w without damping, its state moved by `deform`, integrated by SYMPLECTIC at dt.
+WorldFile undampedRotate(double dt, const std::function<void(State&)>& deform) {
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  f.world.dElastic = 0;
+  f.world.integrator = Integrator::Symplectic;
+  f.world.dt = dt;
+  deform(f.state);
+  return f;
+}
+
+// Whether runs of `time` seconds at dt keep the runtime guard quiet.
+bool runsClean(const WorldFile& f, double dt, double time) {
+  Model model = makeModel(f.world, f.state);
+  State s = f.state;
+  Stepper stepper(f.world.integrator);
+  DivergenceGuard guard(model, f.state);
+  for (long long i = 1; i * dt <= time; ++i) {
+    stepper.step(model, s, dt);
+    if (!guard.check(s, i * dt).empty()) return false;
+  }
+  return true;
+}
+
+TEST(Stability, AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit) {
+  // Stretched by 30% about its centre: the initial state's limit (0.000867 s) is below the one
+  // at rest (0.000971 s), and the cube's own breathing pumps its fast modes: real runs diverge
+  // at 0.58 of the prediction. Before, dt = 0.00077 (79% of the limit at rest) was "stable".
+  WorldFile stretched = undampedRotate(0.00077, [](State& s) {
+    Vec3 centre;
+    for (int q = 0; q < kNumPoints; ++q) centre += (1.0 / kNumPoints) * load(s.p(), q);
+    for (int q = 0; q < kNumPoints; ++q) store(s.p(), q, centre + 1.3 * (load(s.p(), q) - centre));
+  });
+  StabilityReport report = analyseStability(stretched.world, stretched.state);
+  EXPECT_NEAR(report.critical(Integrator::Symplectic), 0.000971, 5e-7)
+      << "the headline limit is unchanged";
+  EXPECT_NEAR(report.verdictLimit(Integrator::Symplectic), 0.000867, 5e-7);
+  EXPECT_NEAR(report.largestStrain, 0.3, 1e-4);  // the file's six decimals
+  EXPECT_EQ(report.stableFraction, kLargeMotionStableFraction);
+  std::string text = stabilityText("w", stretched.world, report);
+  EXPECT_NE(text.find("the world's dt 0.00077 with SYMPLECTIC: marginal (89% of the limit 0.000867 "
+                      "at the initial "
+                      "state)\n  marginal: the cube starts deformed (a spring strained by 30%)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("try --dt 0.0002 or --integrator IMPLICIT"), std::string::npos) << text;
+  EXPECT_EQ(nlohmann::json::parse(stabilityJson("w", stretched.world, report))["verdict"],
+            "marginal");
+  EXPECT_FALSE(runsClean(stretched, 0.00077, 0.2)) << "the marginal step does diverge";
+  EXPECT_TRUE(runsClean(stretched, 0.0004, 1)) << "below half the limit, as the verdict says";
+
+  // The case: a corner pulled out by 1/7 m along each axis, SYMPLECTIC at 0.0009 s (93% of
+  // 0.000971): marginal, with the reason; the real run diverges within 0.1 s.
+  WorldFile corner = undampedRotate(0.0009, [](State& s) {
+    const int q = pointIndex(7, 7, 7);
+    store(s.p(), q, load(s.p(), q) + Vec3{1.0 / 7, 1.0 / 7, 1.0 / 7});
+  });
+  report = analyseStability(corner.world, corner.state);
+  text = stabilityText("w", corner.world, report);
+  EXPECT_NE(text.find("the world's dt 0.0009 with SYMPLECTIC: marginal (93% of the limit "
+                      "0.000971)\n  marginal: the "
+                      "cube starts deformed"),
+            std::string::npos)
+      << text;
+  EXPECT_FALSE(runsClean(corner, 0.0009, 0.1));
+  // Damped, or starting undeformed, the margin stays 20%.
+  EXPECT_EQ(stableFraction(readWorldFile(test::dataPath("rotate.w")).world, corner.state),
+            kStableFraction);
+  EXPECT_EQ(stableFraction(corner.world, readWorldFile(test::dataPath("rotate.w")).state),
+            kStableFraction);
 }
 
 TEST(Guard, PassesPhysicsAndCatchesABlowUp) {
