@@ -19,6 +19,7 @@
 
 #include "commandline.h"
 #include "output.h"
+#include "plot.h"
 #include "stability.h"
 #include "test_support.h"
 
@@ -47,25 +48,39 @@ off_t sizeOf(const std::string& path) {
 
 // ---- Item 1: no name reaches a script -----------------------------------------------------
 
+const std::vector<std::string> kHostileNames = {"x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w",
+                                                "$(touch PWNED).w", "new\nline'\n system 'touch PWNED.w",
+                                                "\xff\xfe not utf-8 \\ '.w"};
+
+// The whole path once (one report is seconds of work, more under the sanitizers), with every
+// hostile kind of character in one name.
 TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
   if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
-  const std::vector<std::string> names = {"x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w",
-                                          "$(touch PWNED).w", "new\nline'\n system 'touch PWNED.w",
-                                          "\xff\xfe not utf-8 \\ '.w"};
-  for (const std::string& name : names) {
+  const std::string name = "x'; system 'touch PWNED'; print '`touch PWNED`$(touch PWNED)\n\xff.w";
+  std::string dir = test::makeTempDir();
+  test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
+  test::CommandResult r =
+      test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, {dir});
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> expected = {name, "rep"};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(entries(dir), expected) << "something ran";
+  EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000);
+  // The script stays valid gnuplot and draws the same picture again, running nothing.
+  EXPECT_EQ(test::runShell("cd '" + dir + "/rep' && gnuplot report.gp 2>&1").out, "");
+  EXPECT_EQ(entries(dir + "/rep"), (std::vector<std::string>{"report.csv", "report.gp", "report.md", "report.png"}));
+  test::removeTree(dir);
+}
+
+// Each kind alone, through the same drawing path as the report's, in a script of a few lines.
+TEST(HostileNames, EachHostileTitleIsDrawnAndRunsNothing) {
+  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  for (const std::string& name : kHostileNames) {
     std::string dir = test::makeTempDir();
-    test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
-    test::CommandResult r =
-        test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, {dir});
-    EXPECT_EQ(r.status, 0) << r.err;
-    std::vector<std::string> expected = {name, "rep"};
-    std::sort(expected.begin(), expected.end());
-    EXPECT_EQ(entries(dir), expected) << "something ran: " << name;
-    EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000) << name;
-    // The script stays valid gnuplot and draws the same picture again, running nothing.
-    EXPECT_EQ(test::runShell("cd '" + dir + "/rep' && gnuplot report.gp 2>&1").out, "");
-    EXPECT_EQ(entries(dir + "/rep"),
-              (std::vector<std::string>{"report.csv", "report.gp", "report.md", "report.png"}));
+    test::writeText(dir + "/t.gp", "set terminal pngcairo size 200,100\nif (!exists(\"png\")) png = 't.png'\n"
+                                   "set output png\nset title " + gnuplotString(name) + "\nplot x\n");
+    EXPECT_EQ(drawWithGnuplot(dir, "t.gp", "t.png", Existing::Refuse), "") << name;
+    EXPECT_EQ(entries(dir), (std::vector<std::string>{"t.gp", "t.png"})) << "something ran: " << name;
     test::removeTree(dir);
   }
 }
