@@ -21,10 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr Integrator kBenchIntegrators[] = {Integrator::Euler,  Integrator::Midpoint, Integrator::RK4,
-                                            Integrator::Symplectic, Integrator::Verlet, Integrator::RK45,
-                                            Integrator::Implicit};
-
 using Work = std::function<void(long long)>;
 
 // Seconds per call of each work(count), the medians over `repeats` runs of each. The works
@@ -156,9 +152,11 @@ int runBench(const RunOptions& run) {
   std::printf("%-22s %11.2f us %11.2f us %8.2fx\n", "force evaluation", forcesS * 1e6, forcesG * 1e6, forcesG / forcesS);
   std::printf("%-22s %14.0f %14.0f\n", "evaluations per second", 1 / forcesS, 1 / forcesG);
   std::printf("\n%-22s %14s %14s %9s  %s\n", "us per step", "specialised", "general", "speed-up", "evaluations/step");
-  for (Integrator integrator : kBenchIntegrators) {
-    // IMPLICIT takes milliseconds a step: a few steps tell.
-    long long steps = fixed ? fixed : integrator == Integrator::Implicit ? 3 : 0;
+  for (const IntegratorInfo& row : integratorTable()) {
+    const Integrator integrator = row.integrator;
+    // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
+    // steps tell.
+    long long steps = fixed ? fixed : row.needsJacobian ? 3 : 0;
     // A diverging run would time arithmetic on huge numbers: an integrator that diverges at the
     // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
     constexpr int kHalvings = 12;

@@ -18,6 +18,7 @@
 #include <system_error>
 #include <thread>
 
+#include "integrators.h"
 #include "physics.h"
 #include "output.h"
 #include "plot.h"
@@ -36,9 +37,6 @@ constexpr int kSearchHalvings = 24;
 constexpr double kSameEnd = 0.01;  // m RMS: two runs that end this close agree
 constexpr double kRepeatBelowSeconds = 0.25;  // runs shorter than this are timed three times
 constexpr double kRk45Tolerances[kSweepLength] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
-constexpr Integrator kAllIntegrators[] = {Integrator::Euler,  Integrator::Symplectic, Integrator::Midpoint,
-                                          Integrator::Verlet, Integrator::RK4,        Integrator::RK45,
-                                          Integrator::Implicit};
 
 struct Run {
   State end;
@@ -217,7 +215,8 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     return kExitBadInput;
   }
   std::vector<Integrator> integrators = options.integrators;
-  if (integrators.empty()) integrators.assign(std::begin(kAllIntegrators), std::end(kAllIntegrators));
+  if (integrators.empty())
+    for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
 
   // Claim the folder and check every file before the long work, not after it.
   FolderClaim claim;

@@ -25,8 +25,7 @@
 
 namespace jello {
 
-const std::vector<Integrator> kExplicitIntegrators = {Integrator::Euler,  Integrator::Symplectic, Integrator::Midpoint,
-                                                      Integrator::Verlet, Integrator::RK4,        Integrator::RK45};
+const std::vector<Integrator> kExplicitIntegrators = integratorsWithStepLimit();
 
 namespace {
 
@@ -163,7 +162,7 @@ Linearisation lineariseAtRest(const World& world) {
 }
 
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
-  if (integrator == Integrator::Implicit) return INFINITY;
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
   std::map<std::pair<long long, long long>, Mode> distinct;
   for (const Mode& m : modes) {
@@ -253,7 +252,7 @@ StabilityReport analyseStability(const World& world, const State& initial) {
 }
 
 double predictedLimit(const World& world, const State& initial, Integrator integrator) {
-  if (integrator == Integrator::Implicit) return INFINITY;
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   Model model = makeModel(world, initial);
   const Linearisation atStart = linearise(model, initial);
   if (!atStart.finite) return NAN;
@@ -280,7 +279,7 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
   }
   // The rest lattice's limit takes milliseconds; when it is already below what the analysis
   // resolves, the springs alone rule every step out and the eigensolves are spared.
-  if (world.integrator != Integrator::Implicit &&
+  if (integratorInfo(world.integrator).boundedStableStep &&
       criticalStep(world.integrator, lineariseAtRest(world).modes) == 0)
     return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
   double limit = predictedLimit(world, initial, world.integrator);
@@ -483,7 +482,12 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
                   limitText(r.criticalFaceOnWall[i]).c_str());
     out += line;
   }
-  out += "  IMPLICIT     unbounded (A-stable)\n\n";
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.boundedStableStep) continue;
+    std::snprintf(line, sizeof line, "  %-12s unbounded (A-stable)\n", row.name);
+    out += line;
+  }
+  out += "\n";
   double critical = r.critical(world.integrator);
   Verdict verdict = verdictFor(world.dt, critical);
   out += "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
@@ -536,7 +540,8 @@ std::string stabilityJson(const std::string& worldPath, const World& world, cons
                                                      {"initial_state", finite(r.criticalInitial[i])},
                                                      {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
   }
-  j["integrators"]["IMPLICIT"] = {{"critical_dt", nullptr}, {"unbounded", true}};
+  for (const IntegratorInfo& row : integratorTable())
+    if (!row.boundedStableStep) j["integrators"][row.name] = {{"critical_dt", nullptr}, {"unbounded", true}};
   double critical = r.critical(world.integrator);
   j["verdict"] = verdictName(verdictFor(world.dt, critical));
   j["critical_dt"] = finite(critical);

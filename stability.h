@@ -16,7 +16,7 @@
 
 namespace jello {
 
-// Integrators with a bounded stable step (IMPLICIT, A-stable, has none).
+// Integrators with a bounded stable step, in table order (integratorsWithStepLimit()).
 extern const std::vector<Integrator> kExplicitIntegrators;
 
 struct Mode {
