@@ -22,6 +22,7 @@
 #include "jacobian.h"
 #include "output.h"
 #include "plot.h"
+#include "simulation.h"
 
 namespace jello {
 
@@ -90,6 +91,24 @@ std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
+}
+
+// --check's table: a line per integrator of the integrator table, its limits or "unbounded".
+std::string limitTable(const StabilityReport& r) {
+  std::string out = "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
+  char line[256];
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(kExplicitIntegrators[i]),
+                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
+                  limitText(r.criticalFaceOnWall[i]).c_str());
+    out += line;
+  }
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.boundedStableStep) continue;
+    std::snprintf(line, sizeof line, "  %-12s unbounded (A-stable)\n", row.name);
+    out += line;
+  }
+  return out + "\n";
 }
 
 }  // namespace
@@ -308,16 +327,9 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
   // The smallest step tried is guess / 3: its runs must be a countable number of steps.
   if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
-  auto stable = [&](double dt) {
-    State s = start;
-    Stepper stepper(integrator);
-    DivergenceGuard guard(model, start);
-    for (long long i = 1, n = std::llround(time / dt); i <= n; ++i) {
-      stepper.step(model, s, dt);
-      if (!guard.check(s, i * dt).empty()) return false;
-    }
-    return true;
-  };
+  // Runs of `time` seconds (stepsForTime's count: every dt tried is above guess / 3), checked
+  // as every run is (simulation.h).
+  auto stable = [&](double dt) { return Simulation(model, start, integrator, dt).advance(*stepsForTime(time, dt)).ran(); };
   double low = guess / 3, high = guess * 3;
   if (!stable(low) || stable(high)) return NAN;
   for (int i = 0; i < 9; ++i) {
@@ -474,20 +486,7 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
            " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
            "field): physics, not numerics\n";
   }
-  out += "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
-  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
-    Integrator integrator = kExplicitIntegrators[i];
-    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(integrator),
-                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
-                  limitText(r.criticalFaceOnWall[i]).c_str());
-    out += line;
-  }
-  for (const IntegratorInfo& row : integratorTable()) {
-    if (row.boundedStableStep) continue;
-    std::snprintf(line, sizeof line, "  %-12s unbounded (A-stable)\n", row.name);
-    out += line;
-  }
-  out += "\n";
+  out += limitTable(r);
   double critical = r.critical(world.integrator);
   Verdict verdict = verdictFor(world.dt, critical);
   out += "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
