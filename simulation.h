@@ -106,8 +106,8 @@ class Simulation {
   RunOutcome outcome_;
 };
 
-// Whether `state` passes the cheap test: findDivergedPoint(state) < 0, computed without a branch
-// per point so that it vectorises (the test runs after every step).
+// Whether `state` passes the cheap test: findDivergedPoint(state) < 0, in one pass without a
+// branch per point (the test runs after every step).
 bool passesCheapTest(const State& state);
 
 }  // namespace jello
