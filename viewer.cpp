@@ -114,7 +114,8 @@ Image readWindow(int width, int height) {
 void drawOverlay(Viewer& v) {
   char line[160];
   std::snprintf(line, sizeof line, "T=%.3f S  %s  DT=%g  %.0f STEPS/S%s%s", v.time(),
-                integratorName(v.simulation.integrator()), v.simulation.dt(), v.stepsPerSecond, v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
+                integratorName(v.simulation.integrator()), v.simulation.dt(), v.stepsPerSecond,
+                v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
   drawText(line, 8, 8, v.width, v.height, 2, 1, 1, 1);
   if (v.saving) {
     std::string mark = "SAVING " + std::to_string(v.frames.written()) + "/" + std::to_string(v.frames.maxFrames());
