@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli.h"
+#include "integrators.h"
 #include "output.h"
 
 namespace jello {
@@ -56,8 +57,9 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
   g->timeOption = app.add_option("--time", g->time, "simulated seconds to run headless")->transform(kPositive);
   g->stepsOption->excludes(g->timeOption);
   g->integratorOption = app.add_option("--integrator", g->integrator,
-                                       "EULER, RK4, MIDPOINT, SYMPLECTIC, VERLET, RK45 or IMPLICIT, any case "
-                                       "(overrides the world file)");
+                                       integratorNameList() + ", any case (overrides the world file; see Integrators "
+                                       "below)")
+                            ->type_name("NAME");
   g->dtOption = app.add_option("--dt", g->dt, "time step in seconds (overrides the world file)")->transform(kPositive);
   g->nOption = app.add_option("--n", g->n, "steps per drawn frame (overrides the world file)")
                    ->transform(wholeNumber(1, std::numeric_limits<int>::max()));
@@ -182,6 +184,7 @@ int parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* comma
   addRunOptions(app, command, &given);
   addPictureOptions(app, command, &given);
   addAnalysisOptions(app, command, &given);
+  app.footer("Integrators (--integrator, --integrators, and world files):\n" + integratorHelp());
   int status = 0;
   if (!parseCommandLine(app, argc, argv, &status)) return status;
   status = readRunOptions(given, command);

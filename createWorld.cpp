@@ -148,7 +148,7 @@ static int createWorld(int argc, char** argv) {
   double dt = 0, kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0, mass = 0;
   int n = 0;
   std::vector<double> plane;
-  auto* integratorOption = app.add_option("--integrator", integrator, "EULER, RK4, ... (any case)")->type_name("NAME")->group("Parameters");
+  auto* integratorOption = app.add_option("--integrator", integrator, jello::integratorNameList() + ", any case")->type_name("NAME")->group("Parameters");
   auto* dtOption = app.add_option("--dt", dt, "time step, s")->type_name("DT")->transform(kPositive)->group("Parameters");
   auto* nOption = app.add_option("--n", n, "steps per drawn frame")->type_name("N")
                       ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))

@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <cstring>
 
-#include "guard.h"
 #include "output.h"
 #include "integrators.h"
 #include "physics.h"
+#include "simulation.h"
 #include "stability.h"
 
 namespace jello {
@@ -24,7 +24,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr long long kGuardEvery = 8;  // steps between energy checks at least
+constexpr long long kProgressEvery = 64;  // steps between looks at the progress line
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -38,7 +38,7 @@ class Progress {
       : total_(totalSteps), frames_(frames), enabled_(::isatty(STDERR_FILENO) == 1) {}
 
   void update(long long done) {
-    if (!enabled_ || (done & 63) != 0) return;
+    if (!enabled_ || done % kProgressEvery != 0) return;
     double elapsed = secondsSince(start_);
     if (elapsed < kQuietSeconds || elapsed - lastShown_ < kRefreshSeconds) return;
     lastShown_ = elapsed;
@@ -67,7 +67,8 @@ class Progress {
   Clock::time_point start_ = Clock::now();
 };
 
-// Why RK45 stopped at step s: its tolerances are beyond what double arithmetic resolves.
+}  // namespace
+
 std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt) {
   char text[320];
   std::snprintf(
@@ -79,17 +80,80 @@ std::string toleranceFailure(const Tolerances& tolerances, long long s, double d
   return text;
 }
 
+namespace {
+
+// The smallest multiple of `every` (>= 1) after `done`.
+long long nextMultiple(long long done, long long every) {
+  return every > 0 ? (done / every + 1) * every : done + 1;
+}
+
+// How many steps the run takes: --steps, --time, or 300 frames of n steps. False, with the line
+// that says why on stderr, when the run is refused.
+bool stepsOfRun(const RunOptions& options, const World& world, long long* steps) {
+  *steps = kDefaultFrames * world.n;
+  if (!options.steps && !options.time && *steps > kMostDefaultSteps) {
+    printError(options.worldPath + ": n = " + std::to_string(world.n) + " makes the default run (300 frames of n steps) " +
+               std::to_string(*steps) + " steps long; say how long with --steps N or --time T, or lower n with --n");
+    return false;
+  }
+  if (options.steps) *steps = *options.steps;
+  if (options.time) {
+    std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
+    if (!forTime) {
+      std::fprintf(stderr, "jello: %s\n", tooManyStepsMessage(*options.time, world.dt).c_str());
+      return false;
+    }
+    *steps = *forTime;
+  }
+  return true;
+}
+
+// Calls the frame observer; false, with its one-line message on stderr, when it throws.
+template <class Call>
+bool observed(Call call) {
+  try {
+    call();
+    return true;
+  } catch (const std::runtime_error& e) {
+    printError(e.what());
+    return false;
+  }
+}
+
+// The line on stderr for a run that stopped, and its exit status.
+int reportFailure(const RunOptions& options, const World& world, const State& initial, const RunOutcome& outcome) {
+  if (outcome.kind == RunOutcome::Kind::ToleranceUnmet) {
+    std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
+                 toleranceFailure(options.tolerances, outcome.step, world.dt).c_str());
+    return kExitBadInput;
+  }
+  printError(options.worldPath + ": " + divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
+  return kExitDiverged;
+}
+
+// The summary line on stdout.
+void printSummary(const RunOptions& options, const World& world, long long steps, double wall, const StepStats& stats,
+                  const FrameObserver* frames) {
+  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
+              integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
+              steps > 0 ? wall * 1e6 / steps : 0.0);
+  if (world.integrator == Integrator::RK45) {
+    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps, stats.rejected,
+                stats.evaluations);
+  }
+  if (world.integrator == Integrator::Implicit) {
+    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations, stats.evaluations + stats.jacobians);
+  }
+  if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
   if (sameFile(dumpPath, worldPath)) return "is the world being run; it is never replaced, name another file";
   return whyNotWritable(dumpPath, Existing::Replace);
-}
-
-std::optional<long long> stepsForTime(double time, double dt) {
-  const double steps = std::ceil(time / dt * (1 - 1e-9));
-  if (!(steps <= kMaxSteps)) return std::nullopt;  // also NaN and infinity
-  return static_cast<long long>(std::max(steps, 0.0));
 }
 
 std::string tooManyStepsMessage(double time, double dt) {
@@ -121,23 +185,8 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   WorldFile file;
   if (!loadRun(options, &file)) return kExitBadInput;
   const World& world = file.world;
-
-  long long steps = kDefaultFrames * world.n;
-  if (!options.steps && !options.time && steps > kMostDefaultSteps) {
-    printError(options.worldPath + ": n = " + std::to_string(world.n) + " makes the default run (300 frames of n steps) " +
-               std::to_string(steps) + " steps long; say how long with --steps N or --time T, or lower n with --n");
-    return kExitBadInput;
-  }
-  if (options.steps) steps = *options.steps;
-  if (options.time) {
-    std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
-    if (!forTime) {
-      std::fprintf(stderr, "jello: %s\n", tooManyStepsMessage(*options.time, world.dt).c_str());
-      return kExitBadInput;
-    }
-    steps = *forTime;
-  }
-
+  long long steps = 0;
+  if (!stepsOfRun(options, world, &steps)) return kExitBadInput;
   if (options.dumpPath) {
     std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
     if (!why.empty()) {
@@ -147,69 +196,28 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   }
 
   const Model model = makeModel(world, file.state, options.kernel);
-  const State initial = file.state;
-  State& state = file.state;
-  DivergenceGuard guard(model, initial);
-  Stepper stepper(world.integrator, options.tolerances);
+  Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
   Progress progress(steps, frames);
   Clock::time_point start = Clock::now();
-  try {
-    if (frames) {
-      frames->begin();
-      frames->frame(model, state);
-    }
-  } catch (const std::runtime_error& e) {
-    printError(e.what());
-    return kExitBadInput;
-  }
+  const auto showFrame = [&] { frames->frame(model, simulation.state()); };
+  if (frames && !observed([&] { frames->begin(); showFrame(); })) return kExitBadInput;
   std::printf("%s%s\n", sceneLine(model.scene, world).c_str(),
               options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
-  for (long long s = 1; s <= steps; ++s) {
-    stepper.step(model, state, world.dt);
-    if (stepper.stats().failed > 0) {
-      std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
-                   toleranceFailure(options.tolerances, s, world.dt).c_str());
-      return kExitBadInput;
-    }
-    // Every step: the cheap test of SPEC (non-finite, 100 m); every drawn frame, but not more
-    // often than every kGuardEvery steps: the energy.
-    std::string wrong;
-    if (findDivergedPoint(state) >= 0 || s % std::max<long long>(world.n, kGuardEvery) == 0)
-      wrong = guard.check(state, s * world.dt);
-    if (!wrong.empty()) {
-      printError(options.worldPath + ": " + divergenceMessage(world, initial, s, s * world.dt, wrong));
-      return kExitDiverged;
-    }
-    if (frames && s % world.n == 0 && frames->wantsMore()) {
-      try {
-        frames->frame(model, state);
-      } catch (const std::runtime_error& e) {
-        printError(e.what());
-        return kExitBadInput;
-      }
-    }
-    progress.update(s);
+  // In stretches that end where a frame is due or the progress line may be redrawn.
+  const long long frameEvery = frames ? world.n : steps;
+  while (simulation.step() < steps) {
+    const long long done = simulation.step();
+    const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
+    const RunOutcome outcome = simulation.advance(stop - done);
+    if (!outcome.ran()) return reportFailure(options, world, file.state, outcome);
+    if (frames && simulation.step() % world.n == 0 && frames->wantsMore() && !observed(showFrame)) return kExitBadInput;
+    progress.update(simulation.step());
   }
-  double wall = secondsSince(start);
-
-  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
-              integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
-              steps > 0 ? wall * 1e6 / steps : 0.0);
-  const StepStats& stats = stepper.stats();
-  if (world.integrator == Integrator::RK45) {
-    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps, stats.rejected,
-                stats.evaluations);
-  }
-  if (world.integrator == Integrator::Implicit) {
-    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations, stats.evaluations + stats.jacobians);
-  }
-  if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
-  std::printf("\n");
-  std::fflush(stdout);
+  printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
 
   if (options.dumpPath) {
     try {
-      writeWorldFile(*options.dumpPath, world, state, true);
+      writeWorldFile(*options.dumpPath, world, simulation.state(), true);
     } catch (const std::exception& e) {
       printError(e.what());
       return kExitBadInput;

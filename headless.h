@@ -6,6 +6,7 @@
 
 #include "integrators.h"
 #include "physics.h"
+#include "simulation.h"
 #include "world.h"
 
 namespace jello {
@@ -50,16 +51,10 @@ class FrameObserver {
   virtual std::string describe() const = 0;
 };
 
-// The most steps a run may take. 1e12 steps are months of computing at the kernel's microseconds
-// a step, so no run meant to finish asks for more; and up to it a step count, and the time
-// s * dt of step s, are exact in a double (2^53 ~ 9e15) and far from long long's limit.
-constexpr double kMaxSteps = 1e12;
-
-// Number of steps that --time T asks for at step dt: the fewest that reach T (a relative slack
-// of 1e-9 keeps T = 1, dt = 0.001 at 1000 steps despite rounding). Empty when T/dt is not a
-// finite number or exceeds kMaxSteps (--time 1e16, or --dt 1e-300): no conversion to an
-// integer is attempted then.
-std::optional<long long> stepsForTime(double time, double dt);
+// --time T runs stepsForTime(T, dt) steps (simulation.h), whole ones: it ends at or just past T.
+// Why RK45 stopped at step s (a RunOutcome::Kind::ToleranceUnmet), in one line without "jello: ":
+// its tolerances are beyond what double arithmetic resolves.
+std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt);
 // The one line (without "jello: ") that refuses such a --time at such a dt.
 std::string tooManyStepsMessage(double time, double dt);
 

@@ -30,9 +30,7 @@ namespace jello {
 
 namespace {
 
-constexpr const char* kIntegratorNames[] = {"EULER",      "RK4",    "MIDPOINT", "SYMPLECTIC",
-                                            "VERLET",     "RK45",   "IMPLICIT"};
-constexpr std::size_t kMaxIntegratorNameLength = 16;
+constexpr std::size_t kMaxIntegratorNameLength = 16;  // longer than any name in the table
 // The shortest possible field line, "0 0 0\n": a file shorter than R^3 of these cannot hold
 // the field it announces, so it is refused before any memory is set aside for it.
 constexpr std::size_t kShortestFieldLine = 6;
@@ -318,20 +316,6 @@ std::string latticeLabel(int q) {
          "][" + std::to_string(q % kLatticeSize) + "]";
 }
 
-const char* integratorName(Integrator integrator) {
-  return kIntegratorNames[static_cast<int>(integrator)];
-}
-
-std::string integratorNameList() {
-  std::string list;
-  const std::size_t count = std::size(kIntegratorNames);
-  for (std::size_t i = 0; i < count; ++i) {
-    list += i == 0 ? "" : i + 1 == count ? " or " : ", ";
-    list += kIntegratorNames[i];
-  }
-  return list;
-}
-
 namespace {
 template <class T>
 bool parseExactly(std::string_view text, T* out, std::string* why) {
@@ -353,22 +337,6 @@ bool parseWorldNumber(std::string_view text, double* out, std::string* why) {
 bool parseWorldInteger(std::string_view text, long long* out, std::string* why) {
   if (parseExactly(text, out, why)) return true;
   if (*why == "is not a number") *why = "is not a whole number";
-  return false;
-}
-
-bool parseIntegratorName(std::string_view name, Integrator* out) {
-  for (int i = 0; i < static_cast<int>(std::size(kIntegratorNames)); ++i) {
-    std::string_view candidate = kIntegratorNames[i];
-    if (candidate.size() != name.size()) continue;
-    bool same = true;
-    for (std::size_t c = 0; c < name.size() && same; ++c) {
-      same = std::toupper(static_cast<unsigned char>(name[c])) == candidate[c];
-    }
-    if (same) {
-      *out = static_cast<Integrator>(i);
-      return true;
-    }
-  }
   return false;
 }
 

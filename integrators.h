@@ -7,15 +7,18 @@
 // advances time by dt (seconds); RK45 takes as many adaptive substeps as it needs within it.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
-#include "jacobian.h"
 #include "physics.h"
 #include "world.h"
 
 namespace jello {
+
+struct AccelerationJacobian;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
   // Writes f(y) into dydt; both hold the same number of doubles.
@@ -58,8 +61,36 @@ constexpr double kSmallestSubstep = 16 * 2.220446049250313e-16;
 // squares of x / max|x| (as hypot does). Infinite when an x is, NaN when an x is NaN.
 double rmsNorm(const double* x, std::size_t n);
 
-// The theoretical order of convergence.
+// What a step function works with: its Stepper's buffers, tolerances, counts and RK45's memory
+// of its last substep. Defined in integrators.cpp; a step function exists only there.
+struct StepWork;
+// One step of dt seconds of `system` from y, in place (see Stepper::step).
+using StepFunction = void (*)(StepWork& work, const OdeSystem& system, std::vector<double>& y, double dt);
+
+// The integrator table: one row per integrator, the only source of their names, orders, help
+// text and properties. integrators.cpp holds the rows, indexed by the enum (world.h) in its
+// order, which is the order every listing uses (--help, --check, --report, --bench). A new
+// integrator is an enumerator in world.h and a row and a step function in integrators.cpp.
+struct IntegratorInfo {
+  Integrator integrator;
+  const char* name;         // canonical upper-case name, as in world files and on command lines
+  int order;                // theoretical order of convergence in dt (RK45: of the solution it keeps)
+  bool boundedStableStep;   // false when A-stable: no dt makes it diverge (IMPLICIT)
+  bool needsJacobian;       // its steps use OdeSystem::jacobian
+  const char* description;  // one line for help text, lower case, no final full stop
+  StepFunction step;
+};
+
+// Every row, in enum order. Static storage: references stay valid for the whole program.
+const std::array<IntegratorInfo, kIntegratorCount>& integratorTable();
+const IntegratorInfo& integratorInfo(Integrator integrator);
+
+// The theoretical order of convergence (the table's).
 int orderOf(Integrator integrator);
+// The integrators with a bounded stable step (all but the A-stable ones), in table order.
+std::vector<Integrator> integratorsWithStepLimit();
+// The lines of --help that list the integrators: name, order and description, one a line.
+std::string integratorHelp();
 
 // Advances a state one step at a time with one integrator, reusing its buffers: a step
 // allocates nothing once they are sized (IMPLICIT's sparse solver excepted).
@@ -78,16 +109,12 @@ class Stepper {
   void step(const Model& model, State& state, double dt, const Pull* pull = nullptr);
 
   Integrator integrator() const { return integrator_; }
-  const StepStats& stats() const { return stats_; }
+  const StepStats& stats() const;
 
  private:
-  struct Buffers;
   Integrator integrator_;
-  Tolerances tolerances_;
-  StepStats stats_;
-  std::unique_ptr<Buffers> buffers_;
-  double rk45Step_ = 0;   // RK45's last successful substep, the first guess of the next step
-  double rk45Error_ = 1;  // RK45's last accepted error norm, for the step-size controller
+  StepFunction step_;  // the table's, looked up once
+  std::unique_ptr<StepWork> work_;
 };
 
 }  // namespace jello

@@ -3,7 +3,7 @@
 // Every run starts from the world's initial state and ends at the same time T, so that all
 // of them are compared at one instant with one reference: RK4 at a much smaller step, whose
 // own error is estimated against a run at half its step. Steps are T/2^k, so that every run
-// lands on T exactly.
+// lands on T exactly (the world's own dt need not: its last step is shortened, see simulate).
 
 #include "report.h"
 
@@ -18,9 +18,11 @@
 #include <system_error>
 #include <thread>
 
+#include "integrators.h"
 #include "physics.h"
 #include "output.h"
 #include "plot.h"
+#include "simulation.h"
 
 namespace jello {
 
@@ -36,9 +38,6 @@ constexpr int kSearchHalvings = 24;
 constexpr double kSameEnd = 0.01;  // m RMS: two runs that end this close agree
 constexpr double kRepeatBelowSeconds = 0.25;  // runs shorter than this are timed three times
 constexpr double kRk45Tolerances[kSweepLength] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
-constexpr Integrator kAllIntegrators[] = {Integrator::Euler,  Integrator::Symplectic, Integrator::Midpoint,
-                                          Integrator::Verlet, Integrator::RK4,        Integrator::RK45,
-                                          Integrator::Implicit};
 
 struct Run {
   State end;
@@ -47,27 +46,18 @@ struct Run {
   bool diverged = false;
 };
 
-// From the start to time T in steps of dt (the last one shorter if dt does not divide T).
-// runReport has checked that T/dt is a step count (stepsForTime) for every dt it passes.
+// From the start to time T: stepsForTime(T, dt) steps, the last one shortened when dt does not
+// divide T (Simulation::advanceTo). runReport has checked that T/dt is a step count for every dt
+// it passes. A run that fails the checks of every run (simulation.h) has diverged.
 Run simulate(const Model& model, const State& start, Integrator integrator, double dt, double time,
              Tolerances tolerances = {}) {
   Run run;
-  run.end = start;
-  Stepper stepper(integrator, tolerances);
-  const long long whole = static_cast<long long>(std::floor(time / dt * (1 + 1e-12)));
-  const double rest = time - whole * dt;
+  Simulation simulation(model, start, integrator, dt, tolerances);
   Clock::time_point begin = Clock::now();
-  for (long long s = 0; s <= whole; ++s) {
-    double h = s < whole ? dt : rest;
-    if (h <= 1e-12 * time) break;
-    stepper.step(model, run.end, h);
-    if (findDivergedPoint(run.end) >= 0) {
-      run.diverged = true;
-      break;
-    }
-  }
+  run.diverged = !simulation.advanceTo(time).ran();
   run.wall = std::chrono::duration<double>(Clock::now() - begin).count();
-  run.stats = stepper.stats();
+  run.end = simulation.state();
+  run.stats = simulation.stats();
   return run;
 }
 
@@ -217,7 +207,8 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     return kExitBadInput;
   }
   std::vector<Integrator> integrators = options.integrators;
-  if (integrators.empty()) integrators.assign(std::begin(kAllIntegrators), std::end(kAllIntegrators));
+  if (integrators.empty())
+    for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
 
   // Claim the folder and check every file before the long work, not after it.
   FolderClaim claim;

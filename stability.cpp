@@ -22,11 +22,11 @@
 #include "jacobian.h"
 #include "output.h"
 #include "plot.h"
+#include "simulation.h"
 
 namespace jello {
 
-const std::vector<Integrator> kExplicitIntegrators = {Integrator::Euler,  Integrator::Symplectic, Integrator::Midpoint,
-                                                      Integrator::Verlet, Integrator::RK4,        Integrator::RK45};
+const std::vector<Integrator> kExplicitIntegrators = integratorsWithStepLimit();
 
 namespace {
 
@@ -90,6 +90,24 @@ std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
+}
+
+// --check's table: a line per integrator of the integrator table, its limits or "unbounded".
+std::string limitTable(const StabilityReport& r) {
+  std::string out = "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
+  char line[256];
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(kExplicitIntegrators[i]),
+                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
+                  limitText(r.criticalFaceOnWall[i]).c_str());
+    out += line;
+  }
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.boundedStableStep) continue;
+    std::snprintf(line, sizeof line, "  %-12s unbounded (A-stable)\n", row.name);
+    out += line;
+  }
+  return out + "\n";
 }
 
 }  // namespace
@@ -162,7 +180,7 @@ Linearisation lineariseAtRest(const World& world) {
 }
 
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
-  if (integrator == Integrator::Implicit) return INFINITY;
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
   std::map<std::pair<long long, long long>, Mode> distinct;
   for (const Mode& m : modes) {
@@ -281,7 +299,7 @@ StabilityReport analyseStability(const World& world, const State& initial) {
 }
 
 double predictedLimit(const World& world, const State& initial, Integrator integrator) {
-  if (integrator == Integrator::Implicit) return INFINITY;
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   Model model = makeModel(world, initial);
   const Linearisation atStart = linearise(model, initial);
   if (!atStart.finite) return NAN;
@@ -308,7 +326,7 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
   }
   // The rest lattice's limit takes milliseconds; when it is already below what the analysis
   // resolves, the springs alone rule every step out and the eigensolves are spared.
-  if (world.integrator != Integrator::Implicit &&
+  if (integratorInfo(world.integrator).boundedStableStep &&
       criticalStep(world.integrator, lineariseAtRest(world).modes) == 0)
     return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
   double limit = predictedLimit(world, initial, world.integrator);
@@ -337,16 +355,9 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
   // The smallest step tried is guess / 3: its runs must be a countable number of steps.
   if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
-  auto stable = [&](double dt) {
-    State s = start;
-    Stepper stepper(integrator);
-    DivergenceGuard guard(model, start);
-    for (long long i = 1, n = std::llround(time / dt); i <= n; ++i) {
-      stepper.step(model, s, dt);
-      if (!guard.check(s, i * dt).empty()) return false;
-    }
-    return true;
-  };
+  // Runs of `time` seconds (stepsForTime's count: every dt tried is above guess / 3), checked
+  // as every run is (simulation.h).
+  auto stable = [&](double dt) { return Simulation(model, start, integrator, dt).advance(*stepsForTime(time, dt)).ran(); };
   double low = guess / 3, high = guess * 3;
   if (!stable(low) || stable(high)) return NAN;
   for (int i = 0; i < 9; ++i) {
@@ -527,15 +538,7 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
            " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
            "field): physics, not numerics\n";
   }
-  out += "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
-  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
-    Integrator integrator = kExplicitIntegrators[i];
-    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(integrator),
-                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
-                  limitText(r.criticalFaceOnWall[i]).c_str());
-    out += line;
-  }
-  out += "  IMPLICIT     unbounded (A-stable)\n\n";
+  out += limitTable(r);
   const double critical = r.verdictLimit(world.integrator);
   // Named when it differs in print from the headline one (the two eigensolves differ in the last
   // bits).
@@ -594,7 +597,8 @@ std::string stabilityJson(const std::string& worldPath, const World& world, cons
                                                      {"initial_state", finite(r.criticalInitial[i])},
                                                      {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
   }
-  j["integrators"]["IMPLICIT"] = {{"critical_dt", nullptr}, {"unbounded", true}};
+  for (const IntegratorInfo& row : integratorTable())
+    if (!row.boundedStableStep) j["integrators"][row.name] = {{"critical_dt", nullptr}, {"unbounded", true}};
   double critical = r.critical(world.integrator), verdictLimit = r.verdictLimit(world.integrator);
   j["verdict"] = verdictName(verdictFor(world.dt, verdictLimit, r.stableFraction));
   j["critical_dt"] = finite(critical);

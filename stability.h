@@ -16,7 +16,7 @@
 
 namespace jello {
 
-// Integrators with a bounded stable step (IMPLICIT, A-stable, has none).
+// Integrators with a bounded stable step, in table order (integratorsWithStepLimit()).
 extern const std::vector<Integrator> kExplicitIntegrators;
 
 struct Mode {
@@ -130,8 +130,8 @@ double predictedLimit(const World& world, const State& initial, Integrator integ
 std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
                               const std::string& reason);
 
-// The largest dt at which real runs of `time` seconds from `start` stay plausible (the runtime
-// guard, every step), by bisection to 0.5% between a third and three times `guess`; NaN when
+// The largest dt at which real runs of `time` seconds from `start` stay plausible (the checks of
+// every Simulation, simulation.h), by bisection to 0.5% between a third and three times `guess`; NaN when
 // the limit is not in that range, or when runs at guess / 3 would take more than kMaxSteps.
 double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess);
 

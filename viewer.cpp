@@ -13,9 +13,8 @@
 #include <string>
 
 #include "graphics.h"
-#include "guard.h"
 #include "output.h"
-#include "integrators.h"
+#include "simulation.h"
 #include "stability.h"
 #include "showCube.h"
 
@@ -34,6 +33,7 @@ constexpr double kMinPullStiffness = 100;      // N/m
 constexpr double kMessageSeconds = 4;
 constexpr double kMaxCatchUpSeconds = 0.1;     // real-time pacing never steps more than this at once
 constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
+constexpr int kStepsBetweenClockReads = 16;     // how often real-time pacing looks at that budget
 constexpr int kEscape = 27;
 
 double seconds(Clock::time_point from, Clock::time_point to) {
@@ -43,13 +43,10 @@ double seconds(Clock::time_point from, Clock::time_point to) {
 struct Viewer {
   Model model;
   State initial;
-  State state;
+  Simulation simulation;  // of `model`, declared after it
+  Tolerances tolerances;  // RK45's, for the message when they cannot be met
   State lastGood;  // the state before the current frame's steps, shown if they diverge
-  Stepper stepper;
-  Integrator integrator;
-  double dt;
   int n;
-  long long steps = 0;
   long long savedStep = -1;  // the step of the last saved frame
 
   Camera camera;
@@ -57,7 +54,6 @@ struct Viewer {
   int width, height;
   bool paused = false, diverged = false, realTime = false, saving = false;
   FrameSequence frames;
-  DivergenceGuard guard{model, initial};
 
   // Mouse: right-drag turns the camera, left-drag pulls the nearest surface point.
   int lastX = 0, lastY = 0;
@@ -79,17 +75,16 @@ struct Viewer {
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
         initial(file.state),
-        state(file.state),
+        simulation(model, file.state, file.world.integrator, file.world.dt, run.tolerances),
+        tolerances(run.tolerances),
         lastGood(file.state),
-        stepper(file.world.integrator, run.tolerances),
-        integrator(file.world.integrator),
-        dt(file.world.dt),
         n(file.world.n),
         width(pictures.width),
         height(pictures.height),
         frames(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {}
 
-  double time() const { return steps * dt; }
+  double time() const { return simulation.time(); }
+  const State& state() const { return simulation.state(); }
 
   void say(const std::string& text) {
     message = text;
@@ -118,8 +113,9 @@ Image readWindow(int width, int height) {
 
 void drawOverlay(Viewer& v) {
   char line[160];
-  std::snprintf(line, sizeof line, "T=%.3f S  %s  DT=%g  %.0f STEPS/S%s%s", v.time(), integratorName(v.integrator),
-                v.dt, v.stepsPerSecond, v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
+  std::snprintf(line, sizeof line, "T=%.3f S  %s  DT=%g  %.0f STEPS/S%s%s", v.time(),
+                integratorName(v.simulation.integrator()), v.simulation.dt(), v.stepsPerSecond,
+                v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
   drawText(line, 8, 8, v.width, v.height, 2, 1, 1, 1);
   if (v.saving) {
     std::string mark = "SAVING " + std::to_string(v.frames.written()) + "/" + std::to_string(v.frames.maxFrames());
@@ -137,14 +133,14 @@ void drawOverlay(Viewer& v) {
 
 void display() {
   Viewer& v = viewer();
-  drawScene(v.model, v.state, v.camera, v.draw, v.width, v.height, &v.pull);
+  drawScene(v.model, v.state(), v.camera, v.draw, v.width, v.height, &v.pull);
   glGetDoublev(GL_MODELVIEW_MATRIX, v.modelview);
   glGetDoublev(GL_PROJECTION_MATRIX, v.projection);
   glGetIntegerv(GL_VIEWPORT, v.viewport);
   // The frame is read before the overlay is drawn, so that it is the picture an off-screen
   // run makes of the same state; one frame per state drawn, none while paused.
-  if (v.saving && v.steps != v.savedStep) {
-    v.savedStep = v.steps;
+  if (v.saving && v.simulation.step() != v.savedStep) {
+    v.savedStep = v.simulation.step();
     try {
       v.frames.save(readWindow(v.width, v.height));
     } catch (const std::exception& e) {
@@ -176,33 +172,34 @@ void advance() {
     double behind = v.realTimeStartSim + seconds(v.realTimeStart, Clock::now()) - v.time();
     // Compared before the conversion: a tiny dt (1e-300) asks for more steps than an int holds;
     // the frame budget below stops the loop long before that many anyway.
-    const double wanted = std::floor(std::min(behind, kMaxCatchUpSeconds) / v.dt);
+    const double wanted = std::floor(std::min(behind, kMaxCatchUpSeconds) / v.simulation.dt());
     if (!(wanted >= 1)) return;
     count = static_cast<int>(std::min(wanted, double(std::numeric_limits<int>::max())));
   }
-  v.lastGood = v.state;
+  v.lastGood = v.state();
+  const long long stepBefore = v.simulation.step();
   const Pull* pull = v.pull.point >= 0 ? &v.pull : nullptr;
   const Clock::time_point start = Clock::now();
-  for (int i = 0; i < count; ++i) {
+  RunOutcome outcome;
+  for (int done = 0; done < count && outcome.ran();) {
     // A machine too slow for real time runs as fast as it can, but stays responsive.
-    if (v.realTime && (i & 15) == 15 && seconds(start, Clock::now()) > kFrameBudgetSeconds) break;
-    v.stepper.step(v.model, v.state, v.dt, pull);
-    ++v.steps;
-    ++v.rateSteps;
-    // The energy test only without a pull, which adds energy of its own.
-    bool lastOfFrame = i + 1 == count;
-    std::string wrong = findDivergedPoint(v.state) >= 0 || (lastOfFrame && !pull) ? v.guard.check(v.state, v.time()) : "";
-    if (!wrong.empty()) {
-      World world = v.model.world;
-      world.dt = v.dt;
-      world.integrator = v.integrator;
-      v.say(divergenceMessage(world, v.initial, v.steps, v.time(), wrong) + " (paused)");
-      v.state = v.lastGood;
-      v.steps -= i + 1;
-      v.diverged = true;
-      v.paused = true;
-      break;
-    }
+    if (v.realTime && done > 0 && seconds(start, Clock::now()) > kFrameBudgetSeconds) break;
+    const int stretch = v.realTime ? std::min(kStepsBetweenClockReads, count - done) : count - done;
+    outcome = v.simulation.advance(stretch, pull);
+    done += stretch;
+  }
+  v.rateSteps += v.simulation.step() - stepBefore;
+  if (!outcome.ran()) {
+    World world = v.model.world;
+    world.dt = v.simulation.dt();
+    world.integrator = v.simulation.integrator();
+    v.say((outcome.kind == RunOutcome::Kind::ToleranceUnmet
+               ? toleranceFailure(v.tolerances, outcome.step, world.dt)
+               : divergenceMessage(world, v.initial, outcome.step, outcome.time, outcome.reason)) +
+          " (paused)");
+    v.simulation.restore(v.lastGood, stepBefore);
+    v.diverged = true;
+    v.paused = true;
   }
   double elapsed = seconds(v.rateStart, Clock::now());
   if (elapsed > 0.5) {
@@ -305,7 +302,7 @@ void grab(Viewer& v, int x, int y) {
   double bestDistance = kGrabPixels, bestDepth = 0;
   for (int q = 0; q < kNumPoints; ++q) {
     if (!isSurfacePoint(q)) continue;
-    Vec3 p = load(v.state.p(), q);
+    Vec3 p = load(v.state().p(), q);
     GLdouble sx, sy, sz;
     if (!gluProject(p.x, p.y, p.z, v.modelview, v.projection, v.viewport, &sx, &sy, &sz)) continue;
     double d = std::hypot(sx - x, sy - (v.height - y));
@@ -332,8 +329,7 @@ void mouse(int button, int buttonState, int x, int y) {
     if (buttonState == GLUT_DOWN) {
       grab(v, x, y);
     } else if (v.pull.point >= 0) {
-      v.pull.point = -1;
-      v.guard.restart(v.state, v.time());  // the pull's work is the world's energy now
+      v.pull.point = -1;  // the simulation's next step, without a pull, restarts the energy bound
     }
   }
 }

@@ -47,13 +47,17 @@ inline void store(double* a, int q, Vec3 value) {
 // "[i][j][k]" for point q, as in the course's p[i][j][k].
 std::string latticeLabel(int q);
 
-enum class Integrator { Euler, RK4, Midpoint, Symplectic, Verlet, RK45, Implicit };
+// The integrators, in the order every listing of them uses: first order first. Each has a row,
+// in this order, in the integrator table (integrators.h), which says what it is.
+enum class Integrator { Euler, Symplectic, Midpoint, Verlet, RK4, RK45, Implicit };
+// IMPLICIT stays last: the count is taken from it (the table static_asserts it has this many rows).
+constexpr int kIntegratorCount = static_cast<int>(Integrator::Implicit) + 1;
 
-// Canonical upper-case name, as written in world files.
+// Canonical upper-case name, as written in world files (the table's).
 const char* integratorName(Integrator integrator);
-// "EULER, RK4, ... or IMPLICIT": every accepted name, for messages.
+// "EULER, SYMPLECTIC, ... or IMPLICIT": every accepted name, in table order, for messages.
 std::string integratorNameList();
-// Case-insensitive lookup; false when the name is not one of SPEC section 3.
+// Case-insensitive lookup of a table name; false when the name is none of them.
 bool parseIntegratorName(std::string_view name, Integrator* out);
 
 // The number grammar of world files, which the command lines share: a decimal number exactly as

@@ -8,6 +8,7 @@
 
 #include "integrators.h"
 #include "physics.h"
+#include "simulation.h"
 #include "test_support.h"
 
 namespace {
@@ -42,6 +43,22 @@ TEST(Allocation, StepsAllocateNothingOnceStarted) {
     const long long before = allocations.load();
     for (int s = 0; s < 50; ++s) stepper.step(model, state, 2e-4);
     EXPECT_EQ(allocations.load() - before, 0) << integratorName(integrator);
+  }
+}
+
+// Nor does the loop every run steps through: its checks, the energy bound included (every 8th
+// step of rotate.w), allocate nothing either.
+TEST(Allocation, ASimulationAdvancesWithoutAllocatingOnceStarted) {
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  Model model = makeModel(f.world, f.state);
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
+                                Integrator::Verlet, Integrator::RK45}) {
+    Simulation simulation(model, f.state, integrator, 2e-4);
+    ASSERT_TRUE(simulation.advance(1).ran());
+    const long long before = allocations.load();
+    const bool ran = simulation.advance(50).ran();
+    EXPECT_EQ(allocations.load() - before, 0) << integratorName(integrator);
+    EXPECT_TRUE(ran) << integratorName(integrator);
   }
 }
 

@@ -1,12 +1,17 @@
 // Time stepping: conservation laws, energy, order of convergence (SPEC.md section 2).
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <random>
+#include <set>
+#include <sstream>
+#include <stdexcept>
 
 #include "integrators.h"
 #include "jacobian.h"
 #include "physics.h"
+#include "stability.h"
 #include "test_support.h"
 
 namespace jello {
@@ -449,6 +454,105 @@ TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
   double relative = std::sqrt(errorSquared / normSquared);
   std::printf("Jacobian against central differences: relative error %.3g\n", relative);
   EXPECT_LT(relative, 1e-6);
+}
+
+// The table: a row per enumerator, in enum order, and names that read back as the integrator.
+TEST(IntegratorTable, HasARowPerEnumeratorInOrderWhoseNameParsesBackInAnyCase) {
+  std::set<std::string> names;
+  for (int i = 0; i < kIntegratorCount; ++i) {
+    const Integrator integrator = static_cast<Integrator>(i);
+    const IntegratorInfo& row = integratorInfo(integrator);
+    EXPECT_EQ(row.integrator, integrator) << i;
+    EXPECT_STREQ(integratorName(integrator), row.name);
+    EXPECT_EQ(orderOf(integrator), row.order);
+    EXPECT_GE(row.order, 1) << row.name;
+    EXPECT_NE(row.step, nullptr) << row.name;
+    EXPECT_GT(std::string(row.description).size(), 10u) << row.name;
+    EXPECT_TRUE(names.insert(row.name).second) << row.name << " twice";
+    std::string lower = row.name;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const std::string& spelling : {std::string(row.name), lower}) {
+      Integrator parsed = integrator == Integrator::RK4 ? Integrator::Euler : Integrator::RK4;
+      EXPECT_TRUE(parseIntegratorName(spelling, &parsed)) << spelling;
+      EXPECT_EQ(parsed, integrator) << spelling;
+    }
+    EXPECT_NE(integratorNameList().find(row.name), std::string::npos) << row.name;
+  }
+  EXPECT_EQ(integratorTable().size(), static_cast<std::size_t>(kIntegratorCount));
+  Integrator unused;
+  EXPECT_FALSE(parseIntegratorName("RK3", &unused));
+  EXPECT_FALSE(parseIntegratorName("", &unused));
+}
+
+// The world reader takes every table name (and the writer writes it), whatever its length.
+TEST(IntegratorTable, EveryNameReadsBackFromAWorldFile) {
+  WorldFile f = readWorldFile(test::dataPath("jello.w"));
+  for (const IntegratorInfo& row : integratorTable()) {
+    f.world.integrator = row.integrator;
+    EXPECT_EQ(parseWorld(formatWorld(f.world, f.state), "table.w").world.integrator, row.integrator) << row.name;
+  }
+}
+
+// A row without a stable-step bound has no predicted limit, and only such rows are left out of
+// --check's limits; a row that needs the Jacobian refuses a system without one, and only it.
+TEST(IntegratorTable, ItsFactsAreWhatTheIntegratorsDo) {
+  const std::vector<Mode> stiffMode = {{1e6, 0}};  // omega = 1000 rad/s
+  OdeSystem withoutJacobian;
+  withoutJacobian.derivative = [](const double* y, double* dydt) {
+    dydt[0] = y[1];
+    dydt[1] = -y[0];
+  };
+  std::vector<Integrator> bounded;
+  for (const IntegratorInfo& row : integratorTable()) {
+    const double limit = criticalStep(row.integrator, stiffMode);
+    EXPECT_EQ(std::isfinite(limit), row.boundedStableStep) << row.name << " limit " << limit;
+    if (row.boundedStableStep) bounded.push_back(row.integrator);
+    std::vector<double> y{1, 0};
+    Stepper stepper(row.integrator);
+    if (row.needsJacobian) {
+      EXPECT_THROW(stepper.step(withoutJacobian, y, 0.01), std::logic_error) << row.name;
+    } else {
+      EXPECT_NO_THROW(stepper.step(withoutJacobian, y, 0.01)) << row.name;
+      EXPECT_EQ(stepper.stats().jacobians, 0) << row.name;
+    }
+  }
+  EXPECT_EQ(kExplicitIntegrators, bounded);
+  EXPECT_EQ(integratorsWithStepLimit(), bounded);
+}
+
+// --help lists every integrator with its order and description, from the table.
+TEST(IntegratorTable, HelpListsEveryIntegratorWithItsOrderAndDescription) {
+  test::CommandResult help = test::runJello("--help");
+  ASSERT_EQ(help.status, 0) << help.err;
+  for (const IntegratorInfo& row : integratorTable()) {
+    const std::size_t at = help.out.find("  " + std::string(row.name) + " ");
+    ASSERT_NE(at, std::string::npos) << row.name << "\n" << help.out;
+    const std::string rest = help.out.substr(at, help.out.find('\n', at) - at);
+    EXPECT_NE(rest.find("order " + std::to_string(row.order)), std::string::npos) << rest;
+    EXPECT_NE(rest.find(row.description), std::string::npos) << rest;
+  }
+}
+
+// The README's list of integrators (a table "| `NAME` | what | order | evaluations |") names
+// only integrators of the table, each with the table's order.
+TEST(IntegratorTable, TheReadmesListAgreesWithIt) {
+  std::istringstream readme(test::readText(std::string(JELLO_SOURCE_DIR) + "/README.md"));
+  bool inSection = false;
+  int rows = 0;
+  for (std::string line; std::getline(readme, line);) {
+    if (line.rfind("## ", 0) == 0) inSection = line == "## Integrators";
+    if (!inSection || line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::istringstream cellText(line.substr(1));
+    for (std::string cell; std::getline(cellText, cell, '|');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 3u) << line;
+    const std::string name = cells[0].substr(cells[0].find('`') + 1, cells[0].rfind('`') - cells[0].find('`') - 1);
+    Integrator integrator;
+    ASSERT_TRUE(parseIntegratorName(name, &integrator)) << "the README lists " << name;
+    EXPECT_EQ(std::stoi(cells[2]), orderOf(integrator)) << name;
+    ++rows;
+  }
+  EXPECT_GT(rows, 0) << "no integrator list found under '## Integrators'";
 }
 
 }  // namespace
