@@ -48,8 +48,8 @@ INSTANTIATE_TEST_SUITE_P(Worlds, Prediction,
                          ::testing::Values(PredictionCase{"rotate.w", 0.2}, PredictionCase{"jello.w", 0.05},
                                            PredictionCase{"world/stress/stiff-2e4.w", 0.05},
                                            PredictionCase{"world/stress/damped-5.w", 0.02}),
-                         [](const auto& info) {
-                           std::string name = info.param.world;
+                         [](const auto& testInfo) {
+                           std::string name = testInfo.param.world;
                            name = name.substr(name.rfind('/') + 1);
                            for (char& ch : name) if (ch == '.' || ch == '-') ch = '_';
                            return name;
