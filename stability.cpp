@@ -415,9 +415,10 @@ const char* verdictName(Verdict verdict) {
       return "stable";
     case Verdict::NearLimit:
       return "within 20% of the limit";
-    default:
+    case Verdict::Unstable:
       return "unstable";
   }
+  return "unstable";  // not reached: every verdict is named above
 }
 
 double suggestedStep(double critical) {
