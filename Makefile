@@ -6,8 +6,9 @@ FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
+CLANG_FORMAT ?= clang-format-14
 
-.PHONY: all deps run test test-sanitize test-ubsan fuzz vec-report animation clean
+.PHONY: all deps run test test-sanitize test-ubsan format-check fuzz vec-report animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -62,6 +63,11 @@ test-ubsan: deps
 	if [ -n "$$(ls ubsan-reports)" ]; then \
 	  echo "test-ubsan: UndefinedBehaviorSanitizer reports:"; cat ubsan-reports/*; status=1; fi; \
 	exit $$status
+
+# Fails, naming each file and line, where a .cpp or .h file of the project differs from what the
+# project's .clang-format (clang-format 14) makes of it; changes nothing.
+format-check:
+	$(CLANG_FORMAT) --dry-run -Werror $$(git ls-files '*.cpp' '*.h')
 
 # The compiler's vectorisation report on the force kernel: which loops became vector loops.
 vec-report:
