@@ -36,8 +36,6 @@ std::vector<std::string> entries(const std::string& dir) {
   return names;
 }
 
-bool haveGnuplot() { return test::runShell("command -v gnuplot").status == 0; }
-
 int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 off_t sizeOf(const std::string& path) {
@@ -48,7 +46,7 @@ off_t sizeOf(const std::string& path) {
 // ---- Item 1: no name reaches a script -----------------------------------------------------
 
 TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
-  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   const std::vector<std::string> names = {"x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w",
                                           "$(touch PWNED).w", "new\nline'\n system 'touch PWNED.w",
                                           "\xff\xfe not utf-8 \\ '.w"};
@@ -197,7 +195,7 @@ TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
 }
 
 TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) {
-  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002", "--integrators", "EULER",
                                               test::dataPath("rotate.w")},

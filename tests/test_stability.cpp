@@ -285,8 +285,12 @@ TEST(CheckCommand, TextJsonAndMap) {
   std::string csv = test::readText(dir + "/map/stability-map.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "kElastic,integrator,predicted_dt,observed_dt");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 7 * 6);
-  EXPECT_GT(test::readText(dir + "/map/stability-map.png").size(), 1000u);
+  const bool drawn = test::haveGnuplot();
+  if (drawn) {
+    EXPECT_GT(test::readText(dir + "/map/stability-map.png").size(), 1000u);
+  }
   test::removeTree(dir);
+  if (!drawn) GTEST_SKIP() << "gnuplot is not installed: stability-map.png not checked";
 }
 
 }  // namespace
