@@ -1,12 +1,14 @@
 # The README's two commands: `make run` and `make test`. CMake does the building, into build/.
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
+UBSAN_DIR ?= build-ubsan
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
+CLANG_FORMAT ?= clang-format-14
 
-.PHONY: all deps run test test-sanitize fuzz vec-report animation clean
+.PHONY: all deps run test test-sanitize test-ubsan format-check fuzz vec-report animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -46,6 +48,27 @@ test-sanitize: deps
 	cd $(SANITIZE_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 		ctest --output-on-failure -j $(JOBS)
 
+# The whole suite once more, built by clang with UndefinedBehaviorSanitizer and float-cast-overflow
+# (a NaN or too large a double converted to an integer: GCC's UBSan does not check it) and with
+# warnings as errors (JELLO_WERROR). Every report, in the tests or in the programs they start,
+# is written to $(UBSAN_DIR)/ubsan-reports/ and fails the target.
+test-ubsan: deps
+	cmake -S . -B $(UBSAN_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+		-DJELLO_SANITIZE_CLANG_UB=ON -DJELLO_WERROR=ON
+	cmake --build $(UBSAN_DIR) -j $(JOBS)
+	rm -rf $(UBSAN_DIR)/ubsan-reports && mkdir -p $(UBSAN_DIR)/ubsan-reports
+	@status=0; cd $(UBSAN_DIR) && \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:log_path=$$PWD/ubsan-reports/report \
+		ctest --output-on-failure -j $(JOBS) || status=1; \
+	if [ -n "$$(ls ubsan-reports)" ]; then \
+	  echo "test-ubsan: UndefinedBehaviorSanitizer reports:"; cat ubsan-reports/*; status=1; fi; \
+	exit $$status
+
+# Fails, naming each file and line, where a .cpp or .h file of the project differs from what the
+# project's .clang-format (clang-format 14) makes of it; changes nothing.
+format-check:
+	$(CLANG_FORMAT) --dry-run -Werror $$(git ls-files '*.cpp' '*.h')
+
 # The compiler's vectorisation report on the force kernel: which loops became vector loops.
 vec-report:
 	@$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
@@ -59,4 +82,4 @@ fuzz: deps
 	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR) jello createWorld
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) jello createWorld

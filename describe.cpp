@@ -90,9 +90,10 @@ const char* fieldKindName(FieldKind kind) {
       return "swirl";
     case FieldKind::Radial:
       return "radial";
-    default:
+    case FieldKind::General:
       return "general";
   }
+  return "general";  // not reached: every kind is named above
 }
 
 FieldShape classifyField(const ForceField& field) {
@@ -162,7 +163,8 @@ std::string describeWorld(const World& w, const State& state) {
     case FieldKind::Radial:
       field += format(", F = %.6g (x, y, z) N", shape.strength);
       break;
-    default:
+    case FieldKind::Zero:
+    case FieldKind::General:
       break;
   }
   if (shape.kind != FieldKind::Zero) field += format("; |F| from %.6g to %.6g N", shape.smallest, shape.largest);

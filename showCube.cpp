@@ -406,9 +406,10 @@ const char* coloringName(Coloring coloring) {
       return "strain";
     case Coloring::Force:
       return "force";
-    default:
+    case Coloring::Plain:
       return "plain";
   }
+  return "plain";  // not reached: every colouring is named above
 }
 
 void drawScene(const Model& model, const State& state, const Camera& camera, const DrawOptions& options,

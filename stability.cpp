@@ -454,9 +454,10 @@ const char* verdictName(Verdict verdict) {
       return "stable";
     case Verdict::NearLimit:
       return "marginal";
-    default:
+    case Verdict::Unstable:
       return "unstable";
   }
+  return "unstable";  // not reached: every verdict is named above
 }
 
 double suggestedStep(double critical, double stableFraction) {

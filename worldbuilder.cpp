@@ -172,7 +172,8 @@ ForceField buildField(const FieldRecipe& recipe) {
       });
       break;
     }
-    default:
+    case Source::None:   // returned above
+    case Source::Given:  // returned above
       break;
   }
   return field;

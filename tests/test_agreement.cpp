@@ -41,8 +41,8 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"gravity.w", Integrator::RK4, 0, "gravity.RK4.2000.txt"},
                       AgreementCase{"skewedCorner.w", Integrator::Euler, 0, "skewedCorner.EULER.2000.txt"},
                       AgreementCase{"jello.w", Integrator::Euler, 1e-4, "jello.EULER.dt0.0001.2000.txt"}),
-    [](const auto& info) {
-      std::string name = info.param.expected;
+    [](const auto& testInfo) {
+      std::string name = testInfo.param.expected;
       name = name.substr(0, name.find(".2000"));
       for (char& ch : name) if (ch == '.') ch = '_';
       return name;

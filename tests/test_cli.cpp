@@ -168,7 +168,7 @@ TEST_P(CliMalformedWorld, ExitsTwoWithOneLineNamingTheLine) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CliMalformedWorld, ::testing::ValuesIn(test::malformedCases()),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& testInfo) { return testInfo.param.name; });
 
 struct UsageCase {
   const char* name;
@@ -205,7 +205,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
                       UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
                       UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
-    [](const auto& info) { return std::string(info.param.name); });
+    [](const auto& testInfo) { return std::string(testInfo.param.name); });
 
 TEST(Cli, HelpAndVersion) {
   test::CommandResult help = runJello("--help");

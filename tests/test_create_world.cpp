@@ -210,7 +210,7 @@ TEST_P(EachOption, ChangesWhatItShouldAndNothingElse) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Options, EachOption, ::testing::ValuesIn(optionCases()),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& testInfo) { return std::string(testInfo.param.name); });
 
 TEST(CreateWorld, NoPlaneRemovesAPresetsPlane) {
   std::string dir = test::makeTempDir();

@@ -279,7 +279,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, ConvergenceOrder,
                          ::testing::Values(OrderCase{Integrator::Euler, 2e-4}, OrderCase{Integrator::Symplectic, 2e-4},
                                            OrderCase{Integrator::Midpoint, 1e-3}, OrderCase{Integrator::Verlet, 1e-3},
                                            OrderCase{Integrator::RK4, 2e-3}, OrderCase{Integrator::Implicit, 1e-3}),
-                         [](const auto& info) { return std::string(integratorName(info.param.integrator)); });
+                         [](const auto& testInfo) { return std::string(integratorName(testInfo.param.integrator)); });
 
 TEST(Rk45, MeetsItsToleranceWithinAFactorOfTen) {
   SmoothScene scene = smoothScene();

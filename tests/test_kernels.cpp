@@ -69,7 +69,9 @@ TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
             EXPECT_TRUE(slot[q]) << "group " << o << ": no slot for point " << q;
             EXPECT_EQ(q + g.delta, pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
           }
-          if (slot[q]) EXPECT_EQ(g.mask[q] != 0, neighbour) << "group " << o << " point " << q;
+          if (slot[q]) {
+            EXPECT_EQ(g.mask[q] != 0, neighbour) << "group " << o << " point " << q;
+          }
           kept += slot[q] && g.mask[q] != 0;
         }
   }
@@ -89,8 +91,8 @@ TEST_P(CourseKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
 
 INSTANTIATE_TEST_SUITE_P(Worlds, CourseKernels,
                          ::testing::Values("jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"),
-                         [](const auto& info) {
-                           std::string name = info.param;
+                         [](const auto& testInfo) {
+                           std::string name = testInfo.param;
                            return name.substr(0, name.find('.'));
                          });
 

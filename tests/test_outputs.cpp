@@ -37,8 +37,6 @@ std::vector<std::string> entries(const std::string& dir) {
   return names;
 }
 
-bool haveGnuplot() { return test::runShell("command -v gnuplot").status == 0; }
-
 int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
 off_t sizeOf(const std::string& path) {
@@ -55,7 +53,7 @@ const std::vector<std::string> kHostileNames = {"x'; system 'touch PWNED'; print
 // The whole path once (one report is seconds of work, more under the sanitizers), with every
 // hostile kind of character in one name.
 TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
-  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   const std::string name = "x'; system 'touch PWNED'; print '`touch PWNED`$(touch PWNED)\n\xff.w";
   std::string dir = test::makeTempDir();
   test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
@@ -74,7 +72,7 @@ TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
 
 // Each kind alone, through the same drawing path as the report's, in a script of a few lines.
 TEST(HostileNames, EachHostileTitleIsDrawnAndRunsNothing) {
-  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   for (const std::string& name : kHostileNames) {
     std::string dir = test::makeTempDir();
     test::writeText(dir + "/t.gp", "set terminal pngcairo size 200,100\nif (!exists(\"png\")) png = 't.png'\n"
@@ -212,7 +210,7 @@ TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
 }
 
 TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) {
-  if (!haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002", "--integrators", "EULER",
                                               test::dataPath("rotate.w")},

@@ -49,8 +49,8 @@ INSTANTIATE_TEST_SUITE_P(Worlds, Prediction,
                          ::testing::Values(PredictionCase{"rotate.w", 0.2}, PredictionCase{"jello.w", 0.05},
                                            PredictionCase{"world/stress/stiff-2e4.w", 0.05},
                                            PredictionCase{"world/stress/damped-5.w", 0.02}),
-                         [](const auto& info) {
-                           std::string name = info.param.world;
+                         [](const auto& testInfo) {
+                           std::string name = testInfo.param.world;
                            name = name.substr(name.rfind('/') + 1);
                            for (char& ch : name) if (ch == '.' || ch == '-') ch = '_';
                            return name;
@@ -361,8 +361,12 @@ TEST(CheckCommand, TextJsonAndMap) {
   std::string csv = test::readText(dir + "/map/stability-map.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "kElastic,integrator,predicted_dt,observed_dt");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 7 * 6);
-  EXPECT_GT(test::readText(dir + "/map/stability-map.png").size(), 1000u);
+  const bool drawn = test::haveGnuplot();
+  if (drawn) {
+    EXPECT_GT(test::readText(dir + "/map/stability-map.png").size(), 1000u);
+  }
   test::removeTree(dir);
+  if (!drawn) GTEST_SKIP() << "gnuplot is not installed: stability-map.png not checked";
 }
 
 }  // namespace

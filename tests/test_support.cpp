@@ -97,6 +97,8 @@ CommandResult runShell(const std::string& script) {
   return result;
 }
 
+bool haveGnuplot() { return runShell("command -v gnuplot").status == 0; }
+
 CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetup& setup) {
   std::string dir = makeTempDir();
   const std::string out = dir + "/out", err = dir + "/err";

@@ -41,6 +41,9 @@ CommandResult runJello(const std::string& args, const std::string& cwd = "", con
 std::string jelloCommand();
 // Runs a shell script (e.g. a pipeline around jelloCommand()), capturing its output.
 CommandResult runShell(const std::string& script);
+// Whether gnuplot is on the PATH: without it a report or a map has no PNG, and the tests of the
+// pictures skip (gnuplot-nox is an optional package).
+bool haveGnuplot();
 // How runProgram starts a program.
 struct ProgramSetup {
   std::string cwd;                 // working directory; "" for the test's own

@@ -305,7 +305,7 @@ TEST_P(MalformedWorld, IsRejectedNamingFileLineAndField) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MalformedWorld, ::testing::ValuesIn(test::malformedCases()),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& testInfo) { return testInfo.param.name; });
 
 TEST(WorldReader, UnreadablePathsGiveOneLineErrors) {
   EXPECT_THROW(readWorldFile("/no/such/file.w"), WorldFileError);
