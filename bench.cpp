@@ -136,7 +136,7 @@ int runBench(const RunOptions& run) {
   const long long fixed = run.steps ? std::max(1LL, *run.steps) : 0;
   const int repeats = run.steps ? 3 : kBenchRepeats;
 
-  std::printf("%s\n", sceneLine(specialised.scene, world).c_str());
+  std::printf("%s\n", sceneLine(specialised.scene).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
   std::printf("medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
               "general = every term at every point\n\n",

@@ -1,29 +1,14 @@
-// describe.h: what a world is, in words a user reads (createWorld --describe), and the
-// recognition of the course's force fields.
+// describe.h: what a world is, in words a user reads (createWorld --describe). The recognition
+// of the course's force fields is the field term's (forces/field.h).
 #pragma once
 
 #include <string>
 
+#include "forces/field.h"
 #include "vec3.h"
 #include "world.h"
 
 namespace jello {
-
-// The position (m) of field node (i,j,k) along one axis for resolution r >= 2.
-double fieldNodeCoordinate(int index, int resolution);
-
-enum class FieldKind { Zero, Uniform, Swirl, Radial, General };
-const char* fieldKindName(FieldKind kind);
-
-// What a force field is: zero, uniform F, swirl F = s (-y, x, 0), radial F = s (x, y, z), or
-// general, recognised to within the six-decimal rounding of the course's files.
-struct FieldShape {
-  FieldKind kind = FieldKind::Zero;
-  Vec3 uniform;          // N, for Uniform
-  double strength = 0;   // N/m, for Swirl and Radial
-  double smallest = 0, largest = 0;  // |F| over the nodes, N
-};
-FieldShape classifyField(const ForceField& field);
 
 // Axis-aligned bounds and centroid of the positions of a state (m).
 struct Extent {
@@ -31,8 +16,9 @@ struct Extent {
 };
 Extent extentOf(const State& state);
 
-// Several lines: the parameters, the field's kind and magnitude range, the cube's bounding box
-// and velocities, the plane and which side of it the cube is on.
+// Several lines: the integrator and mass, a line or more from each force term of the world (its
+// parameters; the field's kind and magnitude range; the plane and which side of it the cube is
+// on), what the kernel leaves out, the cube's bounding box and velocities, and its stability.
 std::string describeWorld(const World& world, const State& state);
 
 }  // namespace jello

@@ -16,35 +16,16 @@ constexpr double kEnergyFloor = 1e-6;   // J: below this nothing is judged
 }  // namespace
 
 double mechanicalEnergy(const Model& model, const State& state) {
-  const World& w = model.world;
   double energy = 0;
-  for (int q = 0; q < kNumPoints; ++q) energy += 0.5 * w.mass * dot(load(state.v(), q), load(state.v(), q));
-  for (const Spring& s : model.springs) {
-    double stretch = length(load(state.p(), s.a) - load(state.p(), s.b)) - s.rest;
-    energy += 0.5 * w.kElastic * stretch * stretch;
-  }
-  for (int c = 0; c < kNumCoords; ++c) {
-    double beyond = std::max(0.0, std::fabs(state.p()[c]) - kBoxHalfSize);
-    energy += 0.5 * w.kCollision * beyond * beyond;
-  }
-  if (w.hasPlane) {
-    // The normalised plane: its squared normal neither overflows nor underflows.
-    const Plane& pl = model.plane;
-    double norm2 = pl.a * pl.a + pl.b * pl.b + pl.c * pl.c;
-    for (int q = 0; q < kNumPoints; ++q) {
-      double s = planeValue(pl, load(state.p(), q));
-      if (s * model.planeSide < 0) energy += 0.5 * w.kCollision * s * s / norm2;
-    }
-  }
+  for (int q = 0; q < kNumPoints; ++q) energy += 0.5 * model.world.mass * dot(load(state.v(), q), load(state.v(), q));
+  for (const auto& term : model.scene.terms) term->addEnergy(state.p(), &energy);
   return energy;
 }
 
 DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
-  double largestField = 0;
-  const std::vector<double>& f = model.world.field.forces;
-  for (std::size_t i = 0; i + 2 < f.size(); i += 3)
-    largestField = std::max(largestField, std::sqrt(f[i] * f[i] + f[i + 1] * f[i + 1] + f[i + 2] * f[i + 2]));
-  energyRate_ = largestField * std::sqrt(kNumPoints / (2 * model.world.mass));
+  double largestForce = 0;
+  for (const auto& term : model.scene.terms) largestForce += term->largestExternalForce();
+  energyRate_ = largestForce * std::sqrt(kNumPoints / (2 * model.world.mass));
   restart(initial, 0);
 }
 

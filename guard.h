@@ -8,12 +8,13 @@
 
 namespace jello {
 
-// Kinetic energy plus the energy stored in the springs and in the collision springs (walls and
-// plane), joules. Without a force field it never grows: springs are conservative, dampers
-// dissipate.
+// Kinetic energy plus the energy every term of the scene stores (the springs, the collision
+// springs of walls and plane), joules. Without a force field it never grows: springs are
+// conservative, dampers dissipate.
 double mechanicalEnergy(const Model& model, const State& state);
 
-// The field can add energy at a rate of at most Fmax * sum |v| <= Fmax * sqrt(2 N E / m), so
+// A term that stores no energy for its force (the field) can add energy at a rate of at most
+// Fmax * sum |v| <= Fmax * sqrt(2 N E / m), Fmax its largest force, so
 // sqrt(E(t)) <= sqrt(E(0)) + Fmax sqrt(N / (2 m)) t. A state beyond a generous multiple of that
 // bound, with a non-finite coordinate, or a point more than 100 m from the origin, has
 // diverged: no physics of this world produces it.

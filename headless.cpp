@@ -201,7 +201,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] { frames->frame(model, simulation.state()); };
   if (frames && !observed([&] { frames->begin(); showFrame(); })) return kExitBadInput;
-  std::printf("%s%s\n", sceneLine(model.scene, world).c_str(),
+  std::printf("%s%s\n", sceneLine(model.scene).c_str(),
               options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
   // In stretches that end where a frame is due or the progress line may be redrawn.
   const long long frameEvery = frames ? world.n : steps;

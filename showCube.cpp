@@ -139,7 +139,7 @@ SurfaceColors colorsFor(const Model& model, const State& state, Coloring colorin
   if (coloring == Coloring::Strain) {
     // Mean relative stretch of the springs meeting at each point.
     std::vector<int> count(kNumPoints, 0);
-    for (const Spring& s : model.springs) {
+    for (const Spring& s : model.springs()) {
       double strain = (length(load(state.p(), s.a) - load(state.p(), s.b)) - s.rest) / s.rest;
       value[s.a] += strain;
       value[s.b] += strain;
@@ -266,7 +266,7 @@ void drawSprings(const Model& model, const State& state, const DrawOptions& opti
   glDisable(GL_LIGHTING);
   glLineWidth(1.0f);
   glBegin(GL_LINES);
-  for (const Spring& s : model.springs) {
+  for (const Spring& s : model.springs()) {
     bool shown = (s.kind == SpringKind::Structural && options.structural) ||
                  (s.kind == SpringKind::Shear && options.shear) || (s.kind == SpringKind::Bend && options.bend);
     if (!shown) continue;
@@ -427,7 +427,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera, con
   SurfaceColors colors = colorsFor(model, state, options.coloring);
   drawSurface(state, colors, options.wireframe);
   drawSprings(model, state, options);
-  if (model.world.hasPlane) drawPlane(model.plane);
+  if (model.world.hasPlane) drawPlane(model.plane());
   if (pull && pull->point >= 0) drawPull(state, *pull);
   if (options.coloring != Coloring::Plain) drawLegend(colors, width, height);
 }

@@ -24,4 +24,13 @@ inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
+// Returns L/|L| and writes |L|; a zero vector gives a zero direction. The one place where
+// zero-length vectors are dealt with: every force term built on it exerts no force along a
+// direction it cannot define. (A select, not a branch, so that the spring loop vectorises.)
+inline Vec3 direction(Vec3 L, double* len) {
+  *len = length(L);
+  const double inverse = *len != 0 ? 1.0 / *len : 0.0;
+  return inverse * L;
+}
+
 }  // namespace jello

@@ -389,7 +389,7 @@ TEST(CreateWorld, WarnsWhenTheCubeStartsOutsideTheBoxOrAcrossThePlane) {
 TEST(Describe, RecognisesTheCourseFields) {
   const std::pair<const char*, const char*> expected[] = {
       {"rotate.w", "swirl about z, F = 0.0097"}, {"gravity.w", "uniform F = (0, 0, -0.06) N"},
-      {"jello.w", "R = 30, zero"}, {"moveLeft.w", "plane       none"}, {"jello.w", "-x + y + z + 2 = 0; the cube starts on its positive side"}};
+      {"jello.w", "R = 30, zero"}, {"moveLeft.w", "left out    plane (none in the file)"}, {"jello.w", "-x + y + z + 2 = 0; the cube starts on its positive side"}};
   for (auto [world, phrase] : expected) {
     Result r = createWorld(std::string("--describe '") + dataPath(world) + "'");
     EXPECT_EQ(r.status, 0) << r.err;

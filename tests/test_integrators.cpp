@@ -52,7 +52,7 @@ Vec3 angularMomentum(const State& s, double mass) {
 double energy(const Model& model, const State& s) {
   double e = 0;
   for (int q = 0; q < kNumPoints; ++q) e += 0.5 * model.world.mass * dot(load(s.v(), q), load(s.v(), q));
-  for (const Spring& sp : model.springs) {
+  for (const Spring& sp : model.springs()) {
     double stretch = length(load(s.p(), sp.a) - load(s.p(), sp.b)) - sp.rest;
     e += 0.5 * model.world.kElastic * stretch * stretch;
   }

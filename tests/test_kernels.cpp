@@ -27,7 +27,7 @@ double relativeDifference(const std::vector<double>& a, const std::vector<double
 double kernelsDisagreeBy(const World& world, const State& start, Integrator integrator = Integrator::RK4) {
   Model specialised = makeModel(world, start, KernelChoice::Specialised);
   Model general = makeModel(world, start, KernelChoice::General);
-  EXPECT_NE(specialised.kernel, general.kernel);
+  EXPECT_TRUE(specialised.scene.culling && !general.scene.culling);
   State a = start, b = start;
   Stepper sa(integrator), sb(integrator);
   double worst = 0;
@@ -135,10 +135,8 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
   for (int world = 0; world < 12; ++world) {
     State start;
     World w = randomWorld(random, &start);
-    Scene scene = analyseScene(w);
     double d = kernelsDisagreeBy(w, start);
-    std::printf("random world %d (dampers %d, plane %d, field %d): %.3g\n", world, scene.dampers, scene.plane,
-                static_cast<int>(scene.field), d);
+    std::printf("random world %d (%s): %.3g\n", world, sceneLine(makeModel(w, start).scene).c_str(), d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
   }
 }
@@ -173,24 +171,38 @@ TEST(Culling, APointJustPastAWallOrThePlaneIsNotMissed) {
   }
 }
 
+// What a specialised scene keeps and what it leaves out, for a world at rest.
+std::string sceneOf(const World& w) { return sceneLine(makeModel(w, test::restLattice()).scene); }
+
 TEST(Scene, FieldAndPlaneAnalysis) {
   World w;
-  EXPECT_EQ(analyseScene(w).field, FieldUse::Absent);
-  EXPECT_FALSE(analyseScene(w).plane);
+  w.dElastic = 0.25;
+  EXPECT_EQ(fieldUse(w.field), FieldUse::Absent);
+  EXPECT_NE(sceneOf(w).find("left out: plane (none in the file), field (none in the file)"), std::string::npos)
+      << sceneOf(w);
   w.field.resolution = 2;
   w.field.forces.assign(24, 0.0);
-  EXPECT_EQ(analyseScene(w).field, FieldUse::Zero);
+  EXPECT_EQ(fieldUse(w.field), FieldUse::Zero);
+  EXPECT_NE(sceneOf(w).find("field (all zero)"), std::string::npos) << sceneOf(w);
   for (std::size_t n = 0; n < 8; ++n) w.field.setNode(n, {0, 0, -9.8});
-  EXPECT_EQ(analyseScene(w).field, FieldUse::Uniform);
-  EXPECT_EQ(analyseScene(w).uniformForce.z, -9.8);
+  EXPECT_EQ(fieldUse(w.field), FieldUse::Uniform);
+  EXPECT_NE(sceneOf(w).find("kept: springs, dampers, walls (when the cube's bounding box reaches them), field "
+                            "(uniform: a constant, no interpolation)"),
+            std::string::npos)
+      << sceneOf(w);
   w.field.setNode(7, {0, 0, std::nextafter(-9.8, 0.0)});
-  EXPECT_EQ(analyseScene(w).field, FieldUse::Trilinear);
+  EXPECT_EQ(fieldUse(w.field), FieldUse::Trilinear);
+  EXPECT_NE(sceneOf(w).find("field (trilinear, 2^3 nodes)"), std::string::npos) << sceneOf(w);
   w.dElastic = 0;
-  EXPECT_FALSE(analyseScene(w).dampers);
+  EXPECT_NE(sceneOf(w).find("left out: dampers (zero damping), plane"), std::string::npos) << sceneOf(w);
   w.dElastic = 0.1;
   w.hasPlane = true;
-  EXPECT_TRUE(analyseScene(w).dampers);
-  EXPECT_TRUE(analyseScene(w).plane);
+  w.plane = {0, 0, 1, 1};
+  EXPECT_NE(sceneOf(w).find("kept: springs, dampers, walls (when the cube's bounding box reaches them), plane (when "
+                            "the bounding box reaches it), field (trilinear"),
+            std::string::npos)
+      << sceneOf(w);
+  EXPECT_NE(sceneOf(w).find("left out: nothing"), std::string::npos) << sceneOf(w);
 }
 
 // The scene line of a headless run (issue 7's examples).

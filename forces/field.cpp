@@ -1,0 +1,299 @@
+// forces/field.cpp: the force field: interpolation, its gradient, the kernel's fast paths, and
+// the recognition of the course's fields.
+
+#include "forces/field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "forces/walls.h"
+
+namespace jello {
+
+FieldUse fieldUse(FieldView field) {
+  if (field.resolution == 0) return FieldUse::Absent;
+  const Vec3 first = field.node(0);
+  bool zero = true, uniform = true;
+  const std::size_t nodes = field.nodes();
+  for (std::size_t n = 0; n < nodes; ++n) {
+    Vec3 f = field.node(n);
+    zero = zero && f.x == 0 && f.y == 0 && f.z == 0;
+    uniform = uniform && f.x == first.x && f.y == first.y && f.z == first.z;
+  }
+  return zero ? FieldUse::Zero : uniform ? FieldUse::Uniform : FieldUse::Trilinear;
+}
+
+namespace {
+
+constexpr int kPaddedNode = 4;  // doubles per node in the padded copy
+
+// A coordinate's cell along one axis, and its position in it: the one mapping the force and
+// its gradient share. The cell is clamped in floating point, so that only a number in
+// [0, lastCell] reaches the integer conversion: a NaN fails g >= 0 and takes cell 0
+// (std::max(NaN, 0.0) would have kept it NaN).
+struct CellCoordinate {
+  int cell;
+  double t;  // position within the cell, 0..1
+};
+inline CellCoordinate cellCoordinate(double x, double cellsPerMetre, double lastCell) {
+  double g = (x + kBoxHalfSize) * cellsPerMetre;
+  const double clamped = !(g >= 0) ? 0.0 : g > lastCell ? lastCell : g;
+  int cell = static_cast<int>(std::floor(clamped));
+  return {cell, g - cell};
+}
+inline double cellsPerMetre(int r) { return (r - 1) / (2 * kBoxHalfSize); }
+
+// A node's force: its 3 doubles in the world's field, or 4 in the kernel's padded copy (the
+// 4th is zero), which makes every interpolation step below one 256-bit vector operation.
+template <int kStride>
+struct NodeForce {
+  double c[kStride];
+};
+
+// From the nearer end, a + t (b - a) or b - (1 - t) (b - a): equal corners give back exactly
+// their value, so a uniform field interpolates to itself bit for bit (the kernel's constant
+// fast path agrees with this, where a sum of eight weighted corners would be off by an ulp or
+// two), and a node gives exactly its own force from either cell. t - 1 is exact for t >= 0.5.
+template <int kStride>
+inline NodeForce<kStride> lerp(const NodeForce<kStride>& a, const NodeForce<kStride>& b, double t) {
+  const bool nearA = t < 0.5;
+  const double s = nearA ? t : t - 1;
+  NodeForce<kStride> out;
+  for (int i = 0; i < kStride; ++i) out.c[i] = (nearA ? a.c[i] : b.c[i]) + s * (b.c[i] - a.c[i]);
+  return out;
+}
+
+// Trilinear interpolation of a field of resolution r >= 2 at a point inside the box.
+template <int kStride>
+inline Vec3 trilinear(const double* f, int r, Vec3 p) {
+  const double perMetre = cellsPerMetre(r), lastCell = r - 2;
+  const CellCoordinate x = cellCoordinate(p.x, perMetre, lastCell), y = cellCoordinate(p.y, perMetre, lastCell),
+                       z = cellCoordinate(p.z, perMetre, lastCell);
+  const double* base = f + kStride * ((x.cell * r + y.cell) * r + z.cell);
+  auto node = [base, r](int di, int dj, int dk) {
+    const double* n = base + kStride * ((di * r + dj) * r + dk);
+    NodeForce<kStride> out;
+    for (int i = 0; i < kStride; ++i) out.c[i] = n[i];
+    return out;
+  };
+  using N = NodeForce<kStride>;
+  const N c00 = lerp(node(0, 0, 0), node(0, 0, 1), z.t), c01 = lerp(node(0, 1, 0), node(0, 1, 1), z.t);
+  const N c10 = lerp(node(1, 0, 0), node(1, 0, 1), z.t), c11 = lerp(node(1, 1, 0), node(1, 1, 1), z.t);
+  const N value = lerp(lerp(c00, c01, y.t), lerp(c10, c11, y.t), x.t);
+  return {value.c[0], value.c[1], value.c[2]};
+}
+
+Vec3 referenceForce(const double* f, int r, Vec3 p) {
+  if (r == 0 || !insideBox(p)) return {};
+  if (r == 1) return {f[0], f[1], f[2]};
+  return trilinear<3>(f, r, p);
+}
+
+Block3 gradientAt(const double* f, int r, Vec3 p) {
+  Block3 J;
+  // Outside the box, or not a number (which fails every comparison): no field, no gradient.
+  if (r < 2 || !insideBox(p)) return J;
+  const double perMetre = cellsPerMetre(r);  // dt/dx of the cell coordinate
+  const CellCoordinate c[3] = {cellCoordinate(p.x, perMetre, r - 2), cellCoordinate(p.y, perMetre, r - 2),
+                               cellCoordinate(p.z, perMetre, r - 2)};
+  for (int corner = 0; corner < 8; ++corner) {
+    const int bit[3] = {(corner >> 2) & 1, (corner >> 1) & 1, corner & 1};
+    double factor[3], slope[3];
+    for (int a = 0; a < 3; ++a) {
+      factor[a] = bit[a] ? c[a].t : 1 - c[a].t;
+      slope[a] = bit[a] ? perMetre : -perMetre;
+    }
+    std::size_t node =
+        (static_cast<std::size_t>(c[0].cell + bit[0]) * r + (c[1].cell + bit[1])) * r + (c[2].cell + bit[2]);
+    const Vec3 force = FieldView(f, r).node(node);
+    const double fv[3] = {force.x, force.y, force.z};
+    const double dw[3] = {slope[0] * factor[1] * factor[2], factor[0] * slope[1] * factor[2],
+                          factor[0] * factor[1] * slope[2]};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) J.m[3 * i + j] += fv[i] * dw[j];
+  }
+  return J;
+}
+
+}  // namespace
+
+Vec3 fieldForce(const ForceField& field, Vec3 p) {
+  return referenceForce(field.forces.data(), field.resolution, p);
+}
+
+Block3 fieldJacobian(const ForceField& field, Vec3 p) { return gradientAt(field.forces.data(), field.resolution, p); }
+
+FieldTerm::FieldTerm(const ForceField& field, Method method) : field_(field), method_(method) {
+  const std::size_t nodes = field.forces.size() / 3;
+  for (std::size_t n = 0; n < nodes; ++n) largestNode_ = std::max(largestNode_, length(field.node(n)));
+  if (method == Method::Uniform) uniform_ = field.node(0);
+  if (method == Method::Padded) {
+    padded_.assign(kPaddedNode * nodes, 0.0);
+    for (std::size_t n = 0; n < nodes; ++n)
+      for (int axis = 0; axis < 3; ++axis) padded_[kPaddedNode * n + axis] = field.forces[3 * n + axis];
+  }
+}
+
+bool FieldTerm::mayReach(const Bounds& box) const {
+  return box.lower.x <= kBoxHalfSize && box.upper.x >= -kBoxHalfSize && box.lower.y <= kBoxHalfSize &&
+         box.upper.y >= -kBoxHalfSize && box.lower.z <= kBoxHalfSize && box.upper.z >= -kBoxHalfSize;
+}
+
+namespace {
+// Every point of the box is inside [-2,2]^3, so no point needs the inside test.
+bool allInside(const Bounds* box) { return box && insideBox(box->lower) && insideBox(box->upper); }
+}  // namespace
+
+// Point by point, each interpolation step one vector operation on padded nodes: 40% faster
+// here than scalar steps, where vectorising across points (gathers) was 20% slower.
+void FieldTerm::addForces(const double* p, const double*, const Bounds* box, double* force) const {
+  const bool inside = allInside(box);
+  switch (method_) {
+    case Method::Uniform:
+      for (int q = 0; q < kNumPoints; ++q)
+        store(force, q, load(force, q) + (inside || insideBox(load(p, q)) ? uniform_ : Vec3{}));
+      return;
+    case Method::Padded:
+      if (inside) {  // the common case, without the per-point test
+        for (int q = 0; q < kNumPoints; ++q)
+          store(force, q, load(force, q) + trilinear<kPaddedNode>(padded_.data(), field_.resolution, load(p, q)));
+        return;
+      }
+      for (int q = 0; q < kNumPoints; ++q) {
+        const Vec3 pq = load(p, q), f = trilinear<kPaddedNode>(padded_.data(), field_.resolution, pq);
+        const bool in = insideBox(pq);
+        store(force, q, load(force, q) + Vec3{in ? f.x : 0.0, in ? f.y : 0.0, in ? f.z : 0.0});
+      }
+      return;
+    case Method::Reference:
+      for (int q = 0; q < kNumPoints; ++q)
+        store(force, q, load(force, q) + referenceForce(field_.forces, field_.resolution, load(p, q)));
+      return;
+  }
+}
+
+void FieldTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
+  const Block3 none;
+  for (int q = 0; q < kNumPoints; ++q) sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q)), none);
+}
+
+void FieldTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {
+  switch (method_) {
+    case Method::Uniform:
+      kept->push_back("field (uniform: a constant, no interpolation)");
+      return;
+    case Method::Padded:
+    case Method::Reference:
+      kept->push_back("field (trilinear, " + std::to_string(field_.resolution) + "^3 nodes)");
+      return;
+  }
+}
+
+std::vector<TermLine> FieldTerm::describe(const double*) const {
+  if (field_.resolution == 0) return {{"field", "none"}};
+  const FieldShape shape = classifyField(field_);
+  std::string text = textf("R = %d, %s", field_.resolution, fieldKindName(shape.kind));
+  switch (shape.kind) {
+    case FieldKind::Uniform:
+      text += textf(" F = (%.6g, %.6g, %.6g) N", shape.uniform.x, shape.uniform.y, shape.uniform.z);
+      break;
+    case FieldKind::Swirl:
+      text += textf(" about z, F = %.6g (-y, x, 0) N", shape.strength);
+      break;
+    case FieldKind::Radial:
+      text += textf(", F = %.6g (x, y, z) N", shape.strength);
+      break;
+    case FieldKind::Zero:
+    case FieldKind::General:
+      break;
+  }
+  if (shape.kind != FieldKind::Zero) text += textf("; |F| from %.6g to %.6g N", shape.smallest, shape.largest);
+  return {{"field", text}};
+}
+
+double fieldNodeCoordinate(int index, int resolution) {
+  return -kBoxHalfSize + 2 * kBoxHalfSize * index / (resolution - 1);
+}
+
+const char* fieldKindName(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::Zero:
+      return "zero";
+    case FieldKind::Uniform:
+      return "uniform";
+    case FieldKind::Swirl:
+      return "swirl";
+    case FieldKind::Radial:
+      return "radial";
+    case FieldKind::General:
+      return "general";
+  }
+  return "general";  // not reached: every kind is named above
+}
+
+namespace {
+
+// The course's files hold six decimals: a value is "the same" within half of their last digit,
+// plus a little for the rounding of the node coordinates themselves.
+constexpr double kFileRounding = 1e-6;
+
+Vec3 nodePosition(std::size_t node, int r) {
+  std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
+  return {fieldNodeCoordinate(static_cast<int>(i), r), fieldNodeCoordinate(static_cast<int>(j), r),
+          fieldNodeCoordinate(static_cast<int>(k), r)};
+}
+
+// Least-squares s of F ~ s * pattern(p) over the nodes, and whether every node fits.
+bool fitsPattern(FieldView field, Vec3 (*pattern)(Vec3), double* strength) {
+  const int r = field.resolution;
+  const std::size_t nodes = field.nodes();
+  double num = 0, den = 0;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    Vec3 g = pattern(nodePosition(node, r)), f = field.node(node);
+    num += dot(f, g);
+    den += dot(g, g);
+  }
+  if (den == 0) return false;
+  *strength = num / den;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    Vec3 g = pattern(nodePosition(node, r)), f = field.node(node);
+    Vec3 misfit = f - *strength * g;
+    if (std::max({std::fabs(misfit.x), std::fabs(misfit.y), std::fabs(misfit.z)}) > kFileRounding) return false;
+  }
+  return true;
+}
+
+Vec3 swirl(Vec3 p) { return {-p.y, p.x, 0}; }
+Vec3 radial(Vec3 p) { return p; }
+
+}  // namespace
+
+FieldShape classifyField(FieldView field) {
+  FieldShape shape;
+  const std::size_t nodes = field.nodes();
+  if (nodes == 0) return shape;
+  shape.smallest = INFINITY;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    double magnitude = length(field.node(node));
+    shape.smallest = std::min(shape.smallest, magnitude);
+    shape.largest = std::max(shape.largest, magnitude);
+  }
+  const FieldUse use = fieldUse(field);  // the exact zero and uniform tests, as the kernel's
+  if (use == FieldUse::Zero) return shape;
+  if (use == FieldUse::Uniform) {
+    shape.kind = FieldKind::Uniform;
+    shape.uniform = field.node(0);
+    return shape;
+  }
+  if (field.resolution >= 2) {
+    for (auto [pattern, kind] : {std::pair{&swirl, FieldKind::Swirl}, std::pair{&radial, FieldKind::Radial}})
+      if (fitsPattern(field, pattern, &shape.strength)) {
+        shape.kind = kind;
+        return shape;
+      }
+  }
+  shape.kind = FieldKind::General;
+  return shape;
+}
+
+}  // namespace jello

@@ -1,0 +1,119 @@
+// forces/plane.cpp: the inclined plane: force, reach test, Jacobian, energy and description.
+
+#include "forces/plane.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jello {
+
+Plane normalisedPlane(const Plane& plane) {
+  const double largest = std::max({std::fabs(plane.a), std::fabs(plane.b), std::fabs(plane.c)});
+  if (largest == 0 || !std::isfinite(largest)) return plane;  // refused by the reader already
+  int exponent;
+  std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
+  return {std::ldexp(plane.a, -exponent), std::ldexp(plane.b, -exponent), std::ldexp(plane.c, -exponent),
+          std::ldexp(plane.d, -exponent)};
+}
+
+std::string planeProblem(const Plane& plane) {
+  if (plane.a == 0 && plane.b == 0 && plane.c == 0) return "the plane's normal (a,b,c) is zero";
+  if (!std::isfinite(normalisedPlane(plane).d)) {
+    return "the plane is too far from the origin to simulate: d is more than 1e308 times the "
+           "largest of |a|, |b|, |c|, beyond the range of doubles";
+  }
+  return "";
+}
+
+double allowedSide(const Plane& plane, const double* p) {
+  Vec3 centroid;
+  for (int q = 0; q < kNumPoints; ++q) centroid += load(p, q);
+  centroid = (1.0 / kNumPoints) * centroid;
+  return planeValue(normalisedPlane(plane), centroid) >= 0 ? 1 : -1;
+}
+
+std::string planeEquation(const Plane& p) {
+  std::string out;
+  const double coefficient[4] = {p.a, p.b, p.c, p.d};
+  const char* names[4] = {"x", "y", "z", ""};
+  for (int i = 0; i < 4; ++i) {
+    double c = coefficient[i];
+    if (c == 0) continue;
+    out += out.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ");
+    if (std::fabs(c) != 1 || i == 3) out += textf("%.9g", std::fabs(c)) + (i < 3 ? " " : "");
+    out += names[i];
+  }
+  return out + " = 0";
+}
+
+void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv) {
+  *dFdp = Block3{};
+  *dFdv = Block3{};
+  if (!(planeValue(plane, p) * side < 0)) return;
+  const double n[3] = {plane.a, plane.b, plane.c};
+  const double norm2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double nn = n[i] * n[j] / norm2;
+      dFdp->m[3 * i + j] = -k * nn;
+      dFdv->m[3 * i + j] = -d * nn;
+    }
+}
+
+// The margin covers the rounding by which a point's own value may differ from the corner's.
+bool mayCrossPlane(const Plane& plane, double side, const Bounds& b) {
+  auto lowest = [side](double coefficient, double lo, double hi) {
+    return std::min(side * coefficient * lo, side * coefficient * hi);
+  };
+  double smallest = lowest(plane.a, b.lower.x, b.upper.x) + lowest(plane.b, b.lower.y, b.upper.y) +
+                    lowest(plane.c, b.lower.z, b.upper.z) + side * plane.d;
+  auto largest = [](double lo, double hi) { return std::max(std::fabs(lo), std::fabs(hi)); };
+  double scale = std::fabs(plane.a) * largest(b.lower.x, b.upper.x) + std::fabs(plane.b) * largest(b.lower.y, b.upper.y) +
+                 std::fabs(plane.c) * largest(b.lower.z, b.upper.z) + std::fabs(plane.d);
+  constexpr double kRelativeMargin = 1e-12;
+  return !(smallest > kRelativeMargin * scale);
+}
+
+PlaneTerm::PlaneTerm(const Plane& given, double side, double k, double d)
+    : given_(given), plane_(normalisedPlane(given)), side_(side), k_(k), d_(d) {}
+
+int PlaneTerm::pointsAcross(const double* p) const {
+  int across = 0;
+  for (int q = 0; q < kNumPoints; ++q)
+    if (planeValue(plane_, load(p, q)) * side_ < 0) ++across;
+  return across;
+}
+
+void PlaneTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
+  for (int q = 0; q < kNumPoints; ++q)
+    store(force, q, load(force, q) + planeForce(plane_, side_, load(p, q), load(v, q), k_, d_));
+}
+
+void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
+  Block3 dFdp, dFdv;
+  for (int q = 0; q < kNumPoints; ++q) {
+    planeJacobian(plane_, side_, load(p, q), k_, d_, &dFdp, &dFdv);
+    sink->addPoint(q, dFdp, dFdv);
+  }
+}
+
+void PlaneTerm::addEnergy(const double* p, double* energy) const {
+  const double norm2 = plane_.a * plane_.a + plane_.b * plane_.b + plane_.c * plane_.c;
+  for (int q = 0; q < kNumPoints; ++q) {
+    double s = planeValue(plane_, load(p, q));
+    if (s * side_ < 0) *energy += 0.5 * k_ * s * s / norm2;
+  }
+}
+
+void PlaneTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {
+  kept->push_back("plane (when the bounding box reaches it)");
+}
+
+std::vector<TermLine> PlaneTerm::describe(const double* p) const {
+  std::string text =
+      planeEquation(given_) + textf("; the cube starts on its %s side", side_ > 0 ? "positive" : "negative");
+  if (int across = pointsAcross(p)) text += textf(", %d points across it", across);
+  return {{"plane", text}};
+}
+
+}  // namespace jello
