@@ -15,6 +15,7 @@
 #include "output.h"
 #include "integrators.h"
 #include "physics.h"
+#include "progress.h"
 #include "simulation.h"
 #include "stability.h"
 
@@ -30,39 +31,35 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A progress line on a terminal, rewritten in place at most a few times a second, only once
-// the run has taken long enough for a user to wonder. Silent when stderr is not a terminal.
-class Progress {
+// The run's progress line, redrawn at most a few times a second, and only once the run has
+// taken long enough for a user to wonder.
+class RunProgress {
  public:
-  Progress(long long totalSteps, const FrameObserver* frames)
-      : total_(totalSteps), frames_(frames), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  RunProgress(long long totalSteps, const FrameObserver* frames) : total_(totalSteps), frames_(frames) {}
 
   void update(long long done) {
-    if (!enabled_ || done % kProgressEvery != 0) return;
+    if (!line_.enabled() || done % kProgressEvery != 0) return;
     double elapsed = secondsSince(start_);
     if (elapsed < kQuietSeconds || elapsed - lastShown_ < kRefreshSeconds) return;
     lastShown_ = elapsed;
     double left = elapsed / done * (total_ - done);
+    char text[160];
     if (frames_) {
-      std::fprintf(stderr, "\rframe %d, %.0f frames/s, step %lld/%lld, %.0f s left   ", frames_->framesDone(),
-                   frames_->framesDone() / elapsed, done, total_, left);
+      std::snprintf(text, sizeof text, "frame %d, %.0f frames/s, step %lld/%lld, %.0f s left", frames_->framesDone(),
+                    frames_->framesDone() / elapsed, done, total_, left);
     } else {
-      std::fprintf(stderr, "\rstep %lld/%lld (%.0f%%), %.0f s left   ", done, total_, 100.0 * done / total_, left);
+      std::snprintf(text, sizeof text, "step %lld/%lld (%.0f%%), %.0f s left", done, total_, 100.0 * done / total_, left);
     }
-    shown_ = true;
+    line_.show(text);
   }
-
-  ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r%70s\r", "");
-  }
+  void finish() { line_.finish(); }
 
  private:
   static constexpr double kQuietSeconds = 1.0;
   static constexpr double kRefreshSeconds = 0.25;
   long long total_;
   const FrameObserver* frames_;
-  bool enabled_;
-  bool shown_ = false;
+  Progress line_;
   double lastShown_ = 0;
   Clock::time_point start_ = Clock::now();
 };
@@ -197,7 +194,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
 
   const Model model = makeModel(world, file.state, options.kernel);
   Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
-  Progress progress(steps, frames);
+  RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] { frames->frame(model, simulation.state()); };
   if (frames && !observed([&] { frames->begin(); showFrame(); })) return kExitBadInput;
@@ -213,6 +210,7 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     if (frames && simulation.step() % world.n == 0 && frames->wantsMore() && !observed(showFrame)) return kExitBadInput;
     progress.update(simulation.step());
   }
+  progress.finish();
   printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
 
   if (options.dumpPath) {

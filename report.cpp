@@ -22,6 +22,7 @@
 #include "physics.h"
 #include "output.h"
 #include "plot.h"
+#include "progress.h"
 #include "simulation.h"
 
 namespace jello {
@@ -88,21 +89,19 @@ double rms(const State& a, const State& b, double* largest) {
   return std::sqrt(sum / kNumPoints);
 }
 
-class Progress {
+// The report's progress line: what runs now, and how many of the report's runs have begun.
+class ReportProgress {
  public:
-  explicit Progress(int total) : total_(total), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  explicit ReportProgress(int total) : total_(total) {}
+  void finish() { line_.finish(); }
   void show(const std::string& what) {
     ++done_;
-    if (enabled_) std::fprintf(stderr, "\r%-70s", ("report: " + what + " (" + std::to_string(done_) + "/" +
-                                                   std::to_string(total_) + ")").c_str());
-  }
-  ~Progress() {
-    if (enabled_) std::fprintf(stderr, "\r%70s\r", "");
+    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) + ")");
   }
 
  private:
   int total_, done_ = 0;
-  bool enabled_;
+  Progress line_;
 };
 
 std::string number(double x) {
@@ -220,7 +219,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     return kExitBadInput;
   }
 
-  Progress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+  ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
   std::vector<ReportRow> rows;
   std::vector<State> ends;
 
@@ -320,6 +319,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   const ReportRow* asAccurate = ownRow && !ownRow->diverged ? cheapest(ownRow->rmsError) : nullptr;
   const ReportRow* looksSame = cheapest(options.visualTolerance);
   const double floor = 10 * referenceError;
+  progress.finish();
 
   // The files.
   std::string title = runOptions.worldPath + ": error at T = " + number(T) + " s against run time";

@@ -22,6 +22,7 @@
 #include "jacobian.h"
 #include "output.h"
 #include "plot.h"
+#include "progress.h"
 #include "simulation.h"
 
 namespace jello {
@@ -382,6 +383,7 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
   std::ostringstream csv, data;
   csv << "kElastic,integrator,predicted_dt,observed_dt\n";
   std::map<std::string, std::string> predictedRows, observedRows;
+  Progress progress;
   for (int e = -3; e <= 3; ++e) {
     World w = world;
     w.kElastic = base * std::pow(2.0, e);
@@ -402,9 +404,11 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
         observedRows[integratorName(integrator)] += line;
       }
     }
-    if (::isatty(2)) std::fprintf(stderr, "\rmap: kElastic %g done   ", w.kElastic);
+    char done[64];
+    std::snprintf(done, sizeof done, "map: kElastic %g done", w.kElastic);
+    progress.show(done);
   }
-  if (::isatty(2)) std::fprintf(stderr, "\r%40s\r", "");
+  progress.finish();
   std::ostringstream gp;
   gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png again.\n";
   std::string plots;
