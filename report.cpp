@@ -193,18 +193,15 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-int runReport(const RunOptions& runOptions, const ReportOptions& options) {
+Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   WorldFile file;
-  if (!loadRun(runOptions, &file)) return kExitBadInput;
+  if (Outcome loaded = loadRun(runOptions, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   const State& start = file.state;
   const Model model = makeModel(world, start);
   const double T = options.time;
   // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
-  if (!stepsForTime(T, world.dt)) {
-    std::fprintf(stderr, "jello: --report: %s\n", tooManyStepsMessage(T, world.dt).c_str());
-    return kExitBadInput;
-  }
+  if (!stepsForTime(T, world.dt)) return failed("--report: " + tooManyStepsMessage(T, world.dt));
   std::vector<Integrator> integrators = options.integrators;
   if (integrators.empty())
     for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
@@ -215,8 +212,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   try {
     claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
   } catch (const OutputError& e) {
-    printError(std::string("--report: ") + e.what());
-    return kExitBadInput;
+    return failed(std::string("--report: ") + e.what());
   }
 
   ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
@@ -295,10 +291,8 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   }
   reference = simulate(model, start, Integrator::RK4, referenceStep, T);
   if (other.joinable()) other.join();
-  if (reference.diverged || check.diverged) {
-    printError("--report: the reference run (RK4 at dt=" + number(referenceStep) + ") diverged; no report");
-    return kExitDiverged;
-  }
+  if (reference.diverged || check.diverged)
+    return diverged("--report: the reference run (RK4 at dt=" + number(referenceStep) + ") diverged; no report");
   double referenceMax;
   const double referenceError = rms(reference.end, check.end, &referenceMax);
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -381,13 +375,10 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
                    existing);
   } catch (const OutputError& e) {
-    printError(e.what());
-    return kExitBadInput;
+    return failed(e.what());
   }
   const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
   const bool drawn = whyNotDrawn.empty();
-  if (!drawn) printError("report.png was not drawn: " + whyNotDrawn);
-  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
 
   std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",
               runOptions.worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", rows.size(), T,
@@ -400,7 +391,10 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
     std::printf("within %g m: %s, %s\n", options.visualTolerance, describeSetting(*looksSame).c_str(),
                 speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
-  return status;
+  if (drawn) return succeeded();
+  // Without gnuplot the data files are the report; a gnuplot that failed is a failure.
+  const std::string notDrawn = "report.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
 }
 
 }  // namespace jello

@@ -368,15 +368,14 @@ double observedLimit(const Model& model, const State& start, Integrator integrat
   return low;
 }
 
-int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
-                      double time, bool overwrite) {
+Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world,
+                          const State& initial, double time, bool overwrite) {
   FolderClaim claim;
   const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
   try {
     claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
   } catch (const OutputError& e) {
-    printError(std::string("--map: ") + e.what());
-    return 2;
+    return failed(std::string("--map: ") + e.what());
   }
   const double base = world.kElastic > 0 ? world.kElastic : 500;
   const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint, Integrator::RK4};
@@ -434,16 +433,16 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
     writeFileWhole(dir + "/stability-map.csv", csv.str(), existing);
     writeFileWhole(dir + "/stability-map.gp", gp.str(), existing);
   } catch (const OutputError& e) {
-    printError(e.what());
-    return 2;
+    return failed(e.what());
   }
   const std::string whyNotDrawn = drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
   const bool drawn = whyNotDrawn.empty();
-  if (!drawn) printError("stability-map.png was not drawn: " + whyNotDrawn);
-  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
   std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
               drawn ? ", stability-map.png" : "");
-  return status;
+  if (drawn) return succeeded();
+  // Without gnuplot the CSV is the map; a gnuplot that failed is a failure.
+  const std::string notDrawn = "stability-map.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
 }
 
 Verdict verdictFor(double dt, double critical, double stableFraction) {
