@@ -127,9 +127,9 @@ std::string machineDescription() {
   return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores, " + compiler;
 }
 
-int runBench(const RunOptions& run) {
+Outcome runBench(const RunOptions& run) {
   WorldFile file;
-  if (!loadRun(run, &file)) return kExitBadInput;
+  if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   const Model specialised = makeModel(world, file.state, KernelChoice::Specialised);
   const Model general = makeModel(world, file.state, KernelChoice::General);
@@ -180,7 +180,7 @@ int runBench(const RunOptions& run) {
                 g.seconds / s.seconds, s.evaluationsPerStep, note);
     std::fflush(stdout);
   }
-  return kExitOk;
+  return succeeded();
 }
 
 }  // namespace jello

@@ -7,9 +7,9 @@
 namespace jello {
 
 // Times force evaluations and steps from the world's initial state at its dt (or the run's
-// overrides); prints a table on stdout and returns the exit status. With run.steps set, every
+// overrides); prints a table on stdout and says how it went (outcome.h). With run.steps set, every
 // timing runs that many steps (or evaluations) instead of about kBenchSeconds' worth.
-int runBench(const RunOptions& run);
+Outcome runBench(const RunOptions& run);
 
 constexpr double kBenchSeconds = 0.03;  // per timed repeat
 constexpr int kBenchRepeats = 7;        // the median of these is reported

@@ -23,6 +23,7 @@
 #include "cli.h"
 #include "describe.h"
 #include "output.h"
+#include "outcome.h"
 #include "memory.h"
 #include "physics.h"
 #include "stability.h"
@@ -40,11 +41,6 @@ constexpr int kExitBadInput = 2;
 constexpr const char* kVersion = "createWorld 0.1.0";
 
 Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
-
-int fail(const std::string& message) {
-  jello::printError(message);
-  return kExitBadInput;
-}
 
 void warn(const std::string& message) { jello::printError("warning: " + message); }
 
@@ -117,252 +113,328 @@ std::string describeProblem(const jello::WorldProblem& problem, const CLI::App& 
   return "the world would be invalid: " + problem.what + (from.empty() ? "" : from + ")");
 }
 
-}  // namespace
-
-static int createWorld(int argc, char** argv) {
-  CLI::App app{
-      "createWorld: builds a jello world file (SPEC section 1). Start from the defaults (the course's "
-      "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
-      "what the options say.",
-      "createWorld"};
-  app.set_version_flag("--version", kVersion);
+// What the command line says, filled in by CLI11: the values, and the options to ask whether
+// each was given. Bound by address to the App, so it stays where it is made (no copies).
+struct Options {
+  Options() = default;
+  Options(const Options&) = delete;
+  Options& operator=(const Options&) = delete;
 
   std::string output, describe, preset, from;
   bool force = false;
-  app.add_option("-o,--output", output, "the world file to write")->type_name("FILE");
-  auto* describeOption = app.add_option("--describe", describe, "print what WORLD is, and exit")->type_name("WORLD");
-  app.add_flag("--force", force, "replace FILE when it exists");
   double maxMemory = 0;
-  auto* maxMemoryOption =
-      app.add_option(
-             "--max-memory", maxMemory,
-             "memory the world may take, GB (default: what the machine and its limits allow)")
-          ->type_name("GB")
-          ->check(kPositive);
-  auto* presetOption = app.add_option("--preset", preset, "start from a course world")->type_name("NAME")
-                           ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
-  auto* fromOption = app.add_option("--from", from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
-  presetOption->excludes(fromOption);
+  CLI::Option *describeOption = nullptr, *maxMemoryOption = nullptr, *presetOption = nullptr, *fromOption = nullptr;
 
   std::string integrator;
   double dt = 0, kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0, mass = 0;
   int n = 0;
   std::vector<double> plane;
-  auto* integratorOption = app.add_option("--integrator", integrator, jello::integratorNameList() + ", any case")->type_name("NAME")->group("Parameters");
-  auto* dtOption = app.add_option("--dt", dt, "time step, s")->type_name("DT")->transform(kPositive)->group("Parameters");
-  auto* nOption = app.add_option("--n", n, "steps per drawn frame")->type_name("N")
-                      ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))
-                      ->group("Parameters");
-  auto* kElasticOption = app.add_option("--k-elastic", kElastic, "spring stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
-  auto* dElasticOption = app.add_option("--d-elastic", dElastic, "spring damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
-  auto* kCollisionOption =
-      app.add_option("--k-collision", kCollision, "collision stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
-  auto* dCollisionOption =
-      app.add_option("--d-collision", dCollision, "collision damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
-  auto* massOption = app.add_option("--mass", mass, "mass of each of the 512 points, kg")->type_name("KG")->transform(kPositive)->group("Parameters");
-  auto* planeOption = app.add_option("--plane", plane, "inclined plane a x + b y + c z + d = 0")->type_name("A B C D")
-                          ->expected(4)
-                          ->transform(kFinite)
-                          ->group("Parameters");
-  auto* noPlaneOption = app.add_flag("--no-plane", "no inclined plane")->group("Parameters");
-  planeOption->excludes(noPlaneOption);
+  CLI::Option *integratorOption = nullptr, *dtOption = nullptr, *nOption = nullptr, *kElasticOption = nullptr,
+              *dElasticOption = nullptr, *kCollisionOption = nullptr, *dCollisionOption = nullptr,
+              *massOption = nullptr, *planeOption = nullptr, *noPlaneOption = nullptr;
 
   int resolution = 0;
   std::vector<double> uniform;
   double swirl = 0, radial = 0;
   std::string expression, fieldFrom;
-  auto* resolutionOption = app.add_option("--field-resolution", resolution, "field grid R (R^3 nodes; 0: no field)")->type_name("R")
-                               ->transform(jello::wholeNumber(0, jello::kMaxResolution))
-                               ->group("Force field");
-  auto* uniformOption =
-      app.add_option("--field-uniform", uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->transform(kFinite)->group("Force field");
-  auto* swirlOption =
-      app.add_option("--field-swirl", swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->transform(kFinite)->group("Force field");
-  auto* radialOption =
-      app.add_option("--field-radial", radial, "radial: F = S (x, y, z)")->type_name("S")->transform(kFinite)->group("Force field");
-  auto* expressionOption =
-      app.add_option("--field-expr", expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")->type_name("'FX; FY; FZ'")->group("Force field");
-  auto* fieldFromOption = app.add_option("--field-from", fieldFrom, "copy the field of WORLD")->type_name("WORLD")->group("Force field");
-  std::vector<CLI::Option*> fieldSources = {uniformOption, swirlOption, radialOption, expressionOption, fieldFromOption};
-  for (CLI::Option* a : fieldSources)
-    for (CLI::Option* b : fieldSources)
-      if (a != b) a->excludes(b);
-  fieldFromOption->excludes(resolutionOption);
+  CLI::Option *resolutionOption = nullptr, *uniformOption = nullptr, *swirlOption = nullptr, *radialOption = nullptr,
+              *expressionOption = nullptr, *fieldFromOption = nullptr;
+  std::vector<CLI::Option*> fieldSources;  // the options that each give the whole field
 
   double cubeSize = 1;
   std::vector<double> center, rotation, velocity, spin, skew;
-  auto* sizeOption = app.add_option("--cube-size", cubeSize, "edge of the cube at rest, m (default 1)")->type_name("L")
-                         ->transform(kPositive)
-                         ->group("Initial state");
-  auto* centerOption = app.add_option("--center", center, "centre of the cube X Y Z, m (default: corner at the origin)")->type_name("X Y Z")
-                           ->expected(3)
-                           ->transform(kFinite)
-                           ->group("Initial state");
-  auto* rotateOption = app.add_option("--rotate", rotation, "turn the cube about x, then y, then z, degrees")->type_name("AX AY AZ")
-                           ->expected(3)
-                           ->transform(kFinite)
-                           ->group("Initial state");
-  auto* velocityOption = app.add_option("--velocity", velocity, "velocity of every point VX VY VZ, m/s")->type_name("VX VY VZ")
-                             ->expected(3)
-                             ->transform(kFinite)
-                             ->group("Initial state");
-  auto* spinOption = app.add_option("--spin", spin, "rigid angular velocity WX WY WZ about the centre, rad/s")->type_name("WX WY WZ")
-                         ->expected(3)
-                         ->transform(kFinite)
-                         ->group("Initial state");
-  auto* skewOption = app.add_option("--skew-corner", skew, "displace corner p[7][7][7] by DX DY DZ, m")->type_name("DX DY DZ")
-                         ->expected(3)
-                         ->transform(kFinite)
-                         ->group("Initial state");
   bool insideOut = false;
-  app.add_flag("--inside-out", insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
-  sizeOption->excludes(fromOption);
+  CLI::Option *sizeOption = nullptr, *centerOption = nullptr, *rotateOption = nullptr, *velocityOption = nullptr,
+              *spinOption = nullptr, *skewOption = nullptr;
+};
 
-  int status = 0;
-  if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
+void addGeneralOptions(CLI::App& app, Options& o) {
+  app.set_version_flag("--version", kVersion);
+  app.add_option("-o,--output", o.output, "the world file to write")->type_name("FILE");
+  o.describeOption = app.add_option("--describe", o.describe, "print what WORLD is, and exit")->type_name("WORLD");
+  app.add_flag("--force", o.force, "replace FILE when it exists");
+  o.maxMemoryOption =
+      app.add_option(
+             "--max-memory", o.maxMemory,
+             "memory the world may take, GB (default: what the machine and its limits allow)")
+          ->type_name("GB")
+          ->check(kPositive);
+  o.presetOption = app.add_option("--preset", o.preset, "start from a course world")->type_name("NAME")
+                       ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
+  o.fromOption = app.add_option("--from", o.from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
+  o.presetOption->excludes(o.fromOption);
+}
 
-  if (*maxMemoryOption)
-    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(maxMemory * 1e9, 1e18)));
+void addParameterOptions(CLI::App& app, Options& o) {
+  o.integratorOption = app.add_option("--integrator", o.integrator, jello::integratorNameList() + ", any case")->type_name("NAME")->group("Parameters");
+  o.dtOption = app.add_option("--dt", o.dt, "time step, s")->type_name("DT")->transform(kPositive)->group("Parameters");
+  o.nOption = app.add_option("--n", o.n, "steps per drawn frame")->type_name("N")
+                  ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))
+                  ->group("Parameters");
+  o.kElasticOption = app.add_option("--k-elastic", o.kElastic, "spring stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
+  o.dElasticOption = app.add_option("--d-elastic", o.dElastic, "spring damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
+  o.kCollisionOption =
+      app.add_option("--k-collision", o.kCollision, "collision stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
+  o.dCollisionOption =
+      app.add_option("--d-collision", o.dCollision, "collision damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
+  o.massOption = app.add_option("--mass", o.mass, "mass of each of the 512 points, kg")->type_name("KG")->transform(kPositive)->group("Parameters");
+  o.planeOption = app.add_option("--plane", o.plane, "inclined plane a x + b y + c z + d = 0")->type_name("A B C D")
+                      ->expected(4)
+                      ->transform(kFinite)
+                      ->group("Parameters");
+  o.noPlaneOption = app.add_flag("--no-plane", "no inclined plane")->group("Parameters");
+  o.planeOption->excludes(o.noPlaneOption);
+}
+
+void addFieldOptions(CLI::App& app, Options& o) {
+  o.resolutionOption = app.add_option("--field-resolution", o.resolution, "field grid R (R^3 nodes; 0: no field)")->type_name("R")
+                           ->transform(jello::wholeNumber(0, jello::kMaxResolution))
+                           ->group("Force field");
+  o.uniformOption =
+      app.add_option("--field-uniform", o.uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->transform(kFinite)->group("Force field");
+  o.swirlOption =
+      app.add_option("--field-swirl", o.swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->transform(kFinite)->group("Force field");
+  o.radialOption =
+      app.add_option("--field-radial", o.radial, "radial: F = S (x, y, z)")->type_name("S")->transform(kFinite)->group("Force field");
+  o.expressionOption =
+      app.add_option("--field-expr", o.expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")->type_name("'FX; FY; FZ'")->group("Force field");
+  o.fieldFromOption = app.add_option("--field-from", o.fieldFrom, "copy the field of WORLD")->type_name("WORLD")->group("Force field");
+  o.fieldSources = {o.uniformOption, o.swirlOption, o.radialOption, o.expressionOption, o.fieldFromOption};
+  for (CLI::Option* a : o.fieldSources)
+    for (CLI::Option* b : o.fieldSources)
+      if (a != b) a->excludes(b);
+  o.fieldFromOption->excludes(o.resolutionOption);
+}
+
+void addStateOptions(CLI::App& app, Options& o) {
+  o.sizeOption = app.add_option("--cube-size", o.cubeSize, "edge of the cube at rest, m (default 1)")->type_name("L")
+                     ->transform(kPositive)
+                     ->group("Initial state");
+  o.centerOption = app.add_option("--center", o.center, "centre of the cube X Y Z, m (default: corner at the origin)")->type_name("X Y Z")
+                       ->expected(3)
+                       ->transform(kFinite)
+                       ->group("Initial state");
+  o.rotateOption = app.add_option("--rotate", o.rotation, "turn the cube about x, then y, then z, degrees")->type_name("AX AY AZ")
+                       ->expected(3)
+                       ->transform(kFinite)
+                       ->group("Initial state");
+  o.velocityOption = app.add_option("--velocity", o.velocity, "velocity of every point VX VY VZ, m/s")->type_name("VX VY VZ")
+                         ->expected(3)
+                         ->transform(kFinite)
+                         ->group("Initial state");
+  o.spinOption = app.add_option("--spin", o.spin, "rigid angular velocity WX WY WZ about the centre, rad/s")->type_name("WX WY WZ")
+                     ->expected(3)
+                     ->transform(kFinite)
+                     ->group("Initial state");
+  o.skewOption = app.add_option("--skew-corner", o.skew, "displace corner p[7][7][7] by DX DY DZ, m")->type_name("DX DY DZ")
+                     ->expected(3)
+                     ->transform(kFinite)
+                     ->group("Initial state");
+  app.add_flag("--inside-out", o.insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
+  o.sizeOption->excludes(o.fromOption);
+}
+
+// createWorld --describe WORLD.
+jello::Outcome printDescription(const Options& o) {
+  jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
+  if (!o.output.empty()) return jello::failed("--describe reads a world; it does not go with -o");
+  jello::WorldFile file = jello::readWorldFile(o.describe);
+  std::printf("%s\n%s", o.describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
+  return jello::succeeded();
+}
+
+// The world to change: the defaults, a --preset or a --from world.
+jello::Recipe startingRecipe(const Options& o) {
+  jello::Recipe recipe = jello::defaultRecipe();
+  if (*o.presetOption) recipe = jello::coursePreset(o.preset);
+  if (*o.fromOption) {
+    jello::WorldFile base = jello::readWorldFile(o.from);
+    // The field is moved, never copied: createWorld holds one field at a time.
+    recipe.field.source = jello::FieldRecipe::Source::Given;
+    recipe.field.given = std::move(base.world.field);
+    base.world.field = {};
+    recipe.world = std::move(base.world);
+    recipe.state.from = base.state;
+  }
+  return recipe;
+}
+
+// The Parameters options, applied to `w`.
+jello::Outcome applyParameters(const Options& o, jello::World& w) {
+  if (*o.integratorOption && !jello::parseIntegratorName(o.integrator, &w.integrator)) {
+    return jello::failed("--integrator: unknown integrator '" + o.integrator + "', expected " + jello::integratorNameList());
+  }
+  if (*o.dtOption) w.dt = o.dt;
+  if (*o.nOption) w.n = o.n;
+  if (*o.kElasticOption) w.kElastic = o.kElastic;
+  if (*o.dElasticOption) w.dElastic = o.dElastic;
+  if (*o.kCollisionOption) w.kCollision = o.kCollision;
+  if (*o.dCollisionOption) w.dCollision = o.dCollision;
+  if (*o.massOption) w.mass = o.mass;
+  if (*o.noPlaneOption) w.hasPlane = false;
+  if (*o.planeOption) {
+    const std::vector<double>& plane = o.plane;
+    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return jello::failed("--plane: the normal (a, b, c) must not be zero");
+    w.hasPlane = true;
+    w.plane = {plane[0], plane[1], plane[2], plane[3]};
+    if (std::string why = jello::planeProblem(w.plane); !why.empty())
+      return jello::failed("--plane: " + why);
+  }
+  return jello::succeeded();
+}
+
+// The Force field options, applied to `field`.
+jello::Outcome applyField(const Options& o, jello::FieldRecipe& field) {
+  using Source = jello::FieldRecipe::Source;
+  bool newSource = false;
+  for (CLI::Option* option : o.fieldSources) newSource = newSource || option->count() > 0;
+  if (newSource && field.source == Source::Given) {
+    field.resolution = 30;  // a --from world's field is replaced,
+    field.given = {};       // and let go before another is read or built
+  }
+  if (*o.resolutionOption) {
+    if (field.source == Source::Given && !newSource) {
+      return jello::failed("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
+    }
+    field.resolution = o.resolution;
+    if (field.source == Source::None) field.source = Source::Uniform;  // a zero field, as the course writes
+  }
+  if (*o.uniformOption) {
+    field.source = Source::Uniform;
+    field.uniform = toVec3(o.uniform);
+  }
+  if (*o.swirlOption) {
+    field.source = Source::Swirl;
+    field.strength = o.swirl;
+  }
+  if (*o.radialOption) {
+    field.source = Source::Radial;
+    field.strength = o.radial;
+  }
+  if (*o.expressionOption) {
+    field.source = Source::Expression;
+    field.expression = o.expression;
+  }
+  if (*o.fieldFromOption) {
+    field.source = Source::Given;
+    field.given = jello::readWorldFile(o.fieldFrom).world.field;
+  }
+  return jello::succeeded();
+}
+
+// The Initial state options, applied to `state`.
+void applyState(const Options& o, jello::StateRecipe& state) {
+  if (*o.sizeOption) state.cubeSize = o.cubeSize;
+  if (*o.centerOption) state.center = toVec3(o.center);
+  if (*o.rotateOption) state.rotateDegrees = toVec3(o.rotation);
+  if (*o.velocityOption) state.velocity = toVec3(o.velocity);
+  if (*o.spinOption) state.spin = toVec3(o.spin);
+  if (*o.skewOption) state.skewCorner = toVec3(o.skew);
+  state.insideOut = o.insideOut;
+}
+
+// The recipe's field, given or built.
+jello::ForceField takeField(jello::FieldRecipe& field) {
+  using Source = jello::FieldRecipe::Source;
+  if (field.source == Source::Given) return std::move(field.given);
+  // Refused before the field is built, not by std::bad_alloc while building it.
+  if (field.source != Source::None && field.resolution > 0)
+    jello::requireMemory(jello::worldMemoryNeed(field.resolution, jello::WorldUse::Create));
+  return jello::buildField(field);
+}
+
+// Checks, writes and announces the world made.
+jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w, const jello::State& initial) {
+  // What is written must read back: the reader's rules, applied to the values themselves.
+  if (auto problem = jello::findWorldProblem(w, initial))
+    return jello::failed(describeProblem(*problem, app));
+  warnAbout(w, initial);
   try {
-    if (*describeOption) {
-      jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
-      if (!output.empty()) return fail("--describe reads a world; it does not go with -o");
-      jello::WorldFile file = jello::readWorldFile(describe);
-      std::printf("%s\n%s", describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
-      return kExitOk;
-    }
-    if (output.empty()) return fail("say where to write the world: -o FILE (see createWorld --help)");
-    // Checked before any work (a field to build, a world to read), so that the refusal comes first.
-    if (std::string why = jello::whyNotWritable(output, force ? jello::Existing::Replace : jello::Existing::Refuse);
-        !why.empty())
-      return fail(output + ": " + why + (why == "already exists" ? "; add --force to replace it" : ""));
+    jello::writeWorldFile(o.output, w, initial, o.force);
+  } catch (const std::runtime_error& e) {
+    return jello::failed(e.what());  // e.g. the file appeared since checkWritable looked
+  }
+  std::string fieldSummary = "no field";
+  if (w.field.resolution > 0) {
+    fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) + " field (R=" +
+                   std::to_string(w.field.resolution) + ")";
+  }
+  std::printf("wrote %s: %s dt=%g, %s, %s\n", o.output.c_str(), jello::integratorName(w.integrator), w.dt,
+              fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
+  return jello::succeeded();
+}
 
-    jello::setWorldUse(jello::WorldUse::Create);
-    jello::Recipe recipe = jello::defaultRecipe();
-    if (*presetOption) recipe = jello::coursePreset(preset);
-    if (*fromOption) {
-      jello::WorldFile base = jello::readWorldFile(from);
-      // The field is moved, never copied: createWorld holds one field at a time.
-      recipe.field.source = jello::FieldRecipe::Source::Given;
-      recipe.field.given = std::move(base.world.field);
-      base.world.field = {};
-      recipe.world = std::move(base.world);
-      recipe.state.from = base.state;
-    }
+// createWorld -o FILE: the world the options say, written to FILE.
+jello::Outcome createWorld(const Options& o, const CLI::App& app) {
+  if (o.output.empty()) return jello::failed("say where to write the world: -o FILE (see createWorld --help)");
+  // Checked before any work (a field to build, a world to read), so that the refusal comes first.
+  const jello::WriteCheck writable =
+      jello::checkWritable(o.output, o.force ? jello::Existing::Replace : jello::Existing::Refuse);
+  if (!writable.writable())
+    return jello::failed(o.output + ": " + writable.why + (writable.alreadyExists ? "; add --force to replace it" : ""));
 
-    jello::World& w = recipe.world;
-    if (*integratorOption && !jello::parseIntegratorName(integrator, &w.integrator)) {
-      return fail("--integrator: unknown integrator '" + integrator + "', expected " + jello::integratorNameList());
-    }
-    if (*dtOption) w.dt = dt;
-    if (*nOption) w.n = n;
-    if (*kElasticOption) w.kElastic = kElastic;
-    if (*dElasticOption) w.dElastic = dElastic;
-    if (*kCollisionOption) w.kCollision = kCollision;
-    if (*dCollisionOption) w.dCollision = dCollision;
-    if (*massOption) w.mass = mass;
-    if (*noPlaneOption) w.hasPlane = false;
-    if (*planeOption) {
-      if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return fail("--plane: the normal (a, b, c) must not be zero");
-      w.hasPlane = true;
-      w.plane = {plane[0], plane[1], plane[2], plane[3]};
-      if (std::string why = jello::planeProblem(w.plane); !why.empty())
-        return fail("--plane: " + why);
-    }
+  jello::setWorldUse(jello::WorldUse::Create);
+  jello::Recipe recipe = startingRecipe(o);
+  if (jello::Outcome applied = applyParameters(o, recipe.world); !applied.ok()) return applied;
+  if (jello::Outcome applied = applyField(o, recipe.field); !applied.ok()) return applied;
+  applyState(o, recipe.state);
+  recipe.world.field = takeField(recipe.field);
+  const jello::State initial = jello::buildState(recipe.state);
+  return writeWorld(o, app, recipe.world, initial);
+}
 
-    using Source = jello::FieldRecipe::Source;
-    jello::FieldRecipe& field = recipe.field;
-    bool newSource = false;
-    for (CLI::Option* option : fieldSources) newSource = newSource || option->count() > 0;
-    if (newSource && field.source == Source::Given) {
-      field.resolution = 30;  // a --from world's field is replaced,
-      field.given = {};       // and let go before another is read or built
-    }
-    if (*resolutionOption) {
-      if (field.source == Source::Given && !newSource) {
-        return fail("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
-      }
-      field.resolution = resolution;
-      if (field.source == Source::None) field.source = Source::Uniform;  // a zero field, as the course writes
-    }
-    if (*uniformOption) {
-      field.source = Source::Uniform;
-      field.uniform = toVec3(uniform);
-    }
-    if (*swirlOption) {
-      field.source = Source::Swirl;
-      field.strength = swirl;
-    }
-    if (*radialOption) {
-      field.source = Source::Radial;
-      field.strength = radial;
-    }
-    if (*expressionOption) {
-      field.source = Source::Expression;
-      field.expression = expression;
-    }
-    if (*fieldFromOption) {
-      field.source = Source::Given;
-      field.given = jello::readWorldFile(fieldFrom).world.field;
-    }
-
-    jello::StateRecipe& state = recipe.state;
-    if (*sizeOption) state.cubeSize = cubeSize;
-    if (*centerOption) state.center = toVec3(center);
-    if (*rotateOption) state.rotateDegrees = toVec3(rotation);
-    if (*velocityOption) state.velocity = toVec3(velocity);
-    if (*spinOption) state.spin = toVec3(spin);
-    if (*skewOption) state.skewCorner = toVec3(skew);
-    state.insideOut = insideOut;
-
-    if (field.source == Source::Given) {
-      w.field = std::move(field.given);
-    } else {
-      // Refused before the field is built, not by std::bad_alloc while building it.
-      if (field.source != Source::None && field.resolution > 0)
-        jello::requireMemory(jello::worldMemoryNeed(field.resolution, jello::WorldUse::Create));
-      w.field = jello::buildField(field);
-    }
-    jello::State initial = jello::buildState(state);
-
-    // What is written must read back: the reader's rules, applied to the values themselves.
-    if (auto problem = jello::findWorldProblem(w, initial))
-      return fail(describeProblem(*problem, app));
-    warnAbout(w, initial);
-    try {
-      jello::writeWorldFile(output, w, initial, force);
-    } catch (const std::runtime_error& e) {
-      return fail(e.what());  // e.g. the file appeared since whyNotWritable looked
-    }
-    std::string fieldSummary = "no field";
-    if (w.field.resolution > 0) {
-      fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) + " field (R=" +
-                     std::to_string(w.field.resolution) + ")";
-    }
-    std::printf("wrote %s: %s dt=%g, %s, %s\n", output.c_str(), jello::integratorName(w.integrator), w.dt,
-                fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
-    return kExitOk;
+// What the command line asks, its errors as outcomes (exceptions included).
+jello::Outcome run(const Options& o, const CLI::App& app) {
+  if (*o.maxMemoryOption)
+    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(o.maxMemory * 1e9, 1e18)));
+  try {
+    return *o.describeOption ? printDescription(o) : createWorld(o, app);
   } catch (const jello::WorldFileError& e) {
-    return fail(e.what());
+    return jello::failed(e.what());
   } catch (const jello::RecipeError& e) {
-    return fail(e.what());
+    return jello::failed(e.what());
   } catch (const jello::NotEnoughMemory& e) {
-    return fail(e.what());
+    return jello::failed(e.what());
   } catch (const std::bad_alloc&) {
     // The need was computed, but something else holds memory meanwhile.
-    return fail("not enough memory for this world (an allocation failed)");
+    return jello::failed("not enough memory for this world (an allocation failed)");
   }
 }
+
+// The exit status of an outcome, its line printed on stderr.
+int exitStatus(const jello::Outcome& outcome) {
+  if (!outcome.message.empty()) jello::printError(outcome.message);
+  switch (outcome.status) {
+    case jello::Status::Ok: return kExitOk;
+    case jello::Status::Diverged:  // createWorld runs no simulation
+    case jello::Status::Failed: return kExitBadInput;
+  }
+  return kExitBadInput;
+}
+
+}  // namespace
 
 // Every exception ends here as one line and exit status 2.
 int main(int argc, char** argv) {
   jello::setProgramName("createWorld");
   jello::installSignalCleanup();
   try {
-    return createWorld(argc, argv);
+    CLI::App app{
+        "createWorld: builds a jello world file (SPEC section 1). Start from the defaults (the course's "
+        "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
+        "what the options say.",
+        "createWorld"};
+    Options options;
+    addGeneralOptions(app, options);
+    addParameterOptions(app, options);
+    addFieldOptions(app, options);
+    addStateOptions(app, options);
+    int status = 0;
+    if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
+    return exitStatus(run(options, app));
   } catch (const std::bad_alloc&) {
-    return fail("not enough memory for this world");
+    return exitStatus(jello::failed("not enough memory for this world"));
   } catch (const std::exception& e) {
-    return fail(e.what());
+    return exitStatus(jello::failed(e.what()));
   }
 }

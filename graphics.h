@@ -32,14 +32,14 @@ bool displayAvailable(std::string* why);
 // with a one-line message when no off-screen context can be made.
 std::unique_ptr<FrameObserver> makeOffscreenFrames(const PictureOptions& pictures);
 
-// Opens the viewer (SPEC.md section 5) on the world of `run`; returns the exit status.
-int runViewer(const RunOptions& run, const PictureOptions& pictures);
+// Opens the viewer (SPEC.md section 5) on the world of `run`; says how it went (outcome.h).
+Outcome runViewer(const RunOptions& run, const PictureOptions& pictures);
 
 // The library's functions, as jello finds them after loading it.
 struct GraphicsApi {
   bool (*displayAvailable)(std::string* why);
   std::unique_ptr<FrameObserver> (*makeOffscreenFrames)(const PictureOptions& pictures);
-  int (*runViewer)(const RunOptions& run, const PictureOptions& pictures);
+  Outcome (*runViewer)(const RunOptions& run, const PictureOptions& pictures);
 };
 // The library's one exported entry point; its name is kGraphicsEntry.
 extern "C" const GraphicsApi* jelloGraphicsApi();

@@ -15,6 +15,7 @@
 #include "output.h"
 #include "integrators.h"
 #include "physics.h"
+#include "progress.h"
 #include "simulation.h"
 #include "stability.h"
 
@@ -30,39 +31,35 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A progress line on a terminal, rewritten in place at most a few times a second, only once
-// the run has taken long enough for a user to wonder. Silent when stderr is not a terminal.
-class Progress {
+// The run's progress line, redrawn at most a few times a second, and only once the run has
+// taken long enough for a user to wonder.
+class RunProgress {
  public:
-  Progress(long long totalSteps, const FrameObserver* frames)
-      : total_(totalSteps), frames_(frames), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  RunProgress(long long totalSteps, const FrameObserver* frames) : total_(totalSteps), frames_(frames) {}
 
   void update(long long done) {
-    if (!enabled_ || done % kProgressEvery != 0) return;
+    if (!line_.enabled() || done % kProgressEvery != 0) return;
     double elapsed = secondsSince(start_);
     if (elapsed < kQuietSeconds || elapsed - lastShown_ < kRefreshSeconds) return;
     lastShown_ = elapsed;
     double left = elapsed / done * (total_ - done);
+    char text[160];
     if (frames_) {
-      std::fprintf(stderr, "\rframe %d, %.0f frames/s, step %lld/%lld, %.0f s left   ", frames_->framesDone(),
-                   frames_->framesDone() / elapsed, done, total_, left);
+      std::snprintf(text, sizeof text, "frame %d, %.0f frames/s, step %lld/%lld, %.0f s left", frames_->framesDone(),
+                    frames_->framesDone() / elapsed, done, total_, left);
     } else {
-      std::fprintf(stderr, "\rstep %lld/%lld (%.0f%%), %.0f s left   ", done, total_, 100.0 * done / total_, left);
+      std::snprintf(text, sizeof text, "step %lld/%lld (%.0f%%), %.0f s left", done, total_, 100.0 * done / total_, left);
     }
-    shown_ = true;
+    line_.show(text);
   }
-
-  ~Progress() {
-    if (shown_) std::fprintf(stderr, "\r%70s\r", "");
-  }
+  void finish() { line_.finish(); }
 
  private:
   static constexpr double kQuietSeconds = 1.0;
   static constexpr double kRefreshSeconds = 0.25;
   long long total_;
   const FrameObserver* frames_;
-  bool enabled_;
-  bool shown_ = false;
+  Progress line_;
   double lastShown_ = 0;
   Clock::time_point start_ = Clock::now();
 };
@@ -87,48 +84,41 @@ long long nextMultiple(long long done, long long every) {
   return every > 0 ? (done / every + 1) * every : done + 1;
 }
 
-// How many steps the run takes: --steps, --time, or 300 frames of n steps. False, with the line
-// that says why on stderr, when the run is refused.
-bool stepsOfRun(const RunOptions& options, const World& world, long long* steps) {
+// How many steps the run takes: --steps, --time, or 300 frames of n steps. Fails, saying why,
+// when the run is refused.
+Outcome stepsOfRun(const RunOptions& options, const World& world, long long* steps) {
   *steps = kDefaultFrames * world.n;
   if (!options.steps && !options.time && *steps > kMostDefaultSteps) {
-    printError(options.worldPath + ": n = " + std::to_string(world.n) + " makes the default run (300 frames of n steps) " +
-               std::to_string(*steps) + " steps long; say how long with --steps N or --time T, or lower n with --n");
-    return false;
+    return failed(options.worldPath + ": n = " + std::to_string(world.n) +
+                  " makes the default run (300 frames of n steps) " + std::to_string(*steps) +
+                  " steps long; say how long with --steps N or --time T, or lower n with --n");
   }
   if (options.steps) *steps = *options.steps;
   if (options.time) {
     std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
-    if (!forTime) {
-      std::fprintf(stderr, "jello: %s\n", tooManyStepsMessage(*options.time, world.dt).c_str());
-      return false;
-    }
+    if (!forTime) return failed(tooManyStepsMessage(*options.time, world.dt));
     *steps = *forTime;
   }
-  return true;
+  return succeeded();
 }
 
-// Calls the frame observer; false, with its one-line message on stderr, when it throws.
+// Calls the frame observer; fails with its one-line message when it throws.
 template <class Call>
-bool observed(Call call) {
+Outcome observed(Call call) {
   try {
     call();
-    return true;
+    return succeeded();
   } catch (const std::runtime_error& e) {
-    printError(e.what());
-    return false;
+    return failed(e.what());
   }
 }
 
-// The line on stderr for a run that stopped, and its exit status.
-int reportFailure(const RunOptions& options, const World& world, const State& initial, const RunOutcome& outcome) {
-  if (outcome.kind == RunOutcome::Kind::ToleranceUnmet) {
-    std::fprintf(stderr, "jello: %s: %s\n", options.worldPath.c_str(),
-                 toleranceFailure(options.tolerances, outcome.step, world.dt).c_str());
-    return kExitBadInput;
-  }
-  printError(options.worldPath + ": " + divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
-  return kExitDiverged;
+// Why a run stopped: RK45's unmet tolerances are bad input, anything else a divergence.
+Outcome runFailure(const RunOptions& options, const World& world, const State& initial, const RunOutcome& outcome) {
+  if (outcome.kind == RunOutcome::Kind::ToleranceUnmet)
+    return failed(options.worldPath + ": " + toleranceFailure(options.tolerances, outcome.step, world.dt));
+  return diverged(options.worldPath + ": " +
+                  divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
 }
 
 // The summary line on stdout.
@@ -167,40 +157,38 @@ std::string tooManyStepsMessage(double time, double dt) {
   return text;
 }
 
-bool loadRun(const RunOptions& options, WorldFile* out) {
+Outcome loadRun(const RunOptions& options, WorldFile* out) {
   try {
     *out = readWorldFile(options.worldPath);
   } catch (const WorldFileError& e) {
-    printError(e.what());
-    return false;
+    return failed(e.what());
   }
   World& world = out->world;
   if (options.integrator) world.integrator = *options.integrator;
   if (options.dt) world.dt = *options.dt;
   if (options.n) world.n = *options.n;
-  return true;
+  return succeeded();
 }
 
-int runHeadless(const RunOptions& options, FrameObserver* frames) {
+Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   WorldFile file;
-  if (!loadRun(options, &file)) return kExitBadInput;
+  if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   long long steps = 0;
-  if (!stepsOfRun(options, world, &steps)) return kExitBadInput;
+  if (Outcome counted = stepsOfRun(options, world, &steps); !counted.ok()) return counted;
   if (options.dumpPath) {
     std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
-    if (!why.empty()) {
-      printError("--dump " + *options.dumpPath + ": " + why);
-      return kExitBadInput;
-    }
+    if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
   }
 
   const Model model = makeModel(world, file.state, options.kernel);
   Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
-  Progress progress(steps, frames);
+  RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] { frames->frame(model, simulation.state()); };
-  if (frames && !observed([&] { frames->begin(); showFrame(); })) return kExitBadInput;
+  if (frames) {
+    if (Outcome begun = observed([&] { frames->begin(); showFrame(); }); !begun.ok()) return begun;
+  }
   std::printf("%s%s\n", sceneLine(model.scene).c_str(),
               options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
   // In stretches that end where a frame is due or the progress line may be redrawn.
@@ -209,21 +197,23 @@ int runHeadless(const RunOptions& options, FrameObserver* frames) {
     const long long done = simulation.step();
     const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
     const RunOutcome outcome = simulation.advance(stop - done);
-    if (!outcome.ran()) return reportFailure(options, world, file.state, outcome);
-    if (frames && simulation.step() % world.n == 0 && frames->wantsMore() && !observed(showFrame)) return kExitBadInput;
+    if (!outcome.ran()) return runFailure(options, world, file.state, outcome);
+    if (frames && simulation.step() % world.n == 0 && frames->wantsMore()) {
+      if (Outcome shown = observed(showFrame); !shown.ok()) return shown;
+    }
     progress.update(simulation.step());
   }
+  progress.finish();
   printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
 
   if (options.dumpPath) {
     try {
       writeWorldFile(*options.dumpPath, world, simulation.state(), true);
     } catch (const std::exception& e) {
-      printError(e.what());
-      return kExitBadInput;
+      return failed(e.what());
     }
   }
-  return kExitOk;
+  return succeeded();
 }
 
 }  // namespace jello

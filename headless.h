@@ -5,6 +5,7 @@
 #include <string>
 
 #include "integrators.h"
+#include "outcome.h"
 #include "physics.h"
 #include "simulation.h"
 #include "world.h"
@@ -24,7 +25,7 @@ struct RunOptions {
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };
 
-// Exit statuses of SPEC.md section 4.
+// Exit statuses of SPEC.md section 4, chosen by the mains alone (outcome.h).
 constexpr int kExitOk = 0;
 constexpr int kExitDiverged = 1;
 constexpr int kExitBadInput = 2;
@@ -64,12 +65,11 @@ std::string tooManyStepsMessage(double time, double dt);
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
 
 
-// Reads the world of `options` and applies its overrides. On bad input prints one line on
-// stderr and returns false.
-bool loadRun(const RunOptions& options, WorldFile* out);
+// Reads the world of `options` and applies its overrides. Fails, saying why, on bad input.
+Outcome loadRun(const RunOptions& options, WorldFile* out);
 
-// Loads the world, runs it (handing its frames to `frames` when given), prints the summary
-// line on stdout (errors on stderr, one line each) and returns the exit status.
-int runHeadless(const RunOptions& options, FrameObserver* frames = nullptr);
+// Loads the world, runs it (handing its frames to `frames` when given) and prints the summary
+// line on stdout. Fails (or diverges), saying why, without printing it.
+Outcome runHeadless(const RunOptions& options, FrameObserver* frames = nullptr);
 
 }  // namespace jello

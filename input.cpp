@@ -350,11 +350,7 @@ constexpr std::size_t kFormatBlock = 1 << 16;
 // then grows with what actually arrives, not with what the resolution line claims.
 constexpr std::size_t kUnknownSizeReserve = 3 << 16;
 
-WorldFile parseLines(LineSource& source, const std::string& name) {
-  Parser in(source, name);
-  WorldFile result;
-  World& w = result.world;
-
+void readIntegrator(Parser& in, World& w) {
   in.record(1, "integrator");
   std::string_view integrator = in.token(0);
   if (integrator.size() > kMaxIntegratorNameLength) {
@@ -365,7 +361,10 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     in.fail(in.line(), "unknown integrator '" + Parser::str(integrator) + "', expected " + integratorNameList(),
             "integrator");
   }
+}
 
+// dt n, the springs' four constants, and the mass.
+void readParameters(Parser& in, World& w) {
   in.record(2, "dt n");
   w.dt = in.positive(0, "dt");
   w.n = in.integer(1, "n");
@@ -379,7 +378,9 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
 
   in.record(1, "mass");
   w.mass = in.positive(0, "mass");
+}
 
+void readPlane(Parser& in, World& w) {
   in.record(1, "incPlanePresent");
   int flag = in.integer(0, "incPlanePresent");
   if (flag != 0 && flag != 1) {
@@ -397,7 +398,10 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
     // is not.
     if (std::string why = planeProblem(w.plane); !why.empty()) in.fail(in.line(), why, "plane d");
   }
+}
 
+// The resolution line: R, refused when the rest of the file or the memory cannot hold R^3 nodes.
+int readResolution(Parser& in) {
   in.record(1, "resolution");
   int r = in.integer(0, "resolution");
   if (r < 0) in.fail(in.line(), "must be >= 0, got " + Parser::str(in.token(0)), "resolution");
@@ -411,27 +415,41 @@ WorldFile parseLines(LineSource& source, const std::string& name) {
                            " field lines, more than the rest of the file can hold", "resolution");
   }
   // Refused before anything is set aside for it, not by std::bad_alloc halfway through.
-  const bool streamed = !in.source().remainingKnown();
   if (r > 0) {
-    const std::uint64_t needed = worldMemoryNeed(r, worldUse(), streamed),
+    const std::uint64_t needed = worldMemoryNeed(r, worldUse(), !in.source().remainingKnown()),
                         available = availableMemory();
     if (needed > available)
       in.fail(in.line(), notEnoughMemoryMessage(needed, available), "resolution");
   }
-  w.field.resolution = r;
-  std::vector<double>& forces = w.field.forces;
+  return r;
+}
+
+void readField(Parser& in, ForceField& field) {
+  const int r = readResolution(in);
+  const std::size_t nodes = static_cast<std::size_t>(r) * r * r;
+  const bool streamed = !in.source().remainingKnown();
+  field.resolution = r;
+  std::vector<double>& forces = field.forces;
   forces.reserve(streamed ? std::min(3 * nodes, kUnknownSizeReserve) : 3 * nodes);
   for (std::size_t node = 0; node < nodes; ++node) {
     std::size_t i = node / (static_cast<std::size_t>(r) * r), j = (node / r) % r, k = node % r;
-    std::string field = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
-                        std::to_string(k) + ")";
-    in.record(3, field);
+    std::string name = "force field node (" + std::to_string(i) + "," + std::to_string(j) + "," +
+                       std::to_string(k) + ")";
+    in.record(3, name);
     // Grown by doubling, but never beyond the announced size (worldMemoryNeed counts on it).
     if (forces.capacity() - forces.size() < 3)
       forces.reserve(std::min(3 * nodes, 2 * forces.capacity() + 3));
-    for (int axis = 0; axis < 3; ++axis) forces.push_back(in.number(axis, field));
+    for (int axis = 0; axis < 3; ++axis) forces.push_back(in.number(axis, name));
   }
+}
 
+WorldFile parseLines(LineSource& source, const std::string& name) {
+  Parser in(source, name);
+  WorldFile result;
+  readIntegrator(in, result.world);
+  readParameters(in, result.world);
+  readPlane(in, result.world);
+  readField(in, result.world.field);
   readPoints(in, result.state.p(), "position p");
   readPoints(in, result.state.v(), "velocity v");
 

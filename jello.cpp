@@ -1,6 +1,6 @@
 // jello.cpp: the simulator's main (SPEC.md section 4): parse the command line, do what it says,
 // and choose the exit status. Only this file and createWorld.cpp print a verdict and pick a
-// status for the whole program.
+// status for the whole program: the library says how a command went as an Outcome (outcome.h).
 
 #include <algorithm>
 #include <cerrno>
@@ -31,9 +31,9 @@ std::string worldStem(const std::string& path) {
   return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
 
-int check(const jello::JelloCommand& c) {
+jello::Outcome check(const jello::JelloCommand& c) {
   jello::WorldFile file;
-  if (!jello::loadRun(c.run, &file)) return jello::kExitBadInput;
+  if (jello::Outcome loaded = jello::loadRun(c.run, &file); !loaded.ok()) return loaded;
   if (c.mode == jello::JelloCommand::Mode::Map)
     return jello::writeStabilityMap(c.mapDir, c.run.worldPath, file.world, file.state, c.mapTime,
                                     c.pictures.overwrite);
@@ -42,12 +42,12 @@ int check(const jello::JelloCommand& c) {
                      : jello::stabilityText(c.run.worldPath, file.world, analysis))
                  .c_str(),
              stdout);
-  return jello::kExitOk;
+  return jello::succeeded();
 }
 
 // A window where a display exists; otherwise headless, with frames where asked (or, when no
 // --headless was given, into a new folder of animation/).
-int simulate(jello::JelloCommand c) {
+jello::Outcome simulate(jello::JelloCommand c) {
   // The pictures' library is loaded only from here on, and only for a window or frames.
   const jello::GraphicsApi* graphics = nullptr;
   std::string why;
@@ -68,19 +68,24 @@ int simulate(jello::JelloCommand c) {
   std::unique_ptr<jello::FrameObserver> frames;
   if (!c.pictures.framesDir.empty()) {
     if (!graphics) graphics = jello::loadGraphics(&why);
-    if (!graphics) {
-      jello::printError("--frames: " + why + ", so it cannot render frames");
-      return jello::kExitBadInput;
-    }
+    if (!graphics) return jello::failed("--frames: " + why + ", so it cannot render frames");
     frames = graphics->makeOffscreenFrames(c.pictures);
   }
   return jello::runHeadless(c.run, frames.get());
 }
 
-int runCommandLine(int argc, char** argv) {
-  jello::JelloCommand command;
-  const int status = jello::parseJelloCommandLine(argc, argv, &command);
-  if (status != jello::kGoOn) return status;
+// The exit status of an outcome, its line printed on stderr.
+int exitStatus(const jello::Outcome& outcome) {
+  if (!outcome.message.empty()) jello::printError(outcome.message);
+  switch (outcome.status) {
+    case jello::Status::Ok: return jello::kExitOk;
+    case jello::Status::Diverged: return jello::kExitDiverged;
+    case jello::Status::Failed: return jello::kExitBadInput;
+  }
+  return jello::kExitBadInput;
+}
+
+jello::Outcome runCommand(const jello::JelloCommand& command) {
   constexpr double kBytesPerGB = 1e9, kMostBytes = 1e18;
   if (command.maxMemoryGB > 0)
     jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(command.maxMemoryGB * kBytesPerGB, kMostBytes)));
@@ -94,7 +99,14 @@ int runCommandLine(int argc, char** argv) {
     case jello::JelloCommand::Mode::Report: return jello::runReport(command.run, command.report);
     case jello::JelloCommand::Mode::Run: return simulate(command);
   }
-  return jello::kExitBadInput;
+  return jello::failed("no such command");  // not reached: every mode is handled above
+}
+
+int runCommandLine(int argc, char** argv) {
+  jello::JelloCommand command;
+  const int status = jello::parseJelloCommandLine(argc, argv, &command);
+  if (status != jello::kGoOn) return status;
+  return exitStatus(runCommand(command));
 }
 
 }  // namespace

@@ -71,17 +71,17 @@ mode_t defaultMode() {
   return 0666 & ~mask;
 }
 
-// Why an existing entry at `path` may not be replaced, or "" (also when nothing is there).
-std::string whyNotReplaceable(const std::string& path, Existing existing, struct stat* found) {
+// Why an existing entry at `path` may not be replaced (also when nothing is there, none).
+WriteCheck whyNotReplaceable(const std::string& path, Existing existing, struct stat* found) {
   if (::lstat(path.c_str(), found) != 0) {
     found->st_mode = 0;
     return {};
   }
-  if (S_ISLNK(found->st_mode)) return "is a symbolic link; name the file itself";
-  if (S_ISDIR(found->st_mode)) return "is a directory";
-  if (!S_ISREG(found->st_mode)) return "is not a regular file (a device, FIFO or socket); it is never replaced";
-  if (existing == Existing::Refuse) return "already exists";
-  if ((found->st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0) return "is read-only; it is not replaced";
+  if (S_ISLNK(found->st_mode)) return {"is a symbolic link; name the file itself"};
+  if (S_ISDIR(found->st_mode)) return {"is a directory"};
+  if (!S_ISREG(found->st_mode)) return {"is not a regular file (a device, FIFO or socket); it is never replaced"};
+  if (existing == Existing::Refuse) return {"already exists", true};
+  if ((found->st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0) return {"is read-only; it is not replaced"};
   return {};
 }
 
@@ -93,7 +93,7 @@ std::string temporaryTemplate(const std::string& dir, const std::string& suffix)
 // (the check and the write are one atomic step).
 void nameTemporary(const std::string& temporary, const std::string& path, Existing existing) {
   struct stat found {};
-  std::string why = whyNotReplaceable(path, existing, &found);
+  std::string why = whyNotReplaceable(path, existing, &found).why;
   if (!why.empty()) throw OutputError(path + ": " + why);
   if (found.st_mode != 0) ::chmod(temporary.c_str(), found.st_mode & 07777);  // keep the user's mode
   if (existing == Existing::Replace) {
@@ -109,24 +109,26 @@ void nameTemporary(const std::string& temporary, const std::string& path, Existi
 
 }  // namespace
 
-std::string whyNotWritable(const std::string& path, Existing existing) {
-  if (path.empty()) return "an empty name";
+std::string whyNotWritable(const std::string& path, Existing existing) { return checkWritable(path, existing).why; }
+
+WriteCheck checkWritable(const std::string& path, Existing existing) {
+  if (path.empty()) return {"an empty name"};
   struct stat found {};
-  std::string why = whyNotReplaceable(path, existing, &found);
-  if (!why.empty()) return why;
+  WriteCheck replaceable = whyNotReplaceable(path, existing, &found);
+  if (!replaceable.writable()) return replaceable;
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = folderOf(path), name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.empty()) return "names a folder, not a file";
+  if (name.empty()) return {"names a folder, not a file"};
   struct stat info {};
-  if (::stat(dir.c_str(), &info) != 0) return "cannot write into " + dir + ": " + std::strerror(errno);
-  if (!S_ISDIR(info.st_mode)) return "cannot write into " + dir + ": it is not a folder";
-  if (::access(dir.c_str(), W_OK) != 0) return "cannot write into " + dir + ": " + std::strerror(errno);
+  if (::stat(dir.c_str(), &info) != 0) return {"cannot write into " + dir + ": " + std::strerror(errno)};
+  if (!S_ISDIR(info.st_mode)) return {"cannot write into " + dir + ": it is not a folder"};
+  if (::access(dir.c_str(), W_OK) != 0) return {"cannot write into " + dir + ": " + std::strerror(errno)};
   long longest = ::pathconf(dir.c_str(), _PC_NAME_MAX);
   if (longest <= 0) longest = NAME_MAX;
   if (name.size() > static_cast<std::size_t>(longest))
-    return "the name is " + std::to_string(name.size()) + " bytes long, more than the " + std::to_string(longest) +
-           " its folder's file system allows";
-  if (path.size() >= PATH_MAX) return "the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes";
+    return {"the name is " + std::to_string(name.size()) + " bytes long, more than the " + std::to_string(longest) +
+            " its folder's file system allows"};
+  if (path.size() >= PATH_MAX) return {"the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes"};
   return {};
 }
 
@@ -256,9 +258,9 @@ FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>&
   FolderClaim claim = claimFolder(dir);
   for (const std::string& name : names) {
     const std::string path = dir + "/" + name;
-    std::string why = whyNotWritable(path, existing);
-    if (why == "already exists") why += "; choose another folder, or add --overwrite";
-    if (!why.empty()) throw OutputError(path + ": " + why);
+    const WriteCheck check = checkWritable(path, existing);
+    if (check.alreadyExists) throw OutputError(path + ": " + check.why + "; choose another folder, or add --overwrite");
+    if (!check.writable()) throw OutputError(path + ": " + check.why);
   }
   return claim;
 }

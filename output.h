@@ -34,8 +34,17 @@ class OutputError : public std::runtime_error {
 // What a write does when a regular file already holds the name.
 enum class Existing { Refuse, Replace };
 
-// Why `path` could not be written under the rules, or "" when it can: checked before a long
-// run, so that a run is not lost to a name it cannot write at the end.
+// Whether `path` can be written under the rules: checked before a long run, so that a run is
+// not lost to a name it cannot write at the end.
+struct WriteCheck {
+  std::string why;             // why not, in words; "" when it can be written
+  bool alreadyExists = false;  // the reason is only that a regular file holds the name and
+                               // Existing::Refuse was asked: the one a caller can offer a remedy
+                               // for (--force, --overwrite)
+  bool writable() const { return why.empty(); }
+};
+WriteCheck checkWritable(const std::string& path, Existing existing);
+// checkWritable's reason alone: "" when `path` can be written.
 std::string whyNotWritable(const std::string& path, Existing existing);
 
 // Writes `bytes` to `path` whole (see above). Throws OutputError.

@@ -22,6 +22,7 @@
 #include "physics.h"
 #include "output.h"
 #include "plot.h"
+#include "progress.h"
 #include "simulation.h"
 
 namespace jello {
@@ -88,21 +89,19 @@ double rms(const State& a, const State& b, double* largest) {
   return std::sqrt(sum / kNumPoints);
 }
 
-class Progress {
+// The report's progress line: what runs now, and how many of the report's runs have begun.
+class ReportProgress {
  public:
-  explicit Progress(int total) : total_(total), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  explicit ReportProgress(int total) : total_(total) {}
+  void finish() { line_.finish(); }
   void show(const std::string& what) {
     ++done_;
-    if (enabled_) std::fprintf(stderr, "\r%-70s", ("report: " + what + " (" + std::to_string(done_) + "/" +
-                                                   std::to_string(total_) + ")").c_str());
-  }
-  ~Progress() {
-    if (enabled_) std::fprintf(stderr, "\r%70s\r", "");
+    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) + ")");
   }
 
  private:
   int total_, done_ = 0;
-  bool enabled_;
+  Progress line_;
 };
 
 std::string number(double x) {
@@ -194,144 +193,152 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-int runReport(const RunOptions& runOptions, const ReportOptions& options) {
-  WorldFile file;
-  if (!loadRun(runOptions, &file)) return kExitBadInput;
-  const World& world = file.world;
-  const State& start = file.state;
-  const Model model = makeModel(world, start);
-  const double T = options.time;
-  // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
-  if (!stepsForTime(T, world.dt)) {
-    std::fprintf(stderr, "jello: --report: %s\n", tooManyStepsMessage(T, world.dt).c_str());
-    return kExitBadInput;
-  }
-  std::vector<Integrator> integrators = options.integrators;
-  if (integrators.empty())
-    for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
+namespace {
 
-  // Claim the folder and check every file before the long work, not after it.
-  FolderClaim claim;
-  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
-  try {
-    claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
-  } catch (const OutputError& e) {
-    printError(std::string("--report: ") + e.what());
-    return kExitBadInput;
-  }
+// What every run of the study shares.
+struct Study {
+  const Model& model;
+  const State& start;
+  double T;  // s: every run ends there
+  ReportProgress& progress;
+};
 
-  Progress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+// The study's rows and their runs' end states, index for index.
+struct Measured {
   std::vector<ReportRow> rows;
   std::vector<State> ends;
+  double smallestStep = 0;  // s: the smallest dt measured, which the reference's must be well below
+};
 
-  // The sweeps: for each integrator, the largest step (of T/2^k) that does not diverge, then
-  // halvings; RK45 sweeps its tolerance instead.
-  double smallestStep = world.dt;
-  for (Integrator integrator : integrators) {
-    double largest = 0;
-    if (integrator != Integrator::RK45) {
-      // A step counts as stable when its run does not diverge and ends where the run at half
-      // the step ends, to within kSameEnd: an unstable run need not reach SPEC's 100 m within T.
-      Run previous = simulate(model, start, integrator, T / kLargestStepDivisor, T);
-      for (int k = 0; k < kSearchHalvings && largest == 0; ++k) {
-        double dt = T / (kLargestStepDivisor << k);
-        progress.show(std::string("finding ") + integratorName(integrator) + "'s largest stable step, dt=" + number(dt));
-        Run half = simulate(model, start, integrator, dt / 2, T);
-        double ignored;
-        if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd) largest = dt;
-        previous = std::move(half);
-      }
-      if (largest == 0) largest = T / (static_cast<double>(kLargestStepDivisor) * (1 << kSearchHalvings));
-    }
-    for (int i = 0; i < kSweepLength; ++i) {
-      ReportRow row;
-      row.integrator = integrator;
-      Tolerances tolerances;
-      if (integrator == Integrator::RK45) {
-        // Its largest step as large as anyone's first try, so that the tolerance alone
-        // decides the steps it takes.
-        row.dt = T / kLargestStepDivisor;
-        row.tolerance = kRk45Tolerances[i];
-        tolerances = {row.tolerance, row.tolerance};
-      } else {
-        row.dt = largest / (1 << i);
-        smallestStep = std::min(smallestStep, row.dt);
-      }
-      progress.show(describeSetting(row));
-      ends.push_back(measure(model, start, T, tolerances, &row));
-      rows.push_back(row);
-    }
+// The largest step T/(8 2^k) at which `integrator` is stable: its run does not diverge and ends
+// where the run at half the step ends, to within kSameEnd (an unstable run need not reach
+// SPEC's 100 m within T).
+double largestStableStep(const Study& s, Integrator integrator) {
+  Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
+  for (int k = 0; k < kSearchHalvings; ++k) {
+    double dt = s.T / (kLargestStepDivisor << k);
+    s.progress.show(std::string("finding ") + integratorName(integrator) + "'s largest stable step, dt=" + number(dt));
+    Run half = simulate(s.model, s.start, integrator, dt / 2, s.T);
+    double ignored;
+    if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd) return dt;
+    previous = std::move(half);
   }
+  return s.T / (static_cast<double>(kLargestStepDivisor) * (1 << kSearchHalvings));
+}
 
-  // The world's own setting, unless a sweep already ran it.
-  auto own = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& r) {
+// One integrator's sweep: its largest stable step, then halvings; RK45 sweeps its tolerance
+// instead.
+void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
+  const double largest = integrator == Integrator::RK45 ? 0 : largestStableStep(s, integrator);
+  for (int i = 0; i < kSweepLength; ++i) {
+    ReportRow row;
+    row.integrator = integrator;
+    Tolerances tolerances;
+    if (integrator == Integrator::RK45) {
+      // Its largest step as large as anyone's first try, so that the tolerance alone
+      // decides the steps it takes.
+      row.dt = s.T / kLargestStepDivisor;
+      row.tolerance = kRk45Tolerances[i];
+      tolerances = {row.tolerance, row.tolerance};
+    } else {
+      row.dt = largest / (1 << i);
+      m->smallestStep = std::min(m->smallestStep, row.dt);
+    }
+    s.progress.show(describeSetting(row));
+    m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
+    m->rows.push_back(row);
+  }
+}
+
+// The world's own setting, unless a sweep already ran it.
+void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tolerances, Measured* m) {
+  auto own = std::find_if(m->rows.begin(), m->rows.end(), [&](const ReportRow& r) {
     return r.integrator == world.integrator && r.integrator != Integrator::RK45 && r.dt == world.dt;
   });
-  if (own != rows.end()) {
+  if (own != m->rows.end()) {
     own->worldsOwn = true;
-  } else {
-    progress.show(std::string("the world's own ") + integratorName(world.integrator));
-    ReportRow row;
-    row.integrator = world.integrator;
-    row.dt = world.dt;
-    row.tolerance = world.integrator == Integrator::RK45 ? runOptions.tolerances.rtol : 0;
-    row.worldsOwn = true;
-    ends.push_back(measure(model, start, T, runOptions.tolerances, &row));
-    rows.push_back(row);
+    return;
   }
+  s.progress.show(std::string("the world's own ") + integratorName(world.integrator));
+  ReportRow row;
+  row.integrator = world.integrator;
+  row.dt = world.dt;
+  row.tolerance = world.integrator == Integrator::RK45 ? tolerances.rtol : 0;
+  row.worldsOwn = true;
+  m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
+  m->rows.push_back(row);
+}
 
+// The positions every run is compared with: RK4 well below the smallest step measured.
+struct Reference {
+  double step = 0;  // s
+  long long steps = 0;
+  bool diverged = false;  // the reference or its check diverged: there is no report
+  State end;
+  double error = 0;  // m RMS: the reference's own, estimated against the run at half its step
+};
+
+Reference runReference(const Study& s, double smallestStep) {
+  Reference reference;
+  reference.steps = 1;
+  while (reference.steps < kMaxReferenceSteps && s.T / reference.steps > smallestStep / kReferenceRefinement)
+    reference.steps *= 2;
+  reference.step = s.T / reference.steps;
+  s.progress.show("the reference, RK4 dt=" + number(reference.step) + " and dt=" + number(reference.step / 2));
   // The reference and its check run at once, one on each core, after the timed runs.
-  long long referenceSteps = 1;
-  while (referenceSteps < kMaxReferenceSteps && T / referenceSteps > smallestStep / kReferenceRefinement)
-    referenceSteps *= 2;
-  const double referenceStep = T / referenceSteps;
-  progress.show("the reference, RK4 dt=" + number(referenceStep) + " and dt=" + number(referenceStep / 2));
-  Run reference, check;
-  auto runCheck = [&] { check = simulate(model, start, Integrator::RK4, referenceStep / 2, T); };
+  Run run, check;
+  auto runCheck = [&] { check = simulate(s.model, s.start, Integrator::RK4, reference.step / 2, s.T); };
   std::thread other;
   try {
     other = std::thread(runCheck);
   } catch (const std::system_error&) {  // no thread to be had: the same work, one after the other
     runCheck();
   }
-  reference = simulate(model, start, Integrator::RK4, referenceStep, T);
+  run = simulate(s.model, s.start, Integrator::RK4, reference.step, s.T);
   if (other.joinable()) other.join();
-  if (reference.diverged || check.diverged) {
-    printError("--report: the reference run (RK4 at dt=" + number(referenceStep) + ") diverged; no report");
-    return kExitDiverged;
-  }
-  double referenceMax;
-  const double referenceError = rms(reference.end, check.end, &referenceMax);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!rows[i].diverged) rows[i].rmsError = rms(ends[i], reference.end, &rows[i].maxError);
-  }
+  reference.diverged = run.diverged || check.diverged;
+  if (reference.diverged) return reference;
+  double largest;
+  reference.error = rms(run.end, check.end, &largest);
+  reference.end = std::move(run.end);
+  return reference;
+}
 
-  // What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
-  // within the visual tolerance.
-  const ReportRow* ownRow = nullptr;
-  for (const ReportRow& r : rows)
-    if (r.worldsOwn) ownRow = &r;
+// What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
+// within the visual tolerance. Pointers into the rows; null when there is none.
+struct Recommendations {
+  const ReportRow* own = nullptr;
+  const ReportRow* asAccurate = nullptr;
+  const ReportRow* looksSame = nullptr;
+};
+
+Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance) {
+  Recommendations r;
+  for (const ReportRow& row : rows)
+    if (row.worldsOwn) r.own = &row;
   auto cheapest = [&](double limit) {
     const ReportRow* best = nullptr;
-    for (const ReportRow& r : rows)
-      if (!r.diverged && r.rmsError <= limit && (!best || r.wallSeconds < best->wallSeconds)) best = &r;
+    for (const ReportRow& row : rows)
+      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds)) best = &row;
     return best;
   };
-  const ReportRow* asAccurate = ownRow && !ownRow->diverged ? cheapest(ownRow->rmsError) : nullptr;
-  const ReportRow* looksSame = cheapest(options.visualTolerance);
-  const double floor = 10 * referenceError;
+  r.asAccurate = r.own && !r.own->diverged ? cheapest(r.own->rmsError) : nullptr;
+  r.looksSame = cheapest(visualTolerance);
+  return r;
+}
 
-  // The files.
-  std::string title = runOptions.worldPath + ": error at T = " + number(T) + " s against run time";
+// report.md's head and its table of runs.
+std::string markdownRuns(const std::string& worldPath, double T, const Reference& reference,
+                         const std::vector<ReportRow>& rows) {
   std::ostringstream md;
-  md << "# Error against run time: " << runOptions.worldPath << "\n\n"
+  md << "# Error against run time: " << worldPath << "\n\n"
      << "Every run goes from the world's initial state to T = " << number(T)
      << " s. Error: RMS over the 512 points of the distance to the reference positions at T (max: the largest "
         "distance). Time: the least wall time of the stepping over repeated runs, after a warm-up (runs over "
      << kRepeatBelowSeconds << " s are timed once).\n\n"
-     << "Reference: RK4 at dt = " << number(referenceStep) << " s (" << referenceSteps
-     << " steps); its own error, estimated against RK4 at dt = " << number(referenceStep / 2) << " s, is "
-     << number(referenceError) << " m RMS. Errors below " << number(floor)
+     << "Reference: RK4 at dt = " << number(reference.step) << " s (" << reference.steps
+     << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2) << " s, is "
+     << number(reference.error) << " m RMS. Errors below " << number(10 * reference.error)
      << " m are at the reference's limit and are left out of the fitted orders.\n\n"
      << "![error against run time](report.png)\n\n"
      << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max error (m) | status |\n"
@@ -342,6 +349,13 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
        << r.evaluations << " | " << number(r.wallSeconds) << " | " << (r.diverged ? "" : number(r.rmsError)) << " | "
        << (r.diverged ? "" : number(r.maxError)) << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
   }
+  return md.str();
+}
+
+// report.md's fitted orders.
+std::string markdownOrders(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
+                           double floor) {
+  std::ostringstream md;
   md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against log(tolerance)).\n\n"
      << "| integrator | fitted order | theory |\n|---|---|---|\n";
   for (Integrator integrator : integrators) {
@@ -349,6 +363,13 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     md << "| " << integratorName(integrator) << " | " << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
        << (integrator == Integrator::RK45 ? std::string("(tolerance)") : std::to_string(orderOf(integrator))) << " |\n";
   }
+  return md.str();
+}
+
+// report.md's recommendations.
+std::string markdownRecommendations(const Recommendations& recommended, double visualTolerance) {
+  const ReportRow* ownRow = recommended.own;
+  std::ostringstream md;
   md << "\n## Recommendations\n\n";
   if (ownRow) {
     md << "The world's own setting, " << describeSetting(*ownRow) << ", "
@@ -357,7 +378,7 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
                                   " m.")
        << "\n\n";
   }
-  auto recommend = [&](const char* what, const ReportRow* r) {
+  auto recommendation = [&](const char* what, const ReportRow* r) {
     md << "- **" << what << "**: ";
     if (!r) {
       md << "none of the runs.\n";
@@ -371,27 +392,35 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
     if (ownRow && !ownRow->diverged && r->wallSeconds > 0) md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
     md << ".\n";
   };
-  recommend("The cheapest setting at least as accurate as the world's own", asAccurate);
-  recommend(("The cheapest setting within the visual tolerance (" + number(options.visualTolerance) + " m RMS)").c_str(),
-            looksSame);
+  recommendation("The cheapest setting at least as accurate as the world's own", recommended.asAccurate);
+  recommendation(("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)").c_str(),
+                 recommended.looksSame);
+  return md.str();
+}
 
-  try {
-    writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
-    writeFileWhole(options.dir + "/report.md", md.str(), existing);
-    writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
-                   existing);
-  } catch (const OutputError& e) {
-    printError(e.what());
-    return kExitBadInput;
-  }
-  const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
-  const bool drawn = whyNotDrawn.empty();
-  if (!drawn) printError("report.png was not drawn: " + whyNotDrawn);
-  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
+// report.csv, report.md and report.gp into the claimed folder. Throws OutputError.
+void writeReportFiles(const std::string& worldPath, const ReportOptions& options,
+                      const std::vector<Integrator>& integrators, const std::vector<ReportRow>& rows,
+                      const Reference& reference, const Recommendations& recommended) {
+  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  const double T = options.time, floor = 10 * reference.error;
+  const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
+  const std::string md = markdownRuns(worldPath, T, reference, rows) + markdownOrders(rows, integrators, floor) +
+                         markdownRecommendations(recommended, options.visualTolerance);
+  writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
+  writeFileWhole(options.dir + "/report.md", md, existing);
+  writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
+                 existing);
+}
 
+// The lines on stdout: where the report is, and what it recommends.
+void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn, std::size_t runs,
+                        const Reference& reference, const Recommendations& recommended) {
+  const ReportRow *ownRow = recommended.own, *asAccurate = recommended.asAccurate,
+                  *looksSame = recommended.looksSame;
   std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",
-              runOptions.worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", rows.size(), T,
-              referenceStep, referenceError);
+              worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
+              reference.step, reference.error);
   if (asAccurate == ownRow && ownRow)
     std::printf("as accurate as the world's own: nothing cheaper than the world's own setting\n");
   else if (asAccurate && ownRow && asAccurate->wallSeconds > 0)
@@ -400,7 +429,59 @@ int runReport(const RunOptions& runOptions, const ReportOptions& options) {
   if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
     std::printf("within %g m: %s, %s\n", options.visualTolerance, describeSetting(*looksSame).c_str(),
                 speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
-  return status;
+}
+
+}  // namespace
+
+Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(runOptions, &file); !loaded.ok()) return loaded;
+  const World& world = file.world;
+  const Model model = makeModel(world, file.state);
+  const double T = options.time;
+  // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
+  if (!stepsForTime(T, world.dt)) return failed("--report: " + tooManyStepsMessage(T, world.dt));
+  std::vector<Integrator> integrators = options.integrators;
+  if (integrators.empty())
+    for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
+
+  // Claim the folder and check every file before the long work, not after it.
+  FolderClaim claim;
+  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  try {
+    claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
+  } catch (const OutputError& e) {
+    return failed(std::string("--report: ") + e.what());
+  }
+
+  ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+  const Study study{model, file.state, T, progress};
+  Measured measured;
+  measured.smallestStep = world.dt;
+  for (Integrator integrator : integrators) sweepIntegrator(study, integrator, &measured);
+  measureWorldsOwn(study, world, runOptions.tolerances, &measured);
+  const Reference reference = runReference(study, measured.smallestStep);
+  if (reference.diverged)
+    return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) + ") diverged; no report");
+  std::vector<ReportRow>& rows = measured.rows;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].diverged) rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
+  }
+  const Recommendations recommended = recommend(rows, options.visualTolerance);
+  progress.finish();
+
+  try {
+    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, recommended);
+  } catch (const OutputError& e) {
+    return failed(e.what());
+  }
+  const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
+  const bool drawn = whyNotDrawn.empty();
+  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, recommended);
+  if (drawn) return succeeded();
+  // Without gnuplot the data files are the report; a gnuplot that failed is a failure.
+  const std::string notDrawn = "report.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
 }
 
 }  // namespace jello

@@ -38,7 +38,7 @@ std::string reportCsv(const std::vector<ReportRow>& rows);
 double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, double floor);
 
 // Runs the study, writes DIR/report.csv, DIR/report.png and DIR/report.md, prints where they
-// are, and returns the exit status.
-int runReport(const RunOptions& run, const ReportOptions& report);
+// are on stdout, and says how it went (outcome.h).
+Outcome runReport(const RunOptions& run, const ReportOptions& report);
 
 }  // namespace jello

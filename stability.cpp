@@ -22,6 +22,7 @@
 #include "jacobian.h"
 #include "output.h"
 #include "plot.h"
+#include "progress.h"
 #include "simulation.h"
 
 namespace jello {
@@ -367,21 +368,22 @@ double observedLimit(const Model& model, const State& start, Integrator integrat
   return low;
 }
 
-int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
-                      double time, bool overwrite) {
-  FolderClaim claim;
-  const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
-  try {
-    claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
-  } catch (const OutputError& e) {
-    printError(std::string("--map: ") + e.what());
-    return 2;
-  }
+namespace {
+
+// The map's numbers: the CSV, and per integrator the gnuplot data lines "kElastic dt".
+struct StiffnessSweep {
+  std::string csv;
+  std::map<std::string, std::string> predictedRows, observedRows;
+};
+
+// kElastic from 1/8 to 8 times the world's (500 N/m when it has none): the predicted limit of
+// every explicit integrator, and the observed one of three of them (real runs are slow).
+StiffnessSweep sweepStiffness(const World& world, const State& initial, double time) {
   const double base = world.kElastic > 0 ? world.kElastic : 500;
   const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint, Integrator::RK4};
-  std::ostringstream csv, data;
-  csv << "kElastic,integrator,predicted_dt,observed_dt\n";
-  std::map<std::string, std::string> predictedRows, observedRows;
+  StiffnessSweep sweep;
+  sweep.csv = "kElastic,integrator,predicted_dt,observed_dt\n";
+  Progress progress;
   for (int e = -3; e <= 3; ++e) {
     World w = world;
     w.kElastic = base * std::pow(2.0, e);
@@ -394,28 +396,34 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
       char line[160];
       std::snprintf(line, sizeof line, "%.6g,%s,%.6g,%s\n", w.kElastic, integratorName(integrator), predicted,
                     std::isnan(seen) ? "" : number(seen).c_str());
-      csv << line;
+      sweep.csv += line;
       std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, predicted);
-      predictedRows[integratorName(integrator)] += line;
+      sweep.predictedRows[integratorName(integrator)] += line;
       if (!std::isnan(seen)) {
         std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, seen);
-        observedRows[integratorName(integrator)] += line;
+        sweep.observedRows[integratorName(integrator)] += line;
       }
     }
-    if (::isatty(2)) std::fprintf(stderr, "\rmap: kElastic %g done   ", w.kElastic);
+    char done[64];
+    std::snprintf(done, sizeof done, "map: kElastic %g done", w.kElastic);
+    progress.show(done);
   }
-  if (::isatty(2)) std::fprintf(stderr, "\r%40s\r", "");
+  return sweep;
+}
+
+// stability-map.gp: the data inline, so that the script alone draws the picture again.
+std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath, const World& world) {
   std::ostringstream gp;
   gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png again.\n";
   std::string plots;
   int style = 0;
-  for (const auto& [name, rows] : predictedRows) {
+  for (const auto& [name, rows] : sweep.predictedRows) {
     std::string lt = " lt " + std::to_string(++style);  // one colour an integrator
     gp << "$P_" << name << " << EOD\n" << rows << "EOD\n";
     plots += (plots.empty() ? "" : ", ") + std::string("$P_") + name + " with lines lw 2" + lt + " title '" + name +
              " predicted'";
-    if (observedRows.count(name)) {
-      gp << "$O_" << name << " << EOD\n" << observedRows[name] << "EOD\n";
+    if (auto observed = sweep.observedRows.find(name); observed != sweep.observedRows.end()) {
+      gp << "$O_" << name << " << EOD\n" << observed->second << "EOD\n";
       plots += ", $O_" + name + " with points pt 7 ps 1.3" + lt + " title '" + name + " observed'";
     }
   }
@@ -426,20 +434,35 @@ int writeStabilityMap(const std::string& dir, const std::string& worldPath, cons
      << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key outside right top\n"
      << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
      << world.kElastic << " " << world.dt << "\ne\n";
+  return gp.str();
+}
+
+}  // namespace
+
+Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world,
+                          const State& initial, double time, bool overwrite) {
+  FolderClaim claim;
+  const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
   try {
-    writeFileWhole(dir + "/stability-map.csv", csv.str(), existing);
-    writeFileWhole(dir + "/stability-map.gp", gp.str(), existing);
+    claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
   } catch (const OutputError& e) {
-    printError(e.what());
-    return 2;
+    return failed(std::string("--map: ") + e.what());
+  }
+  const StiffnessSweep sweep = sweepStiffness(world, initial, time);
+  try {
+    writeFileWhole(dir + "/stability-map.csv", sweep.csv, existing);
+    writeFileWhole(dir + "/stability-map.gp", mapScript(sweep, worldPath, world), existing);
+  } catch (const OutputError& e) {
+    return failed(e.what());
   }
   const std::string whyNotDrawn = drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
   const bool drawn = whyNotDrawn.empty();
-  if (!drawn) printError("stability-map.png was not drawn: " + whyNotDrawn);
-  const int status = drawn || whyNotDrawn == kGnuplotMissing ? 0 : 2;
   std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
               drawn ? ", stability-map.png" : "");
-  return status;
+  if (drawn) return succeeded();
+  // Without gnuplot the CSV is the map; a gnuplot that failed is a failure.
+  const std::string notDrawn = "stability-map.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
 }
 
 Verdict verdictFor(double dt, double critical, double stableFraction) {
@@ -512,14 +535,11 @@ std::string marginalNote(const StabilityReport& r) {
 }
 }  // namespace
 
-std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
-  if (!r.beyond.empty()) {
-    return worldPath +
-           ": the world's numbers are beyond what double arithmetic can simulate: " + r.beyond +
-           "\n  its first step overflows, or leaves the guard's 100 m: no practical step of any "
-           "integrator will do, and no stability analysis was made\n";
-  }
-  std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
+namespace {
+
+// --check's lines on the modes: at rest, at the initial state, and those that grow.
+std::string modesText(const StabilityReport& r) {
+  std::string out;
   char line[256];
   std::snprintf(line, sizeof line,
                 "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping rates %.3g to %.3g 1/s\n",
@@ -539,18 +559,23 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
            " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
            "field): physics, not numerics\n";
   }
-  out += limitTable(r);
+  return out;
+}
+
+// --check's verdict on the world's own dt, with the note and the advice it calls for.
+std::string verdictText(const World& world, const StabilityReport& r) {
   const double critical = r.verdictLimit(world.integrator);
   // Named when it differs in print from the headline one (the two eigensolves differ in the last
   // bits).
   const char* which =
       number(critical) != number(r.critical(world.integrator)) ? " at the initial state" : "";
   Verdict verdict = verdictFor(world.dt, critical, r.stableFraction);
-  out += "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
-         verdictName(verdict);
+  std::string out = "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
+                    verdictName(verdict);
   if (critical == 0) {
     out += " (the limit is " + limitText(critical) + " s)";
   } else if (std::isfinite(critical)) {
+    char line[256];
     std::snprintf(line, sizeof line, " (%.0f%% of the limit %s%s)", 100 * world.dt / critical,
                   number(critical).c_str(), which);
     out += line;
@@ -559,6 +584,12 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
   if (verdict == Verdict::NearLimit) out += marginalNote(r);
   if (verdict != Verdict::Stable && std::isfinite(critical))
     out += "  " + stepAdvice(critical, r.stableFraction) + "\n";
+  return out;
+}
+
+// --check's warnings when the world's dt is above the limit at the start or against a wall.
+std::string otherLimitsText(const World& world, const StabilityReport& r) {
+  std::string out;
   auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
   if (at != kExplicitIntegrators.end()) {
     std::size_t i = static_cast<std::size_t>(at - kExplicitIntegrators.begin());
@@ -571,6 +602,23 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
              " s: contact may destabilise this step\n";
     }
   }
+  return out;
+}
+
+}  // namespace
+
+std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  if (!r.beyond.empty()) {
+    return worldPath +
+           ": the world's numbers are beyond what double arithmetic can simulate: " + r.beyond +
+           "\n  its first step overflows, or leaves the guard's 100 m: no practical step of any "
+           "integrator will do, and no stability analysis was made\n";
+  }
+  std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
+  out += modesText(r);
+  out += limitTable(r);
+  out += verdictText(world, r);
+  out += otherLimitsText(world, r);
   return out;
 }
 

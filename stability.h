@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "outcome.h"
 #include "physics.h"
 #include "world.h"
 
@@ -137,9 +138,9 @@ double observedLimit(const Model& model, const State& start, Integrator integrat
 
 // jello --check --map DIR: kElastic swept against dt, the predicted and the observed (real
 // runs of `time` seconds, by bisection) largest stable step per integrator; writes
-// DIR/stability-map.csv, .gp and .png. Returns the exit status.
-int writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world, const State& initial,
-                      double time, bool overwrite);
+// DIR/stability-map.csv, .gp and .png, and says how it went (outcome.h).
+Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world,
+                          const State& initial, double time, bool overwrite);
 
 // A predicted limit in words, "%.3g" of it: criticalStep's 0 is "below 8.67e-19" (not zero),
 // NaN "none (not finite)".

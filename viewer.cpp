@@ -348,9 +348,9 @@ void motion(int x, int y) {
 
 }  // namespace
 
-int runViewer(const RunOptions& run, const PictureOptions& pictures) {
+Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   WorldFile file;
-  if (!loadRun(run, &file)) return kExitBadInput;
+  if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
   Viewer v(file, run, pictures);
 
   int argc = 1;
@@ -370,7 +370,8 @@ int runViewer(const RunOptions& run, const PictureOptions& pictures) {
   glutMotionFunc(motion);
   if (pictures.saveFromStart) toggleSaving(v);
   glutMainLoop();
-  return v.diverged ? kExitDiverged : kExitOk;
+  // The window printed its divergence when it happened (say): nothing is left to print.
+  return v.diverged ? Outcome{Status::Diverged, ""} : succeeded();
 }
 
 extern "C" const GraphicsApi* jelloGraphicsApi() {

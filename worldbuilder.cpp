@@ -107,6 +107,59 @@ Recipe coursePreset(const std::string& name) {
   throw RecipeError("unknown preset '" + name + "', expected jello, rotate, moveLeft, skewedCorner or gravity");
 }
 
+namespace {
+
+// "fx; fy; fz" cut at its semicolons, each part trimmed; refused unless there are three.
+std::vector<std::string> splitExpressions(const std::string& expression) {
+  std::vector<std::string> parts;
+  std::string rest = expression;
+  for (std::size_t semicolon; (semicolon = rest.find(';')) != std::string::npos;) {
+    parts.push_back(trim(rest.substr(0, semicolon)));
+    rest = rest.substr(semicolon + 1);
+  }
+  parts.push_back(trim(rest));
+  if (parts.size() != 3) {
+    throw RecipeError("--field-expr needs three expressions \"fx; fy; fz\", got " + std::to_string(parts.size()));
+  }
+  return parts;
+}
+
+// The nodes of an R^3 field, each force the value of the three expressions at the node.
+void fillFromExpressions(ForceField& field, int r, const std::string& expression) {
+  const std::vector<std::string> parts = splitExpressions(expression);
+  double x = 0, y = 0, z = 0;  // the variables the parsers read, set node by node below
+  mu::Parser parsers[3];
+  const char* names[3] = {"fx", "fy", "fz"};
+  for (int c = 0; c < 3; ++c) {
+    try {
+      parsers[c].DefineVar("x", &x);
+      parsers[c].DefineVar("y", &y);
+      parsers[c].DefineVar("z", &z);
+      parsers[c].SetExpr(parts[c]);
+      parsers[c].Eval();  // parse now, so that errors name the expression, not a node
+    } catch (const mu::Parser::exception_type& e) {
+      throw RecipeError(std::string("--field-expr: ") + names[c] + ": " + e.GetMsg());
+    }
+  }
+  fillNodes(field, r, [&](Vec3 p) {
+    x = p.x;
+    y = p.y;
+    z = p.z;
+    double value[3];
+    for (int c = 0; c < 3; ++c) {
+      value[c] = parsers[c].Eval();
+      if (!std::isfinite(value[c])) {
+        char where[96];
+        std::snprintf(where, sizeof where, "(%g, %g, %g)", p.x, p.y, p.z);
+        throw RecipeError(std::string("--field-expr: ") + names[c] + " is not finite at " + where);
+      }
+    }
+    return Vec3{value[0], value[1], value[2]};
+  });
+}
+
+}  // namespace
+
 ForceField buildField(const FieldRecipe& recipe) {
   using Source = FieldRecipe::Source;
   ForceField field;
@@ -130,48 +183,9 @@ ForceField buildField(const FieldRecipe& recipe) {
     case Source::Radial:
       fillNodes(field, r, [&](Vec3 p) { return recipe.strength * p; });
       break;
-    case Source::Expression: {
-      std::vector<std::string> parts;
-      std::string rest = recipe.expression;
-      for (std::size_t semicolon; (semicolon = rest.find(';')) != std::string::npos;) {
-        parts.push_back(trim(rest.substr(0, semicolon)));
-        rest = rest.substr(semicolon + 1);
-      }
-      parts.push_back(trim(rest));
-      if (parts.size() != 3) {
-        throw RecipeError("--field-expr needs three expressions \"fx; fy; fz\", got " + std::to_string(parts.size()));
-      }
-      double x = 0, y = 0, z = 0;
-      mu::Parser parsers[3];
-      const char* names[3] = {"fx", "fy", "fz"};
-      for (int c = 0; c < 3; ++c) {
-        try {
-          parsers[c].DefineVar("x", &x);
-          parsers[c].DefineVar("y", &y);
-          parsers[c].DefineVar("z", &z);
-          parsers[c].SetExpr(parts[c]);
-          parsers[c].Eval();  // parse now, so that errors name the expression, not a node
-        } catch (const mu::Parser::exception_type& e) {
-          throw RecipeError(std::string("--field-expr: ") + names[c] + ": " + e.GetMsg());
-        }
-      }
-      fillNodes(field, r, [&](Vec3 p) {
-        x = p.x;
-        y = p.y;
-        z = p.z;
-        double value[3];
-        for (int c = 0; c < 3; ++c) {
-          value[c] = parsers[c].Eval();
-          if (!std::isfinite(value[c])) {
-            char where[96];
-            std::snprintf(where, sizeof where, "(%g, %g, %g)", p.x, p.y, p.z);
-            throw RecipeError(std::string("--field-expr: ") + names[c] + " is not finite at " + where);
-          }
-        }
-        return Vec3{value[0], value[1], value[2]};
-      });
+    case Source::Expression:
+      fillFromExpressions(field, r, recipe.expression);
       break;
-    }
     case Source::None:   // returned above
     case Source::Given:  // returned above
       break;
