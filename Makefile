@@ -69,10 +69,11 @@ test-ubsan: deps
 format-check:
 	$(CLANG_FORMAT) --dry-run -Werror $$(git ls-files '*.cpp' '*.h')
 
-# The compiler's vectorisation report on the force kernel: which loops became vector loops.
+# The compiler's vectorisation report on the force terms: which loops became vector loops.
 vec-report:
-	@$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
-		-c physics.cpp -o /dev/null -fopt-info-vec-optimized 2>&1 | grep '^physics.cpp.*loop vectorized' | sort -t: -k2 -n -u
+	@for f in forces/springs.cpp forces/walls.cpp forces/plane.cpp forces/field.cpp forces/term.cpp; do \
+		$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
+		-c $$f -o /dev/null -fopt-info-vec-optimized 2>&1 | grep "^$$f.*loop vectorized" | sort -t: -k2 -n -u; done
 
 # The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
 fuzz: deps

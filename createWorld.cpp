@@ -20,14 +20,14 @@
 #include <utility>
 #include <vector>
 
-#include "cli.h"
-#include "describe.h"
-#include "output.h"
-#include "outcome.h"
-#include "memory.h"
+#include "app/cli.h"
+#include "app/describe.h"
+#include "core/output.h"
+#include "core/outcome.h"
+#include "core/memory.h"
 #include "physics.h"
-#include "stability.h"
-#include "worldbuilder.h"
+#include "app/stability.h"
+#include "app/worldbuilder.h"
 
 namespace {
 

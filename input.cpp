@@ -20,11 +20,11 @@
 #include <string>
 #include <system_error>
 
-#include "memory.h"
+#include "core/memory.h"
 #include "physics.h"
 #include "world.h"
 
-#include "output.h"
+#include "core/output.h"
 
 namespace jello {
 

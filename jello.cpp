@@ -11,14 +11,14 @@
 #include <new>
 #include <string>
 
-#include "bench.h"
-#include "commandline.h"
-#include "graphics.h"
-#include "headless.h"
-#include "memory.h"
-#include "output.h"
-#include "report.h"
-#include "stability.h"
+#include "app/bench.h"
+#include "app/commandline.h"
+#include "graphics/graphics.h"
+#include "app/headless.h"
+#include "core/memory.h"
+#include "core/output.h"
+#include "app/report.h"
+#include "app/stability.h"
 #include "world.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "integrators.h"
+#include "solver/integrators.h"
 #include "physics.h"
 #include "world.h"
 

@@ -12,9 +12,9 @@
 #include <cstring>
 #include <string_view>
 
-#include "commandline.h"
+#include "app/commandline.h"
 #include "world.h"
-#include "worldbuilder.h"
+#include "app/worldbuilder.h"
 
 namespace jello::fuzz {
 

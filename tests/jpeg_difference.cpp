@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <exception>
 
-#include "image.h"
+#include "graphics/image.h"
 
 int main(int argc, char** argv) {
   if (argc < 3) {

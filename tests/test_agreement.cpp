@@ -1,7 +1,7 @@
 // 2000 steps of the course worlds against the independent reference results (SPEC.md section 2).
 #include <gtest/gtest.h>
 
-#include "integrators.h"
+#include "solver/integrators.h"
 #include "physics.h"
 #include "test_support.h"
 

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <new>
 
-#include "integrators.h"
+#include "solver/integrators.h"
 #include "physics.h"
-#include "simulation.h"
+#include "solver/simulation.h"
 #include "test_support.h"
 
 namespace {

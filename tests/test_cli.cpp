@@ -6,8 +6,8 @@
 
 #include <algorithm>
 
-#include "headless.h"
-#include "integrators.h"
+#include "app/headless.h"
+#include "solver/integrators.h"
 #include "physics.h"
 #include "test_support.h"
 

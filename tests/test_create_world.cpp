@@ -10,9 +10,9 @@
 #include <set>
 #include <sstream>
 
-#include "describe.h"
+#include "app/describe.h"
 #include "test_support.h"
-#include "worldbuilder.h"
+#include "app/worldbuilder.h"
 
 namespace jello {
 namespace {

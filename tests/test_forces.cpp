@@ -6,8 +6,8 @@
 #include <random>
 #include <set>
 
-#include "guard.h"
-#include "jacobian.h"
+#include "solver/guard.h"
+#include "solver/jacobian.h"
 #include "physics.h"
 #include "test_support.h"
 

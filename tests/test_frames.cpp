@@ -7,9 +7,9 @@
 #include <cmath>
 #include <fstream>
 
-#include "frames.h"
-#include "image.h"
-#include "offscreen.h"
+#include "graphics/frames.h"
+#include "graphics/image.h"
+#include "graphics/offscreen.h"
 #include "test_support.h"
 
 namespace jello {

@@ -8,10 +8,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "integrators.h"
-#include "jacobian.h"
+#include "solver/integrators.h"
+#include "solver/jacobian.h"
 #include "physics.h"
-#include "stability.h"
+#include "app/stability.h"
 #include "test_support.h"
 
 namespace jello {

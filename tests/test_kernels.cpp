@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "integrators.h"
+#include "solver/integrators.h"
 #include "physics.h"
 #include "test_support.h"
 

@@ -17,10 +17,10 @@
 #include <thread>
 #include <vector>
 
-#include "commandline.h"
-#include "output.h"
-#include "plot.h"
-#include "stability.h"
+#include "app/commandline.h"
+#include "core/output.h"
+#include "core/plot.h"
+#include "app/stability.h"
 #include "test_support.h"
 
 namespace jello {

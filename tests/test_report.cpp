@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "report.h"
+#include "app/report.h"
 #include "test_support.h"
 
 namespace jello {

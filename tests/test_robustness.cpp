@@ -11,8 +11,8 @@
 #include <cstring>
 #include <functional>
 
-#include "integrators.h"
-#include "memory.h"
+#include "solver/integrators.h"
+#include "core/memory.h"
 #include "physics.h"
 #include "test_support.h"
 

@@ -6,11 +6,11 @@
 #include <limits>
 #include <random>
 
-#include "guard.h"
-#include "headless.h"
-#include "integrators.h"
+#include "solver/guard.h"
+#include "app/headless.h"
+#include "solver/integrators.h"
 #include "physics.h"
-#include "simulation.h"
+#include "solver/simulation.h"
 #include "test_support.h"
 
 namespace jello {

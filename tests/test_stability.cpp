@@ -7,10 +7,10 @@
 #include <functional>
 #include <sstream>
 
-#include "guard.h"
-#include "integrators.h"
-#include "jacobian.h"
-#include "stability.h"
+#include "solver/guard.h"
+#include "solver/integrators.h"
+#include "solver/jacobian.h"
+#include "app/stability.h"
 #include "test_support.h"
 #include <nlohmann/json.hpp>
 

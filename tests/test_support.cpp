@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "stability.h"
+#include "app/stability.h"
 #include "vec3.h"
 
 namespace jello::test {

@@ -1,0 +1,79 @@
+// cli.h: CLI11 validators shared by jello and createWorld.
+//
+// Numbers on the command line follow the world files' grammar (parseWorldNumber): CLI11's own
+// conversion takes hex, "inf" and "nan", clamps whole numbers that are too large, and reads a
+// double through long double, which can round differently from the file reader. So every
+// number option is a `transform`: the text is read with the world's grammar and handed on to
+// CLI11 in a form it converts exactly (a hexadecimal double, or canonical decimal digits).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/output.h"
+#include "world.h"
+
+namespace jello {
+
+// A validator for finite numbers that also pass `accept`, described by `rule` ("> 0").
+// Attach with ->transform(), not ->check(): it rewrites the text.
+template <class Accept>
+CLI::Validator finiteNumber(const std::string& rule, Accept accept) {
+  return CLI::Validator(
+      [rule, accept](std::string& text) -> std::string {
+        double value = 0;
+        std::string why;
+        if (!parseWorldNumber(text, &value, &why)) return "'" + text + "' " + why;
+        if (!accept(value)) return "must be " + rule + ", got " + text;
+        char exact[40];
+        std::snprintf(exact, sizeof exact, "%a", value);  // strtold reads it back exactly
+        text = exact;
+        return {};
+      },
+      rule.empty() ? "NUMBER" : "NUMBER " + rule);
+}
+
+inline const CLI::Validator kFinite = finiteNumber("", [](double) { return true; });
+inline const CLI::Validator kPositive = finiteNumber("> 0", [](double v) { return v > 0; });
+inline const CLI::Validator kNonNegative = finiteNumber(">= 0", [](double v) { return v >= 0; });
+
+// A whole number from `lowest` to `highest`. Attach with ->transform().
+inline CLI::Validator wholeNumber(long long lowest, long long highest) {
+  const std::string rule = "from " + std::to_string(lowest) + " to " + std::to_string(highest);
+  return CLI::Validator(
+      [lowest, highest, rule](std::string& text) -> std::string {
+        long long value = 0;
+        std::string why;
+        if (!parseWorldInteger(text, &value, &why)) return "'" + text + "' " + why;
+        if (value < lowest || value > highest) return "must be a whole number " + rule + ", got " + text;
+        text = std::to_string(value);
+        return {};
+      },
+      "INTEGER " + rule);
+}
+
+// A non-empty text (a file or folder name): an empty name is refused, not ignored.
+inline const CLI::Validator kNonEmpty = CLI::Validator(
+    [](std::string& text) -> std::string { return text.empty() ? "an empty name" : std::string(); }, "");
+
+// Parses the command line. --help and --version print and set *status to 0; an error prints
+// one line "NAME: what (see NAME --help)" and sets *status to 2. Returns true when the program
+// should go on.
+inline bool parseCommandLine(CLI::App& app, int argc, const char* const* argv, int* status) {
+  try {
+    app.parse(argc, argv);
+    return true;
+  } catch (const CLI::CallForHelp& e) {
+    *status = app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    *status = app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    printError(std::string(e.what()) + " (see " + app.get_name() + " --help)");
+    *status = 2;
+  }
+  return false;
+}
+
+}  // namespace jello

@@ -1,0 +1,80 @@
+// describe.cpp: a world in words.
+
+#include "app/describe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "physics.h"
+#include "app/stability.h"
+
+namespace jello {
+
+namespace {
+
+std::string vec(Vec3 v) { return textf("(%.6g, %.6g, %.6g)", v.x, v.y, v.z); }
+
+}  // namespace
+
+Extent extentOf(const State& state) {
+  Extent e;
+  e.lower = e.upper = load(state.p(), 0);
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 p = load(state.p(), q);
+    e.lower = {std::min(e.lower.x, p.x), std::min(e.lower.y, p.y), std::min(e.lower.z, p.z)};
+    e.upper = {std::max(e.upper.x, p.x), std::max(e.upper.y, p.y), std::max(e.upper.z, p.z)};
+    e.centroid += p;
+  }
+  e.centroid = (1.0 / kNumPoints) * e.centroid;
+  return e;
+}
+
+namespace {
+// Every term the world has (the general scene, which computes each in full), then what it
+// does not have.
+std::string termLines(const World& w, const State& state) {
+  std::string out;
+  const Model general = makeModel(w, state, KernelChoice::General);
+  for (const auto& term : general.scene.terms)
+    for (const TermLine& line : term->describe(state.p())) out += textf("%-11s %s\n", line.label.c_str(), line.text.c_str());
+  const std::vector<std::string> left = leftOutOf(general.scene);
+  std::string joined;
+  for (const std::string& part : left) joined += (joined.empty() ? "" : ", ") + part;
+  if (!joined.empty()) out += "left out    " + joined + "\n";
+  return out;
+}
+}  // namespace
+
+std::string describeWorld(const World& w, const State& state) {
+  std::string out;
+  out += textf("integrator  %s, dt %.9g s, n %d (a drawn frame every %.9g s)\n", integratorName(w.integrator), w.dt,
+                w.n, w.dt * w.n);
+  out += textf("mass        %.9g kg a point, %.9g kg in all\n", w.mass, w.mass * kNumPoints);
+  out += termLines(w, state);
+  Extent e = extentOf(state);
+  out += "cube        from " + vec(e.lower) + " to " + vec(e.upper) + " m, centroid " + vec(e.centroid) + " m\n";
+  Vec3 meanVelocity;
+  double fastest = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 v = load(state.v(), q);
+    meanVelocity += v;
+    fastest = std::max(fastest, length(v));
+  }
+  meanVelocity = (1.0 / kNumPoints) * meanVelocity;
+  out += "velocity    mean " + vec(meanVelocity) + textf(" m/s, fastest point %.6g m/s\n", fastest);
+  double limit = criticalStep(w.integrator, lineariseAtRest(w).modes);
+  if (std::string beyond = beyondDoubles(w, state); !beyond.empty()) {
+    out += "stability   beyond what double arithmetic can simulate: " + beyond + "\n";
+  } else if (std::isfinite(limit)) {
+    out += textf(
+        "stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
+        integratorName(w.integrator), w.dt,
+        verdictName(verdictFor(w.dt, limit, stableFraction(w, state))), 100 * w.dt / limit, limit);
+  } else {
+    out += textf("stability   %s: no step limit\n", integratorName(w.integrator));
+  }
+  return out;
+}
+
+}  // namespace jello

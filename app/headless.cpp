@@ -1,0 +1,219 @@
+// headless.cpp: load, step, report; no GL anywhere on this path.
+
+#include "app/headless.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "core/output.h"
+#include "solver/integrators.h"
+#include "physics.h"
+#include "core/progress.h"
+#include "solver/simulation.h"
+#include "app/stability.h"
+
+namespace jello {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr long long kProgressEvery = 64;  // steps between looks at the progress line
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The run's progress line, redrawn at most a few times a second, and only once the run has
+// taken long enough for a user to wonder.
+class RunProgress {
+ public:
+  RunProgress(long long totalSteps, const FrameObserver* frames) : total_(totalSteps), frames_(frames) {}
+
+  void update(long long done) {
+    if (!line_.enabled() || done % kProgressEvery != 0) return;
+    double elapsed = secondsSince(start_);
+    if (elapsed < kQuietSeconds || elapsed - lastShown_ < kRefreshSeconds) return;
+    lastShown_ = elapsed;
+    double left = elapsed / done * (total_ - done);
+    char text[160];
+    if (frames_) {
+      std::snprintf(text, sizeof text, "frame %d, %.0f frames/s, step %lld/%lld, %.0f s left", frames_->framesDone(),
+                    frames_->framesDone() / elapsed, done, total_, left);
+    } else {
+      std::snprintf(text, sizeof text, "step %lld/%lld (%.0f%%), %.0f s left", done, total_, 100.0 * done / total_, left);
+    }
+    line_.show(text);
+  }
+  void finish() { line_.finish(); }
+
+ private:
+  static constexpr double kQuietSeconds = 1.0;
+  static constexpr double kRefreshSeconds = 0.25;
+  long long total_;
+  const FrameObserver* frames_;
+  Progress line_;
+  double lastShown_ = 0;
+  Clock::time_point start_ = Clock::now();
+};
+
+}  // namespace
+
+std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt) {
+  char text[320];
+  std::snprintf(
+      text, sizeof text,
+      "RK45 cannot meet --rtol %g --atol %g: at step %lld (t=%g s) its error estimate stayed above "
+      "them down to substeps of %.2g s, where rounding decides it; loosen them (the defaults are "
+      "--rtol 1e-6 --atol 1e-9)",
+      tolerances.rtol, tolerances.atol, s, s * dt, kSmallestSubstep * dt);
+  return text;
+}
+
+namespace {
+
+// The smallest multiple of `every` (>= 1) after `done`.
+long long nextMultiple(long long done, long long every) {
+  return every > 0 ? (done / every + 1) * every : done + 1;
+}
+
+// How many steps the run takes: --steps, --time, or 300 frames of n steps. Fails, saying why,
+// when the run is refused.
+Outcome stepsOfRun(const RunOptions& options, const World& world, long long* steps) {
+  *steps = kDefaultFrames * world.n;
+  if (!options.steps && !options.time && *steps > kMostDefaultSteps) {
+    return failed(options.worldPath + ": n = " + std::to_string(world.n) +
+                  " makes the default run (300 frames of n steps) " + std::to_string(*steps) +
+                  " steps long; say how long with --steps N or --time T, or lower n with --n");
+  }
+  if (options.steps) *steps = *options.steps;
+  if (options.time) {
+    std::optional<long long> forTime = stepsForTime(*options.time, world.dt);
+    if (!forTime) return failed(tooManyStepsMessage(*options.time, world.dt));
+    *steps = *forTime;
+  }
+  return succeeded();
+}
+
+// Calls the frame observer; fails with its one-line message when it throws.
+template <class Call>
+Outcome observed(Call call) {
+  try {
+    call();
+    return succeeded();
+  } catch (const std::runtime_error& e) {
+    return failed(e.what());
+  }
+}
+
+// Why a run stopped: RK45's unmet tolerances are bad input, anything else a divergence.
+Outcome runFailure(const RunOptions& options, const World& world, const State& initial, const RunOutcome& outcome) {
+  if (outcome.kind == RunOutcome::Kind::ToleranceUnmet)
+    return failed(options.worldPath + ": " + toleranceFailure(options.tolerances, outcome.step, world.dt));
+  return diverged(options.worldPath + ": " +
+                  divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
+}
+
+// The summary line on stdout.
+void printSummary(const RunOptions& options, const World& world, long long steps, double wall, const StepStats& stats,
+                  const FrameObserver* frames) {
+  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
+              integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
+              steps > 0 ? wall * 1e6 / steps : 0.0);
+  if (world.integrator == Integrator::RK45) {
+    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps, stats.rejected,
+                stats.evaluations);
+  }
+  if (world.integrator == Integrator::Implicit) {
+    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations, stats.evaluations + stats.jacobians);
+  }
+  if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
+  if (sameFile(dumpPath, worldPath)) return "is the world being run; it is never replaced, name another file";
+  return whyNotWritable(dumpPath, Existing::Replace);
+}
+
+std::string tooManyStepsMessage(double time, double dt) {
+  char steps[64] = "more steps than a double can count";
+  if (std::isfinite(time / dt)) std::snprintf(steps, sizeof steps, "%g steps", time / dt);
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "--time %g s at --dt %g s would take %s, more than the %g a run may take; choose a "
+                "shorter --time or a larger --dt",
+                time, dt, steps, kMaxSteps);
+  return text;
+}
+
+Outcome loadRun(const RunOptions& options, WorldFile* out) {
+  try {
+    *out = readWorldFile(options.worldPath);
+  } catch (const WorldFileError& e) {
+    return failed(e.what());
+  }
+  World& world = out->world;
+  if (options.integrator) world.integrator = *options.integrator;
+  if (options.dt) world.dt = *options.dt;
+  if (options.n) world.n = *options.n;
+  return succeeded();
+}
+
+Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
+  const World& world = file.world;
+  long long steps = 0;
+  if (Outcome counted = stepsOfRun(options, world, &steps); !counted.ok()) return counted;
+  if (options.dumpPath) {
+    std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
+    if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
+  }
+
+  const Model model = makeModel(world, file.state, options.kernel);
+  Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
+  RunProgress progress(steps, frames);
+  Clock::time_point start = Clock::now();
+  const auto showFrame = [&] { frames->frame(model, simulation.state()); };
+  if (frames) {
+    if (Outcome begun = observed([&] { frames->begin(); showFrame(); }); !begun.ok()) return begun;
+  }
+  std::printf("%s%s\n", sceneLine(model.scene).c_str(),
+              options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
+  // In stretches that end where a frame is due or the progress line may be redrawn.
+  const long long frameEvery = frames ? world.n : steps;
+  while (simulation.step() < steps) {
+    const long long done = simulation.step();
+    const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
+    const RunOutcome outcome = simulation.advance(stop - done);
+    if (!outcome.ran()) return runFailure(options, world, file.state, outcome);
+    if (frames && simulation.step() % world.n == 0 && frames->wantsMore()) {
+      if (Outcome shown = observed(showFrame); !shown.ok()) return shown;
+    }
+    progress.update(simulation.step());
+  }
+  progress.finish();
+  printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
+
+  if (options.dumpPath) {
+    try {
+      writeWorldFile(*options.dumpPath, world, simulation.state(), true);
+    } catch (const std::exception& e) {
+      return failed(e.what());
+    }
+  }
+  return succeeded();
+}
+
+}  // namespace jello

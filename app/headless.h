@@ -1,0 +1,75 @@
+// headless.h: a simulation run without a window (SPEC.md section 4).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "solver/integrators.h"
+#include "core/outcome.h"
+#include "physics.h"
+#include "solver/simulation.h"
+#include "world.h"
+
+namespace jello {
+
+// What the command line asks of a run; unset values come from the world file.
+struct RunOptions {
+  std::string worldPath;
+  std::optional<long long> steps;  // --steps N
+  std::optional<double> time;      // --time T, seconds
+  std::optional<Integrator> integrator;
+  std::optional<double> dt;  // s
+  std::optional<int> n;
+  std::optional<std::string> dumpPath;  // --dump FILE
+  Tolerances tolerances;  // RK45's error control
+  KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
+};
+
+// Exit statuses of SPEC.md section 4, chosen by the mains alone (outcome.h).
+constexpr int kExitOk = 0;
+constexpr int kExitDiverged = 1;
+constexpr int kExitBadInput = 2;
+
+// The default length of a run: 300 drawn frames of n steps each.
+constexpr long long kDefaultFrames = 300;
+// A default run longer than this (n above 100,000) is refused rather than started: at about
+// 100 us an RK4 step it would take most of an hour, which nobody asks for without saying so.
+constexpr long long kMostDefaultSteps = 30'000'000;
+
+// Receives the frames a viewer would draw: the state at step 0 and after every n steps.
+class FrameObserver {
+ public:
+  virtual ~FrameObserver() = default;
+  // Called once before the first frame (e.g. to claim the output folder). Throws
+  // std::runtime_error with a one-line message to stop the run with exit status 2.
+  virtual void begin() {}
+  // Throws std::runtime_error like begin().
+  virtual void frame(const Model& model, const State& state) = 0;
+  // False once the observer wants no more frames (the run itself goes on).
+  virtual bool wantsMore() const = 0;
+  virtual int framesDone() const = 0;
+  // How the summary line names the frames, e.g. "300 frames in animation/".
+  virtual std::string describe() const = 0;
+};
+
+// --time T runs stepsForTime(T, dt) steps (simulation.h), whole ones: it ends at or just past T.
+// Why RK45 stopped at step s (a RunOutcome::Kind::ToleranceUnmet), in one line without "jello: ":
+// its tolerances are beyond what double arithmetic resolves.
+std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt);
+// The one line (without "jello: ") that refuses such a --time at such a dt.
+std::string tooManyStepsMessage(double time, double dt);
+
+// --dump FILE's rule (README, "Reliability"): it creates FILE or replaces a regular, writable
+// file of that name, because the option names it; never the world being run, nor anything
+// that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
+
+
+// Reads the world of `options` and applies its overrides. Fails, saying why, on bad input.
+Outcome loadRun(const RunOptions& options, WorldFile* out);
+
+// Loads the world, runs it (handing its frames to `frames` when given) and prints the summary
+// line on stdout. Fails (or diverges), saying why, without printing it.
+Outcome runHeadless(const RunOptions& options, FrameObserver* frames = nullptr);
+
+}  // namespace jello

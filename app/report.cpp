@@ -1,0 +1,487 @@
+// report.cpp: the work-precision study of jello --report.
+//
+// Every run starts from the world's initial state and ends at the same time T, so that all
+// of them are compared at one instant with one reference: RK4 at a much smaller step, whose
+// own error is estimated against a run at half its step. Steps are T/2^k, so that every run
+// lands on T exactly (the world's own dt need not: its last step is shortened, see simulate).
+
+#include "app/report.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <system_error>
+#include <thread>
+
+#include "solver/integrators.h"
+#include "physics.h"
+#include "core/output.h"
+#include "core/plot.h"
+#include "core/progress.h"
+#include "solver/simulation.h"
+
+namespace jello {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kSweepLength = 6;              // steps per integrator, halving
+constexpr int kReferenceRefinement = 32;     // reference step: the smallest swept step / 32
+constexpr long long kMaxReferenceSteps = 1 << 16;  // ... but no more steps than this
+constexpr int kLargestStepDivisor = 8;       // the stability search starts at T / 8
+constexpr int kSearchHalvings = 24;
+constexpr double kSameEnd = 0.01;  // m RMS: two runs that end this close agree
+constexpr double kRepeatBelowSeconds = 0.25;  // runs shorter than this are timed three times
+constexpr double kRk45Tolerances[kSweepLength] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+
+struct Run {
+  State end;
+  StepStats stats;
+  double wall = 0;
+  bool diverged = false;
+};
+
+// From the start to time T: stepsForTime(T, dt) steps, the last one shortened when dt does not
+// divide T (Simulation::advanceTo). runReport has checked that T/dt is a step count for every dt
+// it passes. A run that fails the checks of every run (simulation.h) has diverged.
+Run simulate(const Model& model, const State& start, Integrator integrator, double dt, double time,
+             Tolerances tolerances = {}) {
+  Run run;
+  Simulation simulation(model, start, integrator, dt, tolerances);
+  Clock::time_point begin = Clock::now();
+  run.diverged = !simulation.advanceTo(time).ran();
+  run.wall = std::chrono::duration<double>(Clock::now() - begin).count();
+  run.end = simulation.state();
+  run.stats = simulation.stats();
+  return run;
+}
+
+// Runs one setting into `row`: the run itself is the warm-up; runs shorter than
+// kRepeatBelowSeconds are timed twice more and the least time kept. Returns the end state.
+State measure(const Model& model, const State& start, double time, Tolerances tolerances, ReportRow* row) {
+  Run run = simulate(model, start, row->integrator, row->dt, time, tolerances);
+  double best = run.wall;
+  if (!run.diverged && run.wall < kRepeatBelowSeconds) {
+    for (int repeat = 0; repeat < 2; ++repeat)
+      best = std::min(best, simulate(model, start, row->integrator, row->dt, time, tolerances).wall);
+  }
+  row->steps = run.stats.steps;
+  row->evaluations = run.stats.evaluations + run.stats.jacobians;
+  row->wallSeconds = best;
+  row->diverged = run.diverged;
+  return run.end;
+}
+
+double rms(const State& a, const State& b, double* largest) {
+  double sum = 0;
+  *largest = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 d = load(a.p(), q) - load(b.p(), q);
+    sum += dot(d, d);
+    *largest = std::max(*largest, length(d));
+  }
+  return std::sqrt(sum / kNumPoints);
+}
+
+// The report's progress line: what runs now, and how many of the report's runs have begun.
+class ReportProgress {
+ public:
+  explicit ReportProgress(int total) : total_(total) {}
+  void finish() { line_.finish(); }
+  void show(const std::string& what) {
+    ++done_;
+    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) + ")");
+  }
+
+ private:
+  int total_, done_ = 0;
+  Progress line_;
+};
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+// "3.2 times as fast as the world's own", or "... slower than ...".
+std::string speedup(double ratio) {
+  return ratio >= 1 ? number(ratio) + " times as fast as the world's own"
+                    : number(1 / ratio) + " times slower than the world's own";
+}
+
+std::string describeSetting(const ReportRow& r) {
+  std::string s = std::string(integratorName(r.integrator)) + " dt=" + number(r.dt);
+  if (r.integrator == Integrator::RK45) s += " tolerance=" + number(r.tolerance);
+  return s;
+}
+
+std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
+                          double floor, double visualTolerance, const std::string& title) {
+  std::ostringstream gp;
+  gp << "# Made by jello --report; run `gnuplot report.gp` in this folder to draw report.png again.\n";
+  std::string plots;
+  for (Integrator integrator : integrators) {
+    std::string name = integratorName(integrator);
+    gp << "$" << name << " << EOD\n";
+    int points = 0;
+    for (const ReportRow& r : rows)
+      if (r.integrator == integrator && !r.diverged && r.rmsError > 0 && !r.worldsOwn) {
+        gp << r.wallSeconds << " " << r.rmsError << "\n";
+        ++points;
+      }
+    gp << "EOD\n";
+    if (points == 0) continue;
+    double order = fittedOrder(rows, integrator, floor);
+    std::string label = name + (std::isnan(order) ? std::string() : " (order " + number(std::round(order * 100) / 100) + ")");
+    plots += (plots.empty() ? "" : ", ") + std::string("$") + name + " using 1:2 with linespoints lw 2 pt 7 title '" +
+             label + "'";
+  }
+  gp << "$OWN << EOD\n";
+  for (const ReportRow& r : rows)
+    if (r.worldsOwn && !r.diverged && r.rmsError > 0) gp << r.wallSeconds << " " << r.rmsError << "\n";
+  gp << "EOD\n";
+  gp << "set terminal pngcairo size 960,640 font ',11'\n"
+     << "if (!exists(\"png\")) png = 'report.png'\n"
+     << "set output png\n"
+     << "set title " << gnuplotString(title) << "\n"
+     << "set logscale xy\n"
+     << "set format x '10^{%L}'\nset format y '10^{%L}'\n"
+     << "set xlabel 'wall time of the run (s)'\n"
+     << "set ylabel 'RMS position error at the end (m)'\n"
+     << "set grid\nset key outside right top\n"
+     << "plot " << plots << (plots.empty() ? "" : ", ")
+     << "$OWN using 1:2 with points pt 6 ps 3 lc 'black' title \"the world's own\", " << visualTolerance
+     << " with lines dt 2 lc 'gray40' title 'visual tolerance'\n";
+  return gp.str();
+}
+
+}  // namespace
+
+std::string reportCsv(const std::vector<ReportRow>& rows) {
+  std::ostringstream csv;
+  csv << "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status\n";
+  for (const ReportRow& r : rows) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n", integratorName(r.integrator), r.dt,
+                  r.integrator == Integrator::RK45 ? number(r.tolerance).c_str() : "", r.steps, r.evaluations,
+                  r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
+                  r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
+    csv << line;
+  }
+  return csv.str();
+}
+
+double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, double floor) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const ReportRow& r : rows) {
+    if (r.integrator != integrator || r.diverged || r.worldsOwn || !(r.rmsError > floor)) continue;
+    double x = std::log(integrator == Integrator::RK45 ? r.tolerance : r.dt), y = std::log(r.rmsError);
+    n += 1;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  if (n < 2 || n * sxx - sx * sx == 0) return NAN;
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+namespace {
+
+// What every run of the study shares.
+struct Study {
+  const Model& model;
+  const State& start;
+  double T;  // s: every run ends there
+  ReportProgress& progress;
+};
+
+// The study's rows and their runs' end states, index for index.
+struct Measured {
+  std::vector<ReportRow> rows;
+  std::vector<State> ends;
+  double smallestStep = 0;  // s: the smallest dt measured, which the reference's must be well below
+};
+
+// The largest step T/(8 2^k) at which `integrator` is stable: its run does not diverge and ends
+// where the run at half the step ends, to within kSameEnd (an unstable run need not reach
+// SPEC's 100 m within T).
+double largestStableStep(const Study& s, Integrator integrator) {
+  Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
+  for (int k = 0; k < kSearchHalvings; ++k) {
+    double dt = s.T / (kLargestStepDivisor << k);
+    s.progress.show(std::string("finding ") + integratorName(integrator) + "'s largest stable step, dt=" + number(dt));
+    Run half = simulate(s.model, s.start, integrator, dt / 2, s.T);
+    double ignored;
+    if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd) return dt;
+    previous = std::move(half);
+  }
+  return s.T / (static_cast<double>(kLargestStepDivisor) * (1 << kSearchHalvings));
+}
+
+// One integrator's sweep: its largest stable step, then halvings; RK45 sweeps its tolerance
+// instead.
+void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
+  const double largest = integrator == Integrator::RK45 ? 0 : largestStableStep(s, integrator);
+  for (int i = 0; i < kSweepLength; ++i) {
+    ReportRow row;
+    row.integrator = integrator;
+    Tolerances tolerances;
+    if (integrator == Integrator::RK45) {
+      // Its largest step as large as anyone's first try, so that the tolerance alone
+      // decides the steps it takes.
+      row.dt = s.T / kLargestStepDivisor;
+      row.tolerance = kRk45Tolerances[i];
+      tolerances = {row.tolerance, row.tolerance};
+    } else {
+      row.dt = largest / (1 << i);
+      m->smallestStep = std::min(m->smallestStep, row.dt);
+    }
+    s.progress.show(describeSetting(row));
+    m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
+    m->rows.push_back(row);
+  }
+}
+
+// The world's own setting, unless a sweep already ran it.
+void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tolerances, Measured* m) {
+  auto own = std::find_if(m->rows.begin(), m->rows.end(), [&](const ReportRow& r) {
+    return r.integrator == world.integrator && r.integrator != Integrator::RK45 && r.dt == world.dt;
+  });
+  if (own != m->rows.end()) {
+    own->worldsOwn = true;
+    return;
+  }
+  s.progress.show(std::string("the world's own ") + integratorName(world.integrator));
+  ReportRow row;
+  row.integrator = world.integrator;
+  row.dt = world.dt;
+  row.tolerance = world.integrator == Integrator::RK45 ? tolerances.rtol : 0;
+  row.worldsOwn = true;
+  m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
+  m->rows.push_back(row);
+}
+
+// The positions every run is compared with: RK4 well below the smallest step measured.
+struct Reference {
+  double step = 0;  // s
+  long long steps = 0;
+  bool diverged = false;  // the reference or its check diverged: there is no report
+  State end;
+  double error = 0;  // m RMS: the reference's own, estimated against the run at half its step
+};
+
+Reference runReference(const Study& s, double smallestStep) {
+  Reference reference;
+  reference.steps = 1;
+  while (reference.steps < kMaxReferenceSteps && s.T / reference.steps > smallestStep / kReferenceRefinement)
+    reference.steps *= 2;
+  reference.step = s.T / reference.steps;
+  s.progress.show("the reference, RK4 dt=" + number(reference.step) + " and dt=" + number(reference.step / 2));
+  // The reference and its check run at once, one on each core, after the timed runs.
+  Run run, check;
+  auto runCheck = [&] { check = simulate(s.model, s.start, Integrator::RK4, reference.step / 2, s.T); };
+  std::thread other;
+  try {
+    other = std::thread(runCheck);
+  } catch (const std::system_error&) {  // no thread to be had: the same work, one after the other
+    runCheck();
+  }
+  run = simulate(s.model, s.start, Integrator::RK4, reference.step, s.T);
+  if (other.joinable()) other.join();
+  reference.diverged = run.diverged || check.diverged;
+  if (reference.diverged) return reference;
+  double largest;
+  reference.error = rms(run.end, check.end, &largest);
+  reference.end = std::move(run.end);
+  return reference;
+}
+
+// What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
+// within the visual tolerance. Pointers into the rows; null when there is none.
+struct Recommendations {
+  const ReportRow* own = nullptr;
+  const ReportRow* asAccurate = nullptr;
+  const ReportRow* looksSame = nullptr;
+};
+
+Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance) {
+  Recommendations r;
+  for (const ReportRow& row : rows)
+    if (row.worldsOwn) r.own = &row;
+  auto cheapest = [&](double limit) {
+    const ReportRow* best = nullptr;
+    for (const ReportRow& row : rows)
+      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds)) best = &row;
+    return best;
+  };
+  r.asAccurate = r.own && !r.own->diverged ? cheapest(r.own->rmsError) : nullptr;
+  r.looksSame = cheapest(visualTolerance);
+  return r;
+}
+
+// report.md's head and its table of runs.
+std::string markdownRuns(const std::string& worldPath, double T, const Reference& reference,
+                         const std::vector<ReportRow>& rows) {
+  std::ostringstream md;
+  md << "# Error against run time: " << worldPath << "\n\n"
+     << "Every run goes from the world's initial state to T = " << number(T)
+     << " s. Error: RMS over the 512 points of the distance to the reference positions at T (max: the largest "
+        "distance). Time: the least wall time of the stepping over repeated runs, after a warm-up (runs over "
+     << kRepeatBelowSeconds << " s are timed once).\n\n"
+     << "Reference: RK4 at dt = " << number(reference.step) << " s (" << reference.steps
+     << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2) << " s, is "
+     << number(reference.error) << " m RMS. Errors below " << number(10 * reference.error)
+     << " m are at the reference's limit and are left out of the fitted orders.\n\n"
+     << "![error against run time](report.png)\n\n"
+     << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max error (m) | status |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const ReportRow& r : rows) {
+    md << "| " << integratorName(r.integrator) << (r.worldsOwn ? " (the world's own)" : "") << " | " << number(r.dt)
+       << " | " << (r.integrator == Integrator::RK45 ? number(r.tolerance) : "") << " | " << r.steps << " | "
+       << r.evaluations << " | " << number(r.wallSeconds) << " | " << (r.diverged ? "" : number(r.rmsError)) << " | "
+       << (r.diverged ? "" : number(r.maxError)) << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
+  }
+  return md.str();
+}
+
+// report.md's fitted orders.
+std::string markdownOrders(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
+                           double floor) {
+  std::ostringstream md;
+  md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against log(tolerance)).\n\n"
+     << "| integrator | fitted order | theory |\n|---|---|---|\n";
+  for (Integrator integrator : integrators) {
+    double order = fittedOrder(rows, integrator, floor);
+    md << "| " << integratorName(integrator) << " | " << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
+       << (integrator == Integrator::RK45 ? std::string("(tolerance)") : std::to_string(orderOf(integrator))) << " |\n";
+  }
+  return md.str();
+}
+
+// report.md's recommendations.
+std::string markdownRecommendations(const Recommendations& recommended, double visualTolerance) {
+  const ReportRow* ownRow = recommended.own;
+  std::ostringstream md;
+  md << "\n## Recommendations\n\n";
+  if (ownRow) {
+    md << "The world's own setting, " << describeSetting(*ownRow) << ", "
+       << (ownRow->diverged ? std::string("diverges before T.")
+                            : "takes " + number(ownRow->wallSeconds) + " s for an error of " + number(ownRow->rmsError) +
+                                  " m.")
+       << "\n\n";
+  }
+  auto recommendation = [&](const char* what, const ReportRow* r) {
+    md << "- **" << what << "**: ";
+    if (!r) {
+      md << "none of the runs.\n";
+      return;
+    }
+    if (r == ownRow) {
+      md << "the world's own setting; nothing cheaper is as accurate.\n";
+      return;
+    }
+    md << describeSetting(*r) << ": " << number(r->wallSeconds) << " s, error " << number(r->rmsError) << " m";
+    if (ownRow && !ownRow->diverged && r->wallSeconds > 0) md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
+    md << ".\n";
+  };
+  recommendation("The cheapest setting at least as accurate as the world's own", recommended.asAccurate);
+  recommendation(("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)").c_str(),
+                 recommended.looksSame);
+  return md.str();
+}
+
+// report.csv, report.md and report.gp into the claimed folder. Throws OutputError.
+void writeReportFiles(const std::string& worldPath, const ReportOptions& options,
+                      const std::vector<Integrator>& integrators, const std::vector<ReportRow>& rows,
+                      const Reference& reference, const Recommendations& recommended) {
+  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  const double T = options.time, floor = 10 * reference.error;
+  const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
+  const std::string md = markdownRuns(worldPath, T, reference, rows) + markdownOrders(rows, integrators, floor) +
+                         markdownRecommendations(recommended, options.visualTolerance);
+  writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
+  writeFileWhole(options.dir + "/report.md", md, existing);
+  writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
+                 existing);
+}
+
+// The lines on stdout: where the report is, and what it recommends.
+void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn, std::size_t runs,
+                        const Reference& reference, const Recommendations& recommended) {
+  const ReportRow *ownRow = recommended.own, *asAccurate = recommended.asAccurate,
+                  *looksSame = recommended.looksSame;
+  std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",
+              worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
+              reference.step, reference.error);
+  if (asAccurate == ownRow && ownRow)
+    std::printf("as accurate as the world's own: nothing cheaper than the world's own setting\n");
+  else if (asAccurate && ownRow && asAccurate->wallSeconds > 0)
+    std::printf("as accurate as the world's own: %s, %s\n", describeSetting(*asAccurate).c_str(),
+                speedup(ownRow->wallSeconds / asAccurate->wallSeconds).c_str());
+  if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
+    std::printf("within %g m: %s, %s\n", options.visualTolerance, describeSetting(*looksSame).c_str(),
+                speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
+}
+
+}  // namespace
+
+Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(runOptions, &file); !loaded.ok()) return loaded;
+  const World& world = file.world;
+  const Model model = makeModel(world, file.state);
+  const double T = options.time;
+  // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
+  if (!stepsForTime(T, world.dt)) return failed("--report: " + tooManyStepsMessage(T, world.dt));
+  std::vector<Integrator> integrators = options.integrators;
+  if (integrators.empty())
+    for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
+
+  // Claim the folder and check every file before the long work, not after it.
+  FolderClaim claim;
+  const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  try {
+    claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
+  } catch (const OutputError& e) {
+    return failed(std::string("--report: ") + e.what());
+  }
+
+  ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+  const Study study{model, file.state, T, progress};
+  Measured measured;
+  measured.smallestStep = world.dt;
+  for (Integrator integrator : integrators) sweepIntegrator(study, integrator, &measured);
+  measureWorldsOwn(study, world, runOptions.tolerances, &measured);
+  const Reference reference = runReference(study, measured.smallestStep);
+  if (reference.diverged)
+    return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) + ") diverged; no report");
+  std::vector<ReportRow>& rows = measured.rows;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].diverged) rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
+  }
+  const Recommendations recommended = recommend(rows, options.visualTolerance);
+  progress.finish();
+
+  try {
+    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, recommended);
+  } catch (const OutputError& e) {
+    return failed(e.what());
+  }
+  const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
+  const bool drawn = whyNotDrawn.empty();
+  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, recommended);
+  if (drawn) return succeeded();
+  // Without gnuplot the data files are the report; a gnuplot that failed is a failure.
+  const std::string notDrawn = "report.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
+}
+
+}  // namespace jello

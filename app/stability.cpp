@@ -1,0 +1,660 @@
+// stability.cpp: predicted stable steps from the linearised forces.
+
+#include "app/stability.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "solver/guard.h"
+#include "app/headless.h"
+#include "solver/integrators.h"
+#include "solver/jacobian.h"
+#include "core/output.h"
+#include "core/plot.h"
+#include "core/progress.h"
+#include "solver/simulation.h"
+
+namespace jello {
+
+const std::vector<Integrator> kExplicitIntegrators = integratorsWithStepLimit();
+
+namespace {
+
+constexpr double kWallPress = 1e-3;    // m: how far the face is pressed into the wall
+constexpr double kRigid = 1e-9;        // |omega^2| below this fraction of the largest: a rigid motion
+constexpr double kLargestStep = 1.0;   // s: no limit beyond this is reported
+// A mode counts as bounded when it grows by less than a factor of 2 over kHorizon: explicit
+// Euler amplifies an undamped slow mode (a field's slight restoring force, say) at any step,
+// but by so little that no run would see it.
+constexpr double kHorizon = 10.0;  // s
+constexpr int kBisections = 60;
+
+// Spectral radius of the one-step map of x'' = -w2 x - c x' under `integrator` at step h,
+// found by stepping the two unit states with the integrator's own code.
+double spectralRadius(Integrator integrator, const Mode& mode, double h) {
+  OdeSystem system;
+  system.derivative = [&mode](const double* y, double* dydt) {
+    dydt[0] = y[1];
+    dydt[1] = -mode.omegaSquared * y[0] - mode.damping * y[1];
+  };
+  // RK45 with tolerances that accept any step: one Dormand-Prince step of exactly h.
+  const Tolerances accept{1e300, 1e300};
+  double m[2][2];
+  for (int column = 0; column < 2; ++column) {
+    std::vector<double> y{column == 0 ? 1.0 : 0.0, column == 1 ? 1.0 : 0.0};
+    Stepper stepper(integrator, accept);
+    stepper.step(system, y, h);
+    m[0][column] = y[0];
+    m[1][column] = y[1];
+  }
+  double trace = m[0][0] + m[1][1], det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  std::complex<double> root = std::sqrt(std::complex<double>(trace * trace / 4 - det));
+  return std::max(std::abs(trace / 2 + root), std::abs(trace / 2 - root));
+}
+
+bool stableAt(Integrator integrator, const Mode& mode, double h) {
+  double radius = spectralRadius(integrator, mode, h);
+  return std::isfinite(radius) && radius <= std::pow(2.0, h / kHorizon) * (1 + 1e-12);
+}
+
+double modeLimit(Integrator integrator, const Mode& mode) {
+  if (stableAt(integrator, mode, kLargestStep)) return kLargestStep;
+  double low = 0, high = kLargestStep;
+  for (int i = 0; i < kBisections; ++i) {
+    double middle = low == 0 ? high / 2 : std::sqrt(low * high);
+    (stableAt(integrator, mode, middle) ? low : high) = middle;
+    if (low > 0 && high / low < 1 + 1e-6) break;
+  }
+  return low;
+}
+
+// x rounded to an integer, clamped in floating point to long long's range first (NaN to 0): a
+// mode of an extreme world (omega^2 or damping near 1e308) never reaches an undefined conversion.
+long long roundedKey(double x) {
+  constexpr double kLimit = 9e18;
+  return std::isnan(x) ? 0 : std::llround(std::clamp(x, -kLimit, kLimit));
+}
+
+std::string number(double x) {
+  if (std::isinf(x)) return "unbounded";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+// --check's table: a line per integrator of the integrator table, its limits or "unbounded".
+std::string limitTable(const StabilityReport& r) {
+  std::string out = "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
+  char line[256];
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(kExplicitIntegrators[i]),
+                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
+                  limitText(r.criticalFaceOnWall[i]).c_str());
+    out += line;
+  }
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.boundedStableStep) continue;
+    std::snprintf(line, sizeof line, "  %-12s unbounded (A-stable)\n", row.name);
+    out += line;
+  }
+  return out + "\n";
+}
+
+}  // namespace
+
+Linearisation linearise(const Model& model, const State& state) {
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
+  Eigen::MatrixXd stiffness(jacobian.dAdp), damping(jacobian.dAdv);
+  Linearisation out;
+  // The eigensolver on an inf or a NaN takes minutes to say nothing.
+  if (!stiffness.allFinite() || !damping.allFinite()) {
+    out.finite = false;
+    return out;
+  }
+  stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness);
+  const Eigen::MatrixXd& phi = solver.eigenvectors();
+  const Eigen::MatrixXd dampingTimesPhi = damping * phi;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < phi.cols(); ++i) {
+    double w2 = -solver.eigenvalues()[i];
+    if (w2 < -rigid) {
+      ++out.growing;
+      continue;
+    }
+    if (w2 <= rigid) continue;
+    double c = -phi.col(i).dot(dampingTimesPhi.col(i));
+    out.modes.push_back({w2, c});
+    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(w2));
+    out.lowestDamping = std::min(out.lowestDamping, c);
+    out.highestDamping = std::max(out.highestDamping, c);
+  }
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
+Linearisation lineariseAtRest(const World& world) {
+  // Eigenvalues of the lattice with unit stiffness and unit mass, computed once.
+  static const Eigen::VectorXd unitLattice = [] {
+    World unit;
+    unit.kElastic = 1;
+    unit.mass = 1;
+    Model model = makeModel(unit, restState());
+    AccelerationJacobian jacobian;
+    accelerationJacobian(model, restState().p(), restState().v(), nullptr, &jacobian);
+    Eigen::MatrixXd stiffness(jacobian.dAdp);
+    stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
+    return Eigen::VectorXd(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly).eigenvalues());
+  }();
+  Linearisation out;
+  if (!std::isfinite(world.kElastic / world.mass) || !std::isfinite(world.dElastic / world.mass)) {
+    out.finite = false;
+    return out;
+  }
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * unitLattice.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
+    double mu = -unitLattice[i];
+    if (mu <= rigid) continue;
+    Mode m{mu * world.kElastic / world.mass, mu * world.dElastic / world.mass};
+    if (m.omegaSquared <= 0) continue;
+    out.modes.push_back(m);
+    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(m.omegaSquared));
+    out.lowestDamping = std::min(out.lowestDamping, m.damping);
+    out.highestDamping = std::max(out.highestDamping, m.damping);
+  }
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
+double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
+  // The lattice's symmetry repeats modes; each distinct one (to 1e-9) is examined once.
+  std::map<std::pair<long long, long long>, Mode> distinct;
+  for (const Mode& m : modes) {
+    auto key = std::pair{roundedKey(std::log(m.omegaSquared) * 1e9), roundedKey(m.damping * 1e6)};
+    distinct.emplace(key, m);
+  }
+  double limit = kLargestStep;
+  for (const auto& [key, mode] : distinct) {
+    // A mode already stable at the current limit cannot lower it.
+    if (stableAt(integrator, mode, limit)) continue;
+    limit = std::min(limit, modeLimit(integrator, mode));
+  }
+  return limit;
+}
+
+State restState() {
+  State s;
+  for (int i = 0; i < kLatticeSize; ++i)
+    for (int j = 0; j < kLatticeSize; ++j)
+      for (int k = 0; k < kLatticeSize; ++k)
+        store(s.p(), pointIndex(i, j, k), kRestSpacing * Vec3{double(i), double(j), double(k)});
+  return s;
+}
+
+State faceOnWallState() {
+  State s = restState();
+  for (int q = 0; q < kNumPoints; ++q) s.p()[coordIndex(q, 0)] += -kBoxHalfSize - kWallPress;
+  return s;
+}
+
+std::string beyondDoubles(const World& world, const State& initial) {
+  double largestField = 0;
+  for (double f : world.field.forces) largestField = std::max(largestField, std::fabs(f));
+  const struct {
+    const char* name;
+    double value;
+  } parameters[] = {{"kElastic", world.kElastic},
+                    {"dElastic", world.dElastic},
+                    {"kCollision", world.kCollision},
+                    {"dCollision", world.dCollision},
+                    {"the largest field force", largestField}};
+  char text[200];
+  for (const auto& parameter : parameters) {
+    const double perKilogram = parameter.value / world.mass;
+    if (!std::isfinite(perKilogram * kHeadroom)) {
+      std::snprintf(
+          text, sizeof text, "%s / mass = %g / %g gives %g%s", parameter.name, parameter.value,
+          world.mass, perKilogram,
+          std::isfinite(perKilogram) ? ", too near double's largest number to take a step" : "");
+      return text;
+    }
+  }
+  for (int q = 0; q < kNumPoints; ++q) {
+    const Vec3 v = load(initial.v(), q);
+    if (!std::isfinite(dot(v, v) * kHeadroom)) {
+      std::snprintf(text, sizeof text,
+                    "the velocity of p%s, (%g, %g, %g) m/s: its square (kinetic energy) overflows",
+                    latticeLabel(q).c_str(), v.x, v.y, v.z);
+      return text;
+    }
+  }
+  return "";
+}
+
+double largestStrain(const State& state) {
+  double largest = 0;
+  for (const Spring& s : buildSprings())
+    largest = std::max(largest,
+                       std::fabs(length(load(state.p(), s.a) - load(state.p(), s.b)) / s.rest - 1));
+  return largest;
+}
+
+double stableFraction(const World& world, const State& initial) {
+  const Linearisation rest = lineariseAtRest(world);
+  if (!rest.finite || rest.modes.empty()) return kStableFraction;
+  // At rest a mode's damping rate is its omega^2 dElastic / kElastic: the fastest's, over omega.
+  const double dampingPerRadian = rest.highestFrequency * world.dElastic / world.kElastic;
+  const bool lightlyDamped = dampingPerRadian < kLightDamping;
+  return lightlyDamped && largestStrain(initial) > kDeformed ? kLargeMotionStableFraction
+                                                             : kStableFraction;
+}
+
+double StabilityReport::verdictLimit(Integrator integrator) const {
+  const double atRest = critical(integrator);
+  auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), integrator);
+  if (at == kExplicitIntegrators.end() || criticalInitial.empty()) return atRest;
+  const double atStart =
+      criticalInitial[static_cast<std::size_t>(at - kExplicitIntegrators.begin())];
+  return std::isnan(atStart) ? atRest : std::min(atRest, atStart);
+}
+
+double StabilityReport::critical(Integrator integrator) const {
+  auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), integrator);
+  if (at == kExplicitIntegrators.end()) return INFINITY;
+  if (!beyond.empty()) return NAN;
+  return criticalRest[static_cast<std::size_t>(at - kExplicitIntegrators.begin())];
+}
+
+StabilityReport analyseStability(const World& world, const State& initial) {
+  StabilityReport report;
+  report.beyond = beyondDoubles(world, initial);
+  if (!report.beyond.empty()) return report;  // nothing to analyse, in microseconds
+  Model model = makeModel(world, initial);
+  report.initial = linearise(model, initial);
+  report.rest = lineariseAtRest(world);
+  Linearisation wall = linearise(model, faceOnWallState());
+  report.largestStrain = largestStrain(initial);
+  report.stableFraction = stableFraction(world, initial);
+  for (Integrator integrator : kExplicitIntegrators) {
+    report.criticalInitial.push_back(
+        report.initial.finite ? criticalStep(integrator, report.initial.modes) : NAN);
+    report.criticalRest.push_back(criticalStep(integrator, report.rest.modes));
+    report.criticalFaceOnWall.push_back(criticalStep(integrator, wall.modes));
+  }
+  return report;
+}
+
+double predictedLimit(const World& world, const State& initial, Integrator integrator) {
+  if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
+  Model model = makeModel(world, initial);
+  const Linearisation atStart = linearise(model, initial);
+  if (!atStart.finite) return NAN;
+  return std::min(criticalStep(integrator, atStart.modes),
+                  criticalStep(integrator, linearise(model, faceOnWallState()).modes));
+}
+
+std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
+                              const std::string& reason) {
+  char head[160];
+  std::snprintf(head, sizeof head, "diverged at step %lld (t=%.6g s): ", step, time);
+  std::string out = head + reason + "; ";
+  const char* name = integratorName(world.integrator);
+  // Checks of microseconds first: an eigen-analysis of such a world would say nothing, slowly.
+  if (findDivergedPoint(initial) >= 0) {
+    return out +
+           "the initial state is already beyond the guard (not finite, or more than 100 m from the "
+           "origin): no step will do; start the cube inside the box";
+  }
+  const std::string beyond = beyondDoubles(world, initial);
+  if (!beyond.empty()) {
+    return out + "the world's numbers are beyond what double arithmetic can simulate (" + beyond +
+           "): no step will do";
+  }
+  // The rest lattice's limit takes milliseconds; when it is already below what the analysis
+  // resolves, the springs alone rule every step out and the eigensolves are spared.
+  if (integratorInfo(world.integrator).boundedStableStep &&
+      criticalStep(world.integrator, lineariseAtRest(world).modes) == 0)
+    return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
+  double limit = predictedLimit(world, initial, world.integrator);
+  if (limit == 0) return out + "dt=" + number(world.dt) + " with " + name + ": " + stepAdvice(0);
+  if (std::isnan(limit)) {
+    return out +
+           "the forces' derivatives at the initial state are not finite numbers: the world's "
+           "numbers are beyond what double arithmetic can simulate, and no step will do";
+  }
+  if (!std::isfinite(limit)) {
+    return out + "dt=" + number(world.dt) + " with " + name + ", which has no stability limit; " +
+           (world.dt / 2 >= std::numeric_limits<double>::min()
+                ? "try a smaller --dt"
+                : "no step will do (dt is the smallest a double holds)");
+  }
+  if (world.dt > limit) {
+    return out + "dt=" + number(world.dt) + " exceeds " + name + "'s stable limit " +
+           limitText(limit) + " for this world; " + stepAdvice(limit);
+  }
+  return out + "dt=" + number(world.dt) + " is within " + name + "'s predicted limit " +
+         number(limit) +
+         " for this world, but the motion left it (a harder contact than a face on a wall?); " +
+         stepAdvice(world.dt);
+}
+
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+  // The smallest step tried is guess / 3: its runs must be a countable number of steps.
+  if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
+  // Runs of `time` seconds (stepsForTime's count: every dt tried is above guess / 3), checked
+  // as every run is (simulation.h).
+  auto stable = [&](double dt) { return Simulation(model, start, integrator, dt).advance(*stepsForTime(time, dt)).ran(); };
+  double low = guess / 3, high = guess * 3;
+  if (!stable(low) || stable(high)) return NAN;
+  for (int i = 0; i < 9; ++i) {
+    double middle = std::sqrt(low * high);
+    (stable(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+namespace {
+
+// The map's numbers: the CSV, and per integrator the gnuplot data lines "kElastic dt".
+struct StiffnessSweep {
+  std::string csv;
+  std::map<std::string, std::string> predictedRows, observedRows;
+};
+
+// kElastic from 1/8 to 8 times the world's (500 N/m when it has none): the predicted limit of
+// every explicit integrator, and the observed one of three of them (real runs are slow).
+StiffnessSweep sweepStiffness(const World& world, const State& initial, double time) {
+  const double base = world.kElastic > 0 ? world.kElastic : 500;
+  const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint, Integrator::RK4};
+  StiffnessSweep sweep;
+  sweep.csv = "kElastic,integrator,predicted_dt,observed_dt\n";
+  Progress progress;
+  for (int e = -3; e <= 3; ++e) {
+    World w = world;
+    w.kElastic = base * std::pow(2.0, e);
+    Linearisation rest = lineariseAtRest(w);
+    Model model = makeModel(w, initial);
+    for (Integrator integrator : kExplicitIntegrators) {
+      double predicted = criticalStep(integrator, rest.modes);
+      bool measured = std::find(observed.begin(), observed.end(), integrator) != observed.end();
+      double seen = measured ? observedLimit(model, initial, integrator, time, predicted) : NAN;
+      char line[160];
+      std::snprintf(line, sizeof line, "%.6g,%s,%.6g,%s\n", w.kElastic, integratorName(integrator), predicted,
+                    std::isnan(seen) ? "" : number(seen).c_str());
+      sweep.csv += line;
+      std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, predicted);
+      sweep.predictedRows[integratorName(integrator)] += line;
+      if (!std::isnan(seen)) {
+        std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, seen);
+        sweep.observedRows[integratorName(integrator)] += line;
+      }
+    }
+    char done[64];
+    std::snprintf(done, sizeof done, "map: kElastic %g done", w.kElastic);
+    progress.show(done);
+  }
+  return sweep;
+}
+
+// stability-map.gp: the data inline, so that the script alone draws the picture again.
+std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath, const World& world) {
+  std::ostringstream gp;
+  gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png again.\n";
+  std::string plots;
+  int style = 0;
+  for (const auto& [name, rows] : sweep.predictedRows) {
+    std::string lt = " lt " + std::to_string(++style);  // one colour an integrator
+    gp << "$P_" << name << " << EOD\n" << rows << "EOD\n";
+    plots += (plots.empty() ? "" : ", ") + std::string("$P_") + name + " with lines lw 2" + lt + " title '" + name +
+             " predicted'";
+    if (auto observed = sweep.observedRows.find(name); observed != sweep.observedRows.end()) {
+      gp << "$O_" << name << " << EOD\n" << observed->second << "EOD\n";
+      plots += ", $O_" + name + " with points pt 7 ps 1.3" + lt + " title '" + name + " observed'";
+    }
+  }
+  gp << "set terminal pngcairo size 960,640 font ',11'\n"
+     << "if (!exists(\"png\")) png = 'stability-map.png'\nset output png\n"
+     << "set title " << gnuplotString(worldPath + ": largest stable step against spring stiffness (stable below each line)")
+     << "\n"
+     << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key outside right top\n"
+     << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
+     << world.kElastic << " " << world.dt << "\ne\n";
+  return gp.str();
+}
+
+}  // namespace
+
+Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world,
+                          const State& initial, double time, bool overwrite) {
+  FolderClaim claim;
+  const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  try {
+    claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
+  } catch (const OutputError& e) {
+    return failed(std::string("--map: ") + e.what());
+  }
+  const StiffnessSweep sweep = sweepStiffness(world, initial, time);
+  try {
+    writeFileWhole(dir + "/stability-map.csv", sweep.csv, existing);
+    writeFileWhole(dir + "/stability-map.gp", mapScript(sweep, worldPath, world), existing);
+  } catch (const OutputError& e) {
+    return failed(e.what());
+  }
+  const std::string whyNotDrawn = drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
+  const bool drawn = whyNotDrawn.empty();
+  std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
+              drawn ? ", stability-map.png" : "");
+  if (drawn) return succeeded();
+  // Without gnuplot the CSV is the map; a gnuplot that failed is a failure.
+  const std::string notDrawn = "stability-map.png was not drawn: " + whyNotDrawn;
+  return whyNotDrawn == kGnuplotMissing ? succeeded(notDrawn) : failed(notDrawn);
+}
+
+Verdict verdictFor(double dt, double critical, double stableFraction) {
+  if (dt > critical) return Verdict::Unstable;
+  if (dt > stableFraction * critical) return Verdict::NearLimit;
+  return Verdict::Stable;
+}
+
+const char* verdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Stable:
+      return "stable";
+    case Verdict::NearLimit:
+      return "marginal";
+    case Verdict::Unstable:
+      return "unstable";
+  }
+  return "unstable";  // not reached: every verdict is named above
+}
+
+double suggestedStep(double critical, double stableFraction) {
+  double target = stableFraction * critical;
+  double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * decade <= target) return m * decade;
+  return decade;
+}
+
+std::string limitText(double limit) {
+  if (limit == 0) return "below " + number(kShortestResolvedStep);
+  if (std::isnan(limit)) return "none (not finite)";
+  return number(limit);
+}
+
+std::string stepAdvice(double critical, double stableFraction) {
+  const double step = suggestedStep(critical, stableFraction);
+  // --dt takes any finite step > 0; a subnormal one has lost precision, and 0 is refused.
+  if (step >= std::numeric_limits<double>::min() && std::isfinite(step))
+    return "try --dt " + number(step) + " or --integrator IMPLICIT";
+  if (critical == 0) {
+    return "no step will do: the stable limit is below " + number(kShortestResolvedStep) +
+           " s (modes faster than about 1e18 rad/s); soften the world (kElastic, kCollision, mass) "
+           "or try --integrator IMPLICIT";
+  }
+  return "no step will do: " + number(100 * stableFraction) + "% of " + number(critical) +
+         " s is below the smallest normal double; soften the world or try --integrator IMPLICIT";
+}
+
+namespace {
+// Why a step below the limit is only marginal (see kStableFraction).
+std::string marginalNote(const StabilityReport& r) {
+  char text[400];
+  if (r.stableFraction < kStableFraction) {
+    std::snprintf(
+        text, sizeof text,
+        "  marginal: the cube starts deformed (a spring strained by %.0f%%) and its fast modes are "
+        "nearly undamped, so its large motion can pump them at steps the limits call stable (runs "
+        "diverged at 0.58 of the limit for a cube stretched by 30%%); below %.0f%% of the limit a "
+        "step is called stable\n",
+        100 * r.largestStrain, 100 * r.stableFraction);
+  } else {
+    std::snprintf(
+        text, sizeof text,
+        "  marginal: within %.0f%% of the limit, which holds for small motions about the state "
+        "analysed; a large motion can lower the real one (an undamped cube with a corner pulled "
+        "out by 0.35 m diverged at 0.82 of it)\n",
+        100 * (1 - r.stableFraction));
+  }
+  return text;
+}
+}  // namespace
+
+namespace {
+
+// --check's lines on the modes: at rest, at the initial state, and those that grow.
+std::string modesText(const StabilityReport& r) {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping rates %.3g to %.3g 1/s\n",
+                r.rest.modes.size(), r.rest.highestFrequency, r.rest.highestFrequency / (2 * 3.14159265358979),
+                r.rest.lowestDamping, r.rest.highestDamping);
+  out += line;
+  std::snprintf(line, sizeof line,
+                "  at the initial state: highest frequency %.4g rad/s, damping rates %.3g to %.3g 1/s\n",
+                r.initial.highestFrequency, r.initial.lowestDamping, r.initial.highestDamping);
+  out +=
+      r.initial.finite
+          ? line
+          : "  at the initial state: the forces' derivatives are not finite numbers (beyond double "
+            "arithmetic): no analysis\n";
+  if (r.initial.growing) {
+    out += "  " + std::to_string(r.initial.growing) +
+           " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
+           "field): physics, not numerics\n";
+  }
+  return out;
+}
+
+// --check's verdict on the world's own dt, with the note and the advice it calls for.
+std::string verdictText(const World& world, const StabilityReport& r) {
+  const double critical = r.verdictLimit(world.integrator);
+  // Named when it differs in print from the headline one (the two eigensolves differ in the last
+  // bits).
+  const char* which =
+      number(critical) != number(r.critical(world.integrator)) ? " at the initial state" : "";
+  Verdict verdict = verdictFor(world.dt, critical, r.stableFraction);
+  std::string out = "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
+                    verdictName(verdict);
+  if (critical == 0) {
+    out += " (the limit is " + limitText(critical) + " s)";
+  } else if (std::isfinite(critical)) {
+    char line[256];
+    std::snprintf(line, sizeof line, " (%.0f%% of the limit %s%s)", 100 * world.dt / critical,
+                  number(critical).c_str(), which);
+    out += line;
+  }
+  out += "\n";
+  if (verdict == Verdict::NearLimit) out += marginalNote(r);
+  if (verdict != Verdict::Stable && std::isfinite(critical))
+    out += "  " + stepAdvice(critical, r.stableFraction) + "\n";
+  return out;
+}
+
+// --check's warnings when the world's dt is above the limit at the start or against a wall.
+std::string otherLimitsText(const World& world, const StabilityReport& r) {
+  std::string out;
+  auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
+  if (at != kExplicitIntegrators.end()) {
+    std::size_t i = static_cast<std::size_t>(at - kExplicitIntegrators.begin());
+    if (world.dt > r.criticalInitial[i]) {
+      out += "  at the initial state the limit is " + limitText(r.criticalInitial[i]) +
+             " s: the start's deformation may destabilise this step for a while\n";
+    }
+    if (world.dt > r.criticalFaceOnWall[i]) {
+      out += "  while a face presses on a wall the limit is " + limitText(r.criticalFaceOnWall[i]) +
+             " s: contact may destabilise this step\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  if (!r.beyond.empty()) {
+    return worldPath +
+           ": the world's numbers are beyond what double arithmetic can simulate: " + r.beyond +
+           "\n  its first step overflows, or leaves the guard's 100 m: no practical step of any "
+           "integrator will do, and no stability analysis was made\n";
+  }
+  std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
+  out += modesText(r);
+  out += limitTable(r);
+  out += verdictText(world, r);
+  out += otherLimitsText(world, r);
+  return out;
+}
+
+std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& r) {
+  nlohmann::json j;
+  j["world"] = worldPath;
+  j["dt"] = world.dt;
+  j["integrator"] = integratorName(world.integrator);
+  if (!r.beyond.empty()) {
+    j["beyond_double_arithmetic"] = r.beyond;
+    j["verdict"] = "beyond double arithmetic";
+    j["critical_dt"] = nullptr;
+    return j.dump(2) + "\n";
+  }
+  j["modes"] = r.rest.modes.size();
+  j["highest_frequency"] = r.rest.highestFrequency;
+  j["damping_rates"] = {r.rest.lowestDamping, r.rest.highestDamping};
+  j["initial_state"] = {{"highest_frequency", r.initial.highestFrequency},
+                        {"damping_rates", {r.initial.lowestDamping, r.initial.highestDamping}},
+                        {"growing_modes", r.initial.growing}};
+  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
+    Integrator integrator = kExplicitIntegrators[i];
+    j["integrators"][integratorName(integrator)] = {{"critical_dt", finite(r.critical(integrator))},
+                                                     {"initial_state", finite(r.criticalInitial[i])},
+                                                     {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
+  }
+  for (const IntegratorInfo& row : integratorTable())
+    if (!row.boundedStableStep) j["integrators"][row.name] = {{"critical_dt", nullptr}, {"unbounded", true}};
+  double critical = r.critical(world.integrator), verdictLimit = r.verdictLimit(world.integrator);
+  j["verdict"] = verdictName(verdictFor(world.dt, verdictLimit, r.stableFraction));
+  j["critical_dt"] = finite(critical);
+  j["verdict_limit_dt"] =
+      finite(verdictLimit);  // the smaller of the limits at rest and at the start
+  j["stable_below_dt"] = finite(r.stableFraction * verdictLimit);
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace jello

@@ -1,0 +1,42 @@
+// graphics.h: what the command line needs of the pictures: the GLUT window, and frames rendered
+// off-screen. They live in a shared library, libjello_graphics.so, which jello loads only when
+// a run needs pictures: a headless run without --frames loads no GL, GLUT, X11 or JPEG
+// library, and a build without the GL development packages has no such library at all.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "graphics/frames.h"
+#include "app/headless.h"
+#include "app/pictures.h"
+
+namespace jello {
+
+// In libjello_graphics.so:
+// True when a window can be opened; otherwise why not, in a few words.
+bool displayAvailable(std::string* why);
+
+// The frames of a headless run, rendered off-screen into JPEGs. Throws std::runtime_error
+// with a one-line message when no off-screen context can be made.
+std::unique_ptr<FrameObserver> makeOffscreenFrames(const PictureOptions& pictures);
+
+// Opens the viewer (SPEC.md section 5) on the world of `run`; says how it went (outcome.h).
+Outcome runViewer(const RunOptions& run, const PictureOptions& pictures);
+
+// The library's functions, as jello finds them after loading it.
+struct GraphicsApi {
+  bool (*displayAvailable)(std::string* why);
+  std::unique_ptr<FrameObserver> (*makeOffscreenFrames)(const PictureOptions& pictures);
+  Outcome (*runViewer)(const RunOptions& run, const PictureOptions& pictures);
+};
+// The library's one exported entry point; its name is kGraphicsEntry.
+extern "C" const GraphicsApi* jelloGraphicsApi();
+constexpr const char* kGraphicsEntry = "jelloGraphicsApi";
+constexpr const char* kGraphicsLibrary = "libjello_graphics.so";
+
+// In jello: loads the library (once) from the executable's folder or the build folder. nullptr,
+// with the reason in a few words in *why, when this build has none or it cannot be loaded.
+const GraphicsApi* loadGraphics(std::string* why);
+
+}  // namespace jello

@@ -1,0 +1,55 @@
+// guard.cpp: energy bounds for the runtime guard.
+
+#include "solver/guard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace jello {
+
+namespace {
+
+constexpr double kEnergyMargin = 4;     // the state may hold 4 times the bound: rounding, integrators' drift
+constexpr double kEnergyFloor = 1e-6;   // J: below this nothing is judged
+
+}  // namespace
+
+double mechanicalEnergy(const Model& model, const State& state) {
+  double energy = 0;
+  for (int q = 0; q < kNumPoints; ++q) energy += 0.5 * model.world.mass * dot(load(state.v(), q), load(state.v(), q));
+  for (const auto& term : model.scene.terms) term->addEnergy(state.p(), &energy);
+  return energy;
+}
+
+DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
+  double largestForce = 0;
+  for (const auto& term : model.scene.terms) largestForce += term->largestExternalForce();
+  energyRate_ = largestForce * std::sqrt(kNumPoints / (2 * model.world.mass));
+  restart(initial, 0);
+}
+
+void DivergenceGuard::restart(const State& state, double time) {
+  rootEnergy_ = std::sqrt(mechanicalEnergy(model_, state));
+  start_ = time;
+}
+
+std::string DivergenceGuard::check(const State& state, double time) const {
+  int bad = findDivergedPoint(state);
+  if (bad >= 0) {
+    Vec3 p = load(state.p(), bad), v = load(state.v(), bad);
+    bool finite = std::isfinite(dot(p, p)) && std::isfinite(dot(v, v));
+    return "point p" + latticeLabel(bad) + (finite ? " is more than 100 m from the origin" : " is no longer finite");
+  }
+  double bound = rootEnergy_ + energyRate_ * (time - start_);
+  double energy = mechanicalEnergy(model_, state);
+  if (energy > kEnergyMargin * bound * bound + kEnergyFloor) {
+    char text[160];
+    std::snprintf(text, sizeof text, "its energy, %.3g J, is beyond what the world's forces can supply (%.3g J)", energy,
+                  bound * bound);
+    return text;
+  }
+  return "";
+}
+
+}  // namespace jello

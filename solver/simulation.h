@@ -1,0 +1,113 @@
+// simulation.h: a run of a world, step by step, with the divergence checks: the one
+// step-then-check loop. Headless runs, the viewer, --report, --check --map's observed limits
+// and --bench all advance through it.
+//
+// The checks, one rule for every caller. After step s (s counted from the start, 1-based):
+//  - always the cheap test of SPEC: a position or velocity that is not finite, or a point more
+//    than 100 m from the origin (findDivergedPoint's test);
+//  - when s is a multiple of max(n, kEnergyEvery), n the world's steps per drawn frame, the
+//    energy bound of the guard (guard.h) as well: at most once a drawn frame, and no more often
+//    than every kEnergyEvery steps, since the energy costs about a fifth of an RK4 step;
+//  - never the energy bound after a step taken with a pull (the viewer's mouse adds energy the
+//    bound does not know of); the first step without one restarts the bound from the state then.
+// The checks depend on the step number alone, never on how steps are grouped into advance()
+// calls: advancing 1000 times by 1 or once by 1000 stops at the same step for the same reason.
+//
+// How many steps fit in T seconds is stepsForTime(T, dt), below, for every caller.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "solver/guard.h"
+#include "solver/integrators.h"
+#include "physics.h"
+#include "world.h"
+
+namespace jello {
+
+// The energy bound is checked at most this often (steps); see the rule above.
+constexpr long long kEnergyEvery = 8;
+
+// The most steps a run may take. 1e12 steps are months of computing at the kernel's microseconds
+// a step, so no run meant to finish asks for more; and up to it a step count, and the time
+// s * dt of step s, are exact in a double (2^53 ~ 9e15) and far from long long's limit.
+constexpr double kMaxSteps = 1e12;
+
+// Number of steps of dt that fit in T seconds, for every caller (--time, --report, the observed
+// stability limits): the fewest that reach T, with a relative slack of kStepSlack that keeps
+// T = 1, dt = 0.001 at 1000 steps despite rounding. Empty when T/dt is not a finite number or
+// exceeds kMaxSteps (--time 1e16, or --dt 1e-300): no conversion to an integer is attempted then.
+std::optional<long long> stepsForTime(double time, double dt);
+constexpr double kStepSlack = 1e-9;
+
+// How an advance ended.
+struct RunOutcome {
+  enum class Kind {
+    Ran,             // every step asked for was taken and passed the checks
+    Diverged,        // a step reached a state no physics of the world produces
+    ToleranceUnmet,  // RK45 gave a step up: its tolerances are finer than doubles resolve
+  };
+  Kind kind = Kind::Ran;
+  long long step = 0;  // the step that failed, counted from the start (not for Ran)
+  double time = 0;     // s, at the end of that step
+  std::string reason;  // Diverged: the guard's words, e.g. "point p[0][0][0] is no longer finite"
+  bool ran() const { return kind == Kind::Ran; }
+};
+
+class Simulation {
+ public:
+  // A run of `model` from `start` (copied) with `integrator` at steps of dt seconds. The model
+  // is referenced, not copied: it must outlive the simulation. Costs what a DivergenceGuard
+  // costs to make (a pass over the field's nodes).
+  Simulation(const Model& model, const State& start, Integrator integrator, double dt,
+             Tolerances tolerances = {});
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Takes `steps` steps, each with the pull when one is given (nullptr: none), checking each
+  // as the rule above says; stops at the first that fails. Once a run has failed it takes no
+  // more steps and returns the same outcome, until restart() or restore(). Allocates nothing
+  // once the stepper's buffers are sized (IMPLICIT's solver excepted), unless it fails.
+  RunOutcome advance(long long steps, const Pull* pull = nullptr);
+  // Runs on to `time` s: stepsForTime(time, dt) steps from the start in all, the last one
+  // shortened to end on `time` exactly when dt does not divide it (--report compares runs of
+  // different steps at one instant). The caller has checked that stepsForTime gives a count.
+  RunOutcome advanceTo(double time);
+
+  // Back to step 0 at `start`, with a fresh stepper and the guard's bound from `start`: a run
+  // that costs what the first did (--bench repeats runs). No pass over the field.
+  void restart(const State& start);
+  // Puts the run back at `state`, `step` steps from the start (the viewer's last good frame
+  // after a divergence), ready to advance again; the guard's bound is kept.
+  void restore(const State& state, long long step);
+
+  const State& state() const { return state_; }
+  long long step() const { return step_; }
+  double time() const { return time_; }  // s: step * dt (advanceTo's last step: its time)
+  double dt() const { return dt_; }
+  Integrator integrator() const { return stepper_.integrator(); }
+  const StepStats& stats() const { return stepper_.stats(); }  // the stepper's, since the start
+  const Model& model() const { return model_; }
+
+ private:
+  bool stepAndCheck(double h, double timeAfter, const Pull* pull);
+
+  const Model& model_;
+  State state_;
+  double dt_;
+  long long step_ = 0;
+  double time_ = 0;
+  long long energyEvery_;
+  bool pulled_ = false;  // the last step had a pull: the next one without restarts the bound
+  Tolerances tolerances_;
+  Stepper stepper_;
+  DivergenceGuard guard_;
+  RunOutcome outcome_;
+};
+
+// Whether `state` passes the cheap test: findDivergedPoint(state) < 0, in one pass without a
+// branch per point (the test runs after every step).
+bool passesCheapTest(const State& state);
+
+}  // namespace jello
