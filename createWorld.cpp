@@ -420,7 +420,7 @@ int main(int argc, char** argv) {
   jello::installSignalCleanup();
   try {
     CLI::App app{
-        "createWorld: builds a jello world file (SPEC section 1). Start from the defaults (the course's "
+        "createWorld: builds a jello world file (docs/world-format.md). Start from the defaults (the course's "
         "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
         "what the options say.",
         "createWorld"};

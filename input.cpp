@@ -1,4 +1,4 @@
-// input.cpp: the strict world-file reader and the round-trip writer (SPEC.md section 1).
+// input.cpp: the strict world-file reader and the round-trip writer (docs/world-format.md).
 //
 // The reader is line-oriented: every record of the table sits on its own line, as the course's
 // files and createWorld write them, so an error can name the exact line and field. Blank lines

@@ -1,4 +1,4 @@
-// jello.cpp: the simulator's main (SPEC.md section 4): parse the command line, do what it says,
+// jello.cpp: the simulator's main (README: Running): parse the command line, do what it says,
 // and choose the exit status. Only this file and createWorld.cpp print a verdict and pick a
 // status for the whole program: the library says how a command went as an Outcome (outcome.h).
 

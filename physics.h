@@ -1,4 +1,4 @@
-// physics.h: the forces of the jello model (docs/physics.md section 2) and the derivative of a state.
+// physics.h: the forces of the jello model (docs/physics.md) and the derivative of a state.
 //
 // Units: metres, seconds, kilograms, newtons. Sign convention: every force term returns the
 // force ON the point it is asked about (for a spring, on its end `a`; its end `b` gets minus
@@ -26,7 +26,7 @@ namespace jello {
 enum class KernelChoice { Specialised, General };
 
 // The terms a world needs, in the order their forces are summed: the springs, the walls, the
-// plane, the field (docs/physics.md section 2). A specialised scene leaves out what adds
+// plane, the field (docs/physics.md). A specialised scene leaves out what adds
 // nothing (dampers without damping, a plane the file does not have, a zero field), computes a
 // uniform field as a constant, and lets every term skip its work when the cube's bounding box
 // is out of its reach (culling). The general scene computes every term for every point.

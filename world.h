@@ -1,5 +1,5 @@
 // world.h: the parameters of a jello world and its state, and the .w file format
-// (SPEC.md section 1).
+// (docs/world-format.md).
 //
 // Units: metres, seconds, kilograms, newtons. Stiffness in N/m, damping in N s/m.
 // Lattice index (i,j,k) maps to axes (x,y,z); point (i,j,k) is point number
@@ -121,7 +121,7 @@ struct WorldFile {
   State state;
 };
 
-// Why a world in memory is one the reader would refuse (SPEC section 1's rules on its values),
+// Why a world in memory is one the reader would refuse (the rules of docs/world-format.md on its values),
 // by the part of the world at fault, so that a program that makes worlds can say which of its
 // inputs is to blame.
 struct WorldProblem {

@@ -1,4 +1,4 @@
-// commandline.h: jello's command line (SPEC.md section 4), parsed into what the program is to do
+// commandline.h: jello's command line (README: Running), parsed into what the program is to do
 // and checked, with no world read and nothing simulated: main() acts on the result, and the
 // command-line fuzz target (fuzz/fuzz_command_line.cpp) parses arbitrary argument lists with it.
 #pragma once

@@ -1,4 +1,4 @@
-// headless.h: a simulation run without a window (SPEC.md section 4).
+// headless.h: a simulation run without a window (README: Running).
 #pragma once
 
 #include <optional>
@@ -25,7 +25,7 @@ struct RunOptions {
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };
 
-// Exit statuses of SPEC.md section 4, chosen by the mains alone (outcome.h).
+// Exit statuses of the README (Running), chosen by the mains alone (outcome.h).
 constexpr int kExitOk = 0;
 constexpr int kExitDiverged = 1;
 constexpr int kExitBadInput = 2;

@@ -212,7 +212,7 @@ struct Measured {
 
 // The largest step T/(8 2^k) at which `integrator` is stable: its run does not diverge and ends
 // where the run at half the step ends, to within kSameEnd (an unstable run need not reach
-// SPEC's 100 m within T).
+// the 100 m of docs/physics.md's divergence rule within T).
 double largestStableStep(const Study& s, Integrator integrator) {
   Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
   for (int k = 0; k < kSearchHalvings; ++k) {

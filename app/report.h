@@ -29,7 +29,7 @@ struct ReportRow {
   bool worldsOwn = false;  // the world's own integrator and dt
 };
 
-// The CSV of SPEC's report, header included.
+// The CSV of the report (README: Error against run time), header included.
 std::string reportCsv(const std::vector<ReportRow>& rows);
 
 // Least-squares slope of log(error) against log(dt) (RK45: against log(tolerance)) over the

@@ -13,7 +13,7 @@
 
 namespace jello {
 
-// How the force field is made. Node positions are those of SPEC section 1.
+// How the force field is made. Node positions are those of docs/world-format.md.
 struct FieldRecipe {
   enum class Source { None, Uniform, Swirl, Radial, Expression, Given };
   Source source = Source::None;

@@ -1,4 +1,4 @@
-// forces/term.h: what every force term of the model is (docs/physics.md section 2 lists them).
+// forces/term.h: what every force term of the model is (docs/physics.md describes each).
 //
 // A term owns everything about one kind of force: the force itself on every point, its
 // Jacobian blocks, the energy it stores, a test of whether it may act at all on a cube inside

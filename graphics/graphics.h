@@ -21,7 +21,7 @@ bool displayAvailable(std::string* why);
 // with a one-line message when no off-screen context can be made.
 std::unique_ptr<FrameObserver> makeOffscreenFrames(const PictureOptions& pictures);
 
-// Opens the viewer (SPEC.md section 5) on the world of `run`; says how it went (outcome.h).
+// Opens the viewer (README: The viewer) on the world of `run`; says how it went (outcome.h).
 Outcome runViewer(const RunOptions& run, const PictureOptions& pictures);
 
 // The library's functions, as jello finds them after loading it.

@@ -1,4 +1,4 @@
-// viewer.cpp: the GLUT window (SPEC.md section 5). GLUT calls back without a user pointer, so
+// viewer.cpp: the GLUT window (README: The viewer). GLUT calls back without a user pointer, so
 // the viewer's state lives in one object reached through freeglut's per-window data, not in
 // globals; the physics sees it only as arguments (the model, the state, the pull).
 

@@ -1,4 +1,4 @@
-// integrators.cpp: the time steppers of SPEC.md sections 2 and 3 over an ODE system, and the
+// integrators.cpp: the time steppers of docs/physics.md over an ODE system, and the
 // integrator table that names and describes them.
 
 #include "solver/integrators.h"

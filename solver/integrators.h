@@ -1,4 +1,4 @@
-// integrators.h: time steppers (SPEC.md sections 2 and 3).
+// integrators.h: time steppers (docs/physics.md).
 //
 // An integrator sees only an ODE system: the derivative dy/dt = f(y) of a flat state vector y
 // and, for IMPLICIT, the Jacobian of the accelerations. For the jello, y = [p; v] (State::y):

@@ -1,4 +1,4 @@
-// 2000 steps of the course worlds against the independent reference results (SPEC.md section 2).
+// 2000 steps of the course worlds against the independent reference results (docs/physics.md).
 #include <gtest/gtest.h>
 
 #include "solver/integrators.h"

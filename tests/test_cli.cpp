@@ -1,4 +1,4 @@
-// The command line of ./jello (SPEC.md section 4), run as a user runs it.
+// The command line of ./jello (README: Running), run as a user runs it.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// Force terms of the physics model (SPEC.md section 2).
+// Force terms of the physics model (docs/physics.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>

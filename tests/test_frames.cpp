@@ -1,5 +1,5 @@
 // Pictures: the off-screen renderer, JPEG files, frame sequences, and --frames from the
-// command line (SPEC.md sections 4 and 5). Built only where GL and OSMesa are.
+// command line (README: Running, The viewer). Built only where GL and OSMesa are.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -35,7 +35,7 @@ double meanAbsoluteDifference(const Image& a, const Image& b) {
   return sum / a.rgb.size();
 }
 
-// Where a pinhole camera on the sphere (SPEC section 5: looking at the origin, +z up) puts a
+// Where a pinhole camera on the sphere (README, The viewer: looking at the origin, +z up) puts a
 // point, in pixels from the top-left; computed here from first principles, not through GL.
 void projectToPixel(const Camera& camera, Vec3 point, int width, int height, double* x, double* y) {
   double len;

@@ -1,4 +1,4 @@
-// Time stepping: conservation laws, energy, order of convergence (SPEC.md section 2).
+// Time stepping: conservation laws, energy, order of convergence (docs/physics.md).
 #include <gtest/gtest.h>
 
 #include <cctype>

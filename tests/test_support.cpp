@@ -138,7 +138,7 @@ CommandResult runJelloArgs(const std::vector<std::string>& args, const ProgramSe
 
 namespace {
 
-// A small valid world (R = 2), its lines numbered as in the table of SPEC section 1:
+// A small valid world (R = 2), its lines numbered as in the table of docs/world-format.md:
 // 1 integrator, 2 dt n, 3 stiffness, 4 mass, 5 plane flag, 6 plane, 7 resolution,
 // 8-15 field, 16-527 positions, 528-1039 velocities.
 std::vector<std::string> baseLines() {

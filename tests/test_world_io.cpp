@@ -1,4 +1,4 @@
-// Reader and writer of world files (SPEC.md section 1).
+// Reader and writer of world files (docs/world-format.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
