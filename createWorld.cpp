@@ -22,12 +22,12 @@
 
 #include "app/cli.h"
 #include "app/describe.h"
-#include "core/output.h"
-#include "core/outcome.h"
-#include "core/memory.h"
-#include "physics.h"
 #include "app/stability.h"
 #include "app/worldbuilder.h"
+#include "core/memory.h"
+#include "core/outcome.h"
+#include "core/output.h"
+#include "physics.h"
 
 namespace {
 
@@ -72,7 +72,6 @@ void warnAbout(jello::World& world, const jello::State& state) {
   }
   world.field = std::move(field);
 }
-
 
 // The options given that shape `part` of a world, in the order of --help: what a message about
 // that part names. A --preset or a --from world is valid by itself, so neither is named.
@@ -123,35 +122,38 @@ struct Options {
   std::string output, describe, preset, from;
   bool force = false;
   double maxMemory = 0;
-  CLI::Option *describeOption = nullptr, *maxMemoryOption = nullptr, *presetOption = nullptr, *fromOption = nullptr;
+  CLI::Option *describeOption = nullptr, *maxMemoryOption = nullptr, *presetOption = nullptr,
+              *fromOption = nullptr;
 
   std::string integrator;
   double dt = 0, kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0, mass = 0;
   int n = 0;
   std::vector<double> plane;
-  CLI::Option *integratorOption = nullptr, *dtOption = nullptr, *nOption = nullptr, *kElasticOption = nullptr,
-              *dElasticOption = nullptr, *kCollisionOption = nullptr, *dCollisionOption = nullptr,
-              *massOption = nullptr, *planeOption = nullptr, *noPlaneOption = nullptr;
+  CLI::Option *integratorOption = nullptr, *dtOption = nullptr, *nOption = nullptr,
+              *kElasticOption = nullptr, *dElasticOption = nullptr, *kCollisionOption = nullptr,
+              *dCollisionOption = nullptr, *massOption = nullptr, *planeOption = nullptr,
+              *noPlaneOption = nullptr;
 
   int resolution = 0;
   std::vector<double> uniform;
   double swirl = 0, radial = 0;
   std::string expression, fieldFrom;
-  CLI::Option *resolutionOption = nullptr, *uniformOption = nullptr, *swirlOption = nullptr, *radialOption = nullptr,
-              *expressionOption = nullptr, *fieldFromOption = nullptr;
+  CLI::Option *resolutionOption = nullptr, *uniformOption = nullptr, *swirlOption = nullptr,
+              *radialOption = nullptr, *expressionOption = nullptr, *fieldFromOption = nullptr;
   std::vector<CLI::Option*> fieldSources;  // the options that each give the whole field
 
   double cubeSize = 1;
   std::vector<double> center, rotation, velocity, spin, skew;
   bool insideOut = false;
-  CLI::Option *sizeOption = nullptr, *centerOption = nullptr, *rotateOption = nullptr, *velocityOption = nullptr,
-              *spinOption = nullptr, *skewOption = nullptr;
+  CLI::Option *sizeOption = nullptr, *centerOption = nullptr, *rotateOption = nullptr,
+              *velocityOption = nullptr, *spinOption = nullptr, *skewOption = nullptr;
 };
 
 void addGeneralOptions(CLI::App& app, Options& o) {
   app.set_version_flag("--version", kVersion);
   app.add_option("-o,--output", o.output, "the world file to write")->type_name("FILE");
-  o.describeOption = app.add_option("--describe", o.describe, "print what WORLD is, and exit")->type_name("WORLD");
+  o.describeOption =
+      app.add_option("--describe", o.describe, "print what WORLD is, and exit")->type_name("WORLD");
   app.add_flag("--force", o.force, "replace FILE when it exists");
   o.maxMemoryOption =
       app.add_option(
@@ -159,26 +161,51 @@ void addGeneralOptions(CLI::App& app, Options& o) {
              "memory the world may take, GB (default: what the machine and its limits allow)")
           ->type_name("GB")
           ->check(kPositive);
-  o.presetOption = app.add_option("--preset", o.preset, "start from a course world")->type_name("NAME")
-                       ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
-  o.fromOption = app.add_option("--from", o.from, "start from WORLD: its state, and every parameter not given")->type_name("WORLD");
+  o.presetOption =
+      app.add_option("--preset", o.preset, "start from a course world")
+          ->type_name("NAME")
+          ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
+  o.fromOption =
+      app.add_option("--from", o.from, "start from WORLD: its state, and every parameter not given")
+          ->type_name("WORLD");
   o.presetOption->excludes(o.fromOption);
 }
 
 void addParameterOptions(CLI::App& app, Options& o) {
-  o.integratorOption = app.add_option("--integrator", o.integrator, jello::integratorNameList() + ", any case")->type_name("NAME")->group("Parameters");
-  o.dtOption = app.add_option("--dt", o.dt, "time step, s")->type_name("DT")->transform(kPositive)->group("Parameters");
-  o.nOption = app.add_option("--n", o.n, "steps per drawn frame")->type_name("N")
+  o.integratorOption =
+      app.add_option("--integrator", o.integrator, jello::integratorNameList() + ", any case")
+          ->type_name("NAME")
+          ->group("Parameters");
+  o.dtOption = app.add_option("--dt", o.dt, "time step, s")
+                   ->type_name("DT")
+                   ->transform(kPositive)
+                   ->group("Parameters");
+  o.nOption = app.add_option("--n", o.n, "steps per drawn frame")
+                  ->type_name("N")
                   ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))
                   ->group("Parameters");
-  o.kElasticOption = app.add_option("--k-elastic", o.kElastic, "spring stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
-  o.dElasticOption = app.add_option("--d-elastic", o.dElastic, "spring damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
-  o.kCollisionOption =
-      app.add_option("--k-collision", o.kCollision, "collision stiffness, N/m")->type_name("K")->transform(kNonNegative)->group("Parameters");
-  o.dCollisionOption =
-      app.add_option("--d-collision", o.dCollision, "collision damping, N s/m")->type_name("D")->transform(kNonNegative)->group("Parameters");
-  o.massOption = app.add_option("--mass", o.mass, "mass of each of the 512 points, kg")->type_name("KG")->transform(kPositive)->group("Parameters");
-  o.planeOption = app.add_option("--plane", o.plane, "inclined plane a x + b y + c z + d = 0")->type_name("A B C D")
+  o.kElasticOption = app.add_option("--k-elastic", o.kElastic, "spring stiffness, N/m")
+                         ->type_name("K")
+                         ->transform(kNonNegative)
+                         ->group("Parameters");
+  o.dElasticOption = app.add_option("--d-elastic", o.dElastic, "spring damping, N s/m")
+                         ->type_name("D")
+                         ->transform(kNonNegative)
+                         ->group("Parameters");
+  o.kCollisionOption = app.add_option("--k-collision", o.kCollision, "collision stiffness, N/m")
+                           ->type_name("K")
+                           ->transform(kNonNegative)
+                           ->group("Parameters");
+  o.dCollisionOption = app.add_option("--d-collision", o.dCollision, "collision damping, N s/m")
+                           ->type_name("D")
+                           ->transform(kNonNegative)
+                           ->group("Parameters");
+  o.massOption = app.add_option("--mass", o.mass, "mass of each of the 512 points, kg")
+                     ->type_name("KG")
+                     ->transform(kPositive)
+                     ->group("Parameters");
+  o.planeOption = app.add_option("--plane", o.plane, "inclined plane a x + b y + c z + d = 0")
+                      ->type_name("A B C D")
                       ->expected(4)
                       ->transform(kFinite)
                       ->group("Parameters");
@@ -187,19 +214,33 @@ void addParameterOptions(CLI::App& app, Options& o) {
 }
 
 void addFieldOptions(CLI::App& app, Options& o) {
-  o.resolutionOption = app.add_option("--field-resolution", o.resolution, "field grid R (R^3 nodes; 0: no field)")->type_name("R")
-                           ->transform(jello::wholeNumber(0, jello::kMaxResolution))
-                           ->group("Force field");
-  o.uniformOption =
-      app.add_option("--field-uniform", o.uniform, "uniform force FX FY FZ, N")->type_name("FX FY FZ")->expected(3)->transform(kFinite)->group("Force field");
-  o.swirlOption =
-      app.add_option("--field-swirl", o.swirl, "swirl about z: F = S (-y, x, 0)")->type_name("S")->transform(kFinite)->group("Force field");
-  o.radialOption =
-      app.add_option("--field-radial", o.radial, "radial: F = S (x, y, z)")->type_name("S")->transform(kFinite)->group("Force field");
+  o.resolutionOption =
+      app.add_option("--field-resolution", o.resolution, "field grid R (R^3 nodes; 0: no field)")
+          ->type_name("R")
+          ->transform(jello::wholeNumber(0, jello::kMaxResolution))
+          ->group("Force field");
+  o.uniformOption = app.add_option("--field-uniform", o.uniform, "uniform force FX FY FZ, N")
+                        ->type_name("FX FY FZ")
+                        ->expected(3)
+                        ->transform(kFinite)
+                        ->group("Force field");
+  o.swirlOption = app.add_option("--field-swirl", o.swirl, "swirl about z: F = S (-y, x, 0)")
+                      ->type_name("S")
+                      ->transform(kFinite)
+                      ->group("Force field");
+  o.radialOption = app.add_option("--field-radial", o.radial, "radial: F = S (x, y, z)")
+                       ->type_name("S")
+                       ->transform(kFinite)
+                       ->group("Force field");
   o.expressionOption =
-      app.add_option("--field-expr", o.expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")->type_name("'FX; FY; FZ'")->group("Force field");
-  o.fieldFromOption = app.add_option("--field-from", o.fieldFrom, "copy the field of WORLD")->type_name("WORLD")->group("Force field");
-  o.fieldSources = {o.uniformOption, o.swirlOption, o.radialOption, o.expressionOption, o.fieldFromOption};
+      app.add_option("--field-expr", o.expression, "\"fx; fy; fz\" in x, y, z (muparser syntax), N")
+          ->type_name("'FX; FY; FZ'")
+          ->group("Force field");
+  o.fieldFromOption = app.add_option("--field-from", o.fieldFrom, "copy the field of WORLD")
+                          ->type_name("WORLD")
+                          ->group("Force field");
+  o.fieldSources = {o.uniformOption, o.swirlOption, o.radialOption, o.expressionOption,
+                    o.fieldFromOption};
   for (CLI::Option* a : o.fieldSources)
     for (CLI::Option* b : o.fieldSources)
       if (a != b) a->excludes(b);
@@ -207,30 +248,44 @@ void addFieldOptions(CLI::App& app, Options& o) {
 }
 
 void addStateOptions(CLI::App& app, Options& o) {
-  o.sizeOption = app.add_option("--cube-size", o.cubeSize, "edge of the cube at rest, m (default 1)")->type_name("L")
-                     ->transform(kPositive)
-                     ->group("Initial state");
-  o.centerOption = app.add_option("--center", o.center, "centre of the cube X Y Z, m (default: corner at the origin)")->type_name("X Y Z")
+  o.sizeOption =
+      app.add_option("--cube-size", o.cubeSize, "edge of the cube at rest, m (default 1)")
+          ->type_name("L")
+          ->transform(kPositive)
+          ->group("Initial state");
+  o.centerOption = app.add_option("--center", o.center,
+                                  "centre of the cube X Y Z, m (default: corner at the origin)")
+                       ->type_name("X Y Z")
                        ->expected(3)
                        ->transform(kFinite)
                        ->group("Initial state");
-  o.rotateOption = app.add_option("--rotate", o.rotation, "turn the cube about x, then y, then z, degrees")->type_name("AX AY AZ")
-                       ->expected(3)
-                       ->transform(kFinite)
-                       ->group("Initial state");
-  o.velocityOption = app.add_option("--velocity", o.velocity, "velocity of every point VX VY VZ, m/s")->type_name("VX VY VZ")
-                         ->expected(3)
-                         ->transform(kFinite)
-                         ->group("Initial state");
-  o.spinOption = app.add_option("--spin", o.spin, "rigid angular velocity WX WY WZ about the centre, rad/s")->type_name("WX WY WZ")
-                     ->expected(3)
-                     ->transform(kFinite)
-                     ->group("Initial state");
-  o.skewOption = app.add_option("--skew-corner", o.skew, "displace corner p[7][7][7] by DX DY DZ, m")->type_name("DX DY DZ")
-                     ->expected(3)
-                     ->transform(kFinite)
-                     ->group("Initial state");
-  app.add_flag("--inside-out", o.insideOut, "reflect the cube through its centre: every face faces in")->group("Initial state");
+  o.rotateOption =
+      app.add_option("--rotate", o.rotation, "turn the cube about x, then y, then z, degrees")
+          ->type_name("AX AY AZ")
+          ->expected(3)
+          ->transform(kFinite)
+          ->group("Initial state");
+  o.velocityOption =
+      app.add_option("--velocity", o.velocity, "velocity of every point VX VY VZ, m/s")
+          ->type_name("VX VY VZ")
+          ->expected(3)
+          ->transform(kFinite)
+          ->group("Initial state");
+  o.spinOption =
+      app.add_option("--spin", o.spin, "rigid angular velocity WX WY WZ about the centre, rad/s")
+          ->type_name("WX WY WZ")
+          ->expected(3)
+          ->transform(kFinite)
+          ->group("Initial state");
+  o.skewOption =
+      app.add_option("--skew-corner", o.skew, "displace corner p[7][7][7] by DX DY DZ, m")
+          ->type_name("DX DY DZ")
+          ->expected(3)
+          ->transform(kFinite)
+          ->group("Initial state");
+  app.add_flag("--inside-out", o.insideOut,
+               "reflect the cube through its centre: every face faces in")
+      ->group("Initial state");
   o.sizeOption->excludes(o.fromOption);
 }
 
@@ -262,7 +317,8 @@ jello::Recipe startingRecipe(const Options& o) {
 // The Parameters options, applied to `w`.
 jello::Outcome applyParameters(const Options& o, jello::World& w) {
   if (*o.integratorOption && !jello::parseIntegratorName(o.integrator, &w.integrator)) {
-    return jello::failed("--integrator: unknown integrator '" + o.integrator + "', expected " + jello::integratorNameList());
+    return jello::failed("--integrator: unknown integrator '" + o.integrator + "', expected " +
+                         jello::integratorNameList());
   }
   if (*o.dtOption) w.dt = o.dt;
   if (*o.nOption) w.n = o.n;
@@ -274,7 +330,8 @@ jello::Outcome applyParameters(const Options& o, jello::World& w) {
   if (*o.noPlaneOption) w.hasPlane = false;
   if (*o.planeOption) {
     const std::vector<double>& plane = o.plane;
-    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0) return jello::failed("--plane: the normal (a, b, c) must not be zero");
+    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+      return jello::failed("--plane: the normal (a, b, c) must not be zero");
     w.hasPlane = true;
     w.plane = {plane[0], plane[1], plane[2], plane[3]};
     if (std::string why = jello::planeProblem(w.plane); !why.empty())
@@ -294,10 +351,13 @@ jello::Outcome applyField(const Options& o, jello::FieldRecipe& field) {
   }
   if (*o.resolutionOption) {
     if (field.source == Source::Given && !newSource) {
-      return jello::failed("--field-resolution: say which field to sample (the field taken --from a world is kept as it is)");
+      return jello::failed(
+          "--field-resolution: say which field to sample (the field taken --from a world is kept "
+          "as it is)");
     }
     field.resolution = o.resolution;
-    if (field.source == Source::None) field.source = Source::Uniform;  // a zero field, as the course writes
+    if (field.source == Source::None)
+      field.source = Source::Uniform;  // a zero field, as the course writes
   }
   if (*o.uniformOption) {
     field.source = Source::Uniform;
@@ -344,7 +404,8 @@ jello::ForceField takeField(jello::FieldRecipe& field) {
 }
 
 // Checks, writes and announces the world made.
-jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w, const jello::State& initial) {
+jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w,
+                          const jello::State& initial) {
   // What is written must read back: the reader's rules, applied to the values themselves.
   if (auto problem = jello::findWorldProblem(w, initial))
     return jello::failed(describeProblem(*problem, app));
@@ -356,22 +417,24 @@ jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w
   }
   std::string fieldSummary = "no field";
   if (w.field.resolution > 0) {
-    fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) + " field (R=" +
-                   std::to_string(w.field.resolution) + ")";
+    fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) +
+                   " field (R=" + std::to_string(w.field.resolution) + ")";
   }
-  std::printf("wrote %s: %s dt=%g, %s, %s\n", o.output.c_str(), jello::integratorName(w.integrator), w.dt,
-              fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
+  std::printf("wrote %s: %s dt=%g, %s, %s\n", o.output.c_str(), jello::integratorName(w.integrator),
+              w.dt, fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
   return jello::succeeded();
 }
 
 // createWorld -o FILE: the world the options say, written to FILE.
 jello::Outcome createWorld(const Options& o, const CLI::App& app) {
-  if (o.output.empty()) return jello::failed("say where to write the world: -o FILE (see createWorld --help)");
+  if (o.output.empty())
+    return jello::failed("say where to write the world: -o FILE (see createWorld --help)");
   // Checked before any work (a field to build, a world to read), so that the refusal comes first.
   const jello::WriteCheck writable =
       jello::checkWritable(o.output, o.force ? jello::Existing::Replace : jello::Existing::Refuse);
   if (!writable.writable())
-    return jello::failed(o.output + ": " + writable.why + (writable.alreadyExists ? "; add --force to replace it" : ""));
+    return jello::failed(o.output + ": " + writable.why +
+                         (writable.alreadyExists ? "; add --force to replace it" : ""));
 
   jello::setWorldUse(jello::WorldUse::Create);
   jello::Recipe recipe = startingRecipe(o);
@@ -405,9 +468,11 @@ jello::Outcome run(const Options& o, const CLI::App& app) {
 int exitStatus(const jello::Outcome& outcome) {
   if (!outcome.message.empty()) jello::printError(outcome.message);
   switch (outcome.status) {
-    case jello::Status::Ok: return kExitOk;
-    case jello::Status::Diverged:  // createWorld runs no simulation
-    case jello::Status::Failed: return kExitBadInput;
+    case jello::Ending::Ok:
+      return kExitOk;
+    case jello::Ending::Diverged:  // createWorld runs no simulation
+    case jello::Ending::Failed:
+      return kExitBadInput;
   }
   return kExitBadInput;
 }
@@ -420,8 +485,10 @@ int main(int argc, char** argv) {
   jello::installSignalCleanup();
   try {
     CLI::App app{
-        "createWorld: builds a jello world file (docs/world-format.md). Start from the defaults (the course's "
-        "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, then change "
+        "createWorld: builds a jello world file (docs/world-format.md). Start from the defaults "
+        "(the course's "
+        "springs, a cube on [0,1]^3 at rest, no plane, no field), a --preset or a world --from, "
+        "then change "
         "what the options say.",
         "createWorld"};
     Options options;

@@ -21,10 +21,9 @@
 #include <system_error>
 
 #include "core/memory.h"
+#include "core/output.h"
 #include "physics.h"
 #include "world.h"
-
-#include "core/output.h"
 
 namespace jello {
 
@@ -61,7 +60,8 @@ class LineSource {
  public:
   explicit LineSource(std::string_view text) : memory_(text), remaining_(text.size()) {}
   // `size`: the file's size when it is a regular file, -1 when unknown (a pipe, a device).
-  LineSource(int fd, long long size) : fd_(fd), sizeKnown_(size >= 0), remaining_(size >= 0 ? size : 0) {}
+  LineSource(int fd, long long size)
+      : fd_(fd), sizeKnown_(size >= 0), remaining_(size >= 0 ? size : 0) {}
 
   enum class Status { Line, End, TooLong };
   // Thrown by next() when an input of unknown size sent nothing for kInputWaitSeconds.
@@ -98,7 +98,8 @@ class LineSource {
         return Status::Line;
       }
       if (end_ - begin_ > kMaxLineLength) {
-        *line = std::string_view(buffer_.data() + begin_, kMaxLineLength);  // the start, for the message
+        *line = std::string_view(buffer_.data() + begin_,
+                                 kMaxLineLength);  // the start, for the message
         return Status::TooLong;
       }
       if (eof_) {
@@ -190,8 +191,10 @@ class Parser {
              field);
       }
       if (status == LineSource::Status::TooLong) {
-        fail(line_, "line is longer than " + std::to_string(LineSource::kMaxLineLength) +
-                        " characters: not a world file", field);
+        fail(line_,
+             "line is longer than " + std::to_string(LineSource::kMaxLineLength) +
+                 " characters: not a world file",
+             field);
       }
       if (count_ > 0) return true;
     }
@@ -241,7 +244,8 @@ class Parser {
     std::string_view t = tokens_[i];
     T value{};
     auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-    if (ec == std::errc::result_out_of_range) fail(line_, "'" + str(t) + "' is out of range", field);
+    if (ec == std::errc::result_out_of_range)
+      fail(line_, "'" + str(t) + "' is out of range", field);
     if (ec != std::errc() || end != t.data() + t.size()) {
       fail(line_, "'" + str(t) + "' is not " + kind, field);
     }
@@ -255,7 +259,9 @@ class Parser {
     return value;
   }
 
-  int integer(int i, const std::string& field) const { return parsed<int>(i, field, "a whole number"); }
+  int integer(int i, const std::string& field) const {
+    return parsed<int>(i, field, "a whole number");
+  }
 
   double positive(int i, const std::string& field) const {
     double value = number(i, field);
@@ -312,17 +318,21 @@ void appendLine(std::string& out, std::initializer_list<double> values) {
 
 std::string latticeLabel(int q) {
   const int perSlab = kLatticeSize * kLatticeSize;
-  return "[" + std::to_string(q / perSlab) + "][" + std::to_string((q / kLatticeSize) % kLatticeSize) +
-         "][" + std::to_string(q % kLatticeSize) + "]";
+  return "[" + std::to_string(q / perSlab) + "][" +
+         std::to_string((q / kLatticeSize) % kLatticeSize) + "][" +
+         std::to_string(q % kLatticeSize) + "]";
 }
 
 namespace {
 template <class T>
 bool parseExactly(std::string_view text, T* out, std::string* why) {
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
-  if (ec == std::errc::result_out_of_range) *why = "is out of range";
-  else if (ec != std::errc() || end != text.data() + text.size()) *why = "is not a number";
-  else return true;
+  if (ec == std::errc::result_out_of_range)
+    *why = "is out of range";
+  else if (ec != std::errc() || end != text.data() + text.size())
+    *why = "is not a number";
+  else
+    return true;
   return false;
 }
 }  // namespace
@@ -354,12 +364,15 @@ void readIntegrator(Parser& in, World& w) {
   in.record(1, "integrator");
   std::string_view integrator = in.token(0);
   if (integrator.size() > kMaxIntegratorNameLength) {
-    in.fail(in.line(), "integrator name is too long (" + std::to_string(integrator.size()) +
-                           " characters)", "integrator");
+    in.fail(in.line(),
+            "integrator name is too long (" + std::to_string(integrator.size()) + " characters)",
+            "integrator");
   }
   if (!parseIntegratorName(integrator, &w.integrator)) {
-    in.fail(in.line(), "unknown integrator '" + Parser::str(integrator) + "', expected " + integratorNameList(),
-            "integrator");
+    in.fail(
+        in.line(),
+        "unknown integrator '" + Parser::str(integrator) + "', expected " + integratorNameList(),
+        "integrator");
   }
 }
 
@@ -406,13 +419,17 @@ int readResolution(Parser& in) {
   int r = in.integer(0, "resolution");
   if (r < 0) in.fail(in.line(), "must be >= 0, got " + Parser::str(in.token(0)), "resolution");
   if (r > kMaxResolution) {
-    in.fail(in.line(), std::to_string(r) + " is too large to hold (at most " +
-                           std::to_string(kMaxResolution) + ")", "resolution");
+    in.fail(in.line(),
+            std::to_string(r) + " is too large to hold (at most " + std::to_string(kMaxResolution) +
+                ")",
+            "resolution");
   }
   std::size_t nodes = static_cast<std::size_t>(r) * r * r;
   if (in.source().remainingKnown() && nodes * kShortestFieldLine > in.source().remainingBytes()) {
-    in.fail(in.line(), std::to_string(r) + " needs " + std::to_string(nodes) +
-                           " field lines, more than the rest of the file can hold", "resolution");
+    in.fail(in.line(),
+            std::to_string(r) + " needs " + std::to_string(nodes) +
+                " field lines, more than the rest of the file can hold",
+            "resolution");
   }
   // Refused before anything is set aside for it, not by std::bad_alloc halfway through.
   if (r > 0) {
@@ -560,7 +577,8 @@ WorldFile readWorldFile(const std::string& path) {
     ~Closer() { ::close(fd); }
   } closer{fd};
   struct stat info {};
-  if (::fstat(fd, &info) != 0) throw WorldFileError(path + ": cannot read: " + std::strerror(errno));
+  if (::fstat(fd, &info) != 0)
+    throw WorldFileError(path + ": cannot read: " + std::strerror(errno));
   if (S_ISDIR(info.st_mode)) throw WorldFileError(path + ": is a directory, not a world file");
   if (S_ISFIFO(info.st_mode)) {
     // Wait for a writer's first bytes (or its hanging up) as cat would, but not forever.
@@ -622,7 +640,8 @@ std::string formatWorld(const World& w, const State& state) {
   return out;
 }
 
-void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite) {
+void writeWorldFile(const std::string& path, const World& world, const State& state,
+                    bool overwrite) {
   // The text goes out a block at a time: a large field's text is never held whole.
   writeFileWhole(
       path,

@@ -13,12 +13,12 @@
 
 #include "app/bench.h"
 #include "app/commandline.h"
-#include "graphics/graphics.h"
 #include "app/headless.h"
-#include "core/memory.h"
-#include "core/output.h"
 #include "app/report.h"
 #include "app/stability.h"
+#include "core/memory.h"
+#include "core/output.h"
+#include "graphics/graphics.h"
 #include "world.h"
 
 namespace {
@@ -62,8 +62,10 @@ jello::Outcome simulate(jello::JelloCommand c) {
       jello::printError(why + "; running headless");
       return jello::runHeadless(c.run);
     }
-    if (!c.framesGiven) c.pictures.framesDir = jello::makeNewFolder("animation", worldStem(c.run.worldPath));
-    jello::printError("no display (" + why + "); running headless, writing frames into " + c.pictures.framesDir + "/");
+    if (!c.framesGiven)
+      c.pictures.framesDir = jello::makeNewFolder("animation", worldStem(c.run.worldPath));
+    jello::printError("no display (" + why + "); running headless, writing frames into " +
+                      c.pictures.framesDir + "/");
   }
   std::unique_ptr<jello::FrameObserver> frames;
   if (!c.pictures.framesDir.empty()) {
@@ -78,9 +80,12 @@ jello::Outcome simulate(jello::JelloCommand c) {
 int exitStatus(const jello::Outcome& outcome) {
   if (!outcome.message.empty()) jello::printError(outcome.message);
   switch (outcome.status) {
-    case jello::Status::Ok: return jello::kExitOk;
-    case jello::Status::Diverged: return jello::kExitDiverged;
-    case jello::Status::Failed: return jello::kExitBadInput;
+    case jello::Ending::Ok:
+      return jello::kExitOk;
+    case jello::Ending::Diverged:
+      return jello::kExitDiverged;
+    case jello::Ending::Failed:
+      return jello::kExitBadInput;
   }
   return jello::kExitBadInput;
 }
@@ -88,16 +93,22 @@ int exitStatus(const jello::Outcome& outcome) {
 jello::Outcome runCommand(const jello::JelloCommand& command) {
   constexpr double kBytesPerGB = 1e9, kMostBytes = 1e18;
   if (command.maxMemoryGB > 0)
-    jello::setMemoryLimit(static_cast<std::uint64_t>(std::min(command.maxMemoryGB * kBytesPerGB, kMostBytes)));
+    jello::setMemoryLimit(
+        static_cast<std::uint64_t>(std::min(command.maxMemoryGB * kBytesPerGB, kMostBytes)));
   // --bench and --map hold two models of the world at once.
-  if (command.mode == jello::JelloCommand::Mode::Bench || command.mode == jello::JelloCommand::Mode::Map)
+  if (command.mode == jello::JelloCommand::Mode::Bench ||
+      command.mode == jello::JelloCommand::Mode::Map)
     jello::setWorldUse(jello::WorldUse::Bench);
   switch (command.mode) {
-    case jello::JelloCommand::Mode::Bench: return jello::runBench(command.run);
+    case jello::JelloCommand::Mode::Bench:
+      return jello::runBench(command.run);
     case jello::JelloCommand::Mode::Check:
-    case jello::JelloCommand::Mode::Map: return check(command);
-    case jello::JelloCommand::Mode::Report: return jello::runReport(command.run, command.report);
-    case jello::JelloCommand::Mode::Run: return simulate(command);
+    case jello::JelloCommand::Mode::Map:
+      return check(command);
+    case jello::JelloCommand::Mode::Report:
+      return jello::runReport(command.run, command.report);
+    case jello::JelloCommand::Mode::Run:
+      return simulate(command);
   }
   return jello::failed("no such command");  // not reached: every mode is handled above
 }

@@ -42,13 +42,14 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
   Scene scene;
   const bool general = choice == KernelChoice::General;
   scene.culling = !general;
-  auto springs = std::make_unique<SpringTerm>(world.kElastic, world.dElastic, general || world.dElastic != 0);
+  auto springs =
+      std::make_unique<SpringTerm>(world.kElastic, world.dElastic, general || world.dElastic != 0);
   scene.springs = springs.get();
   scene.terms.push_back(std::move(springs));
   scene.terms.push_back(std::make_unique<WallsTerm>(world.kCollision, world.dCollision));
   if (world.hasPlane) {
-    auto plane = std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()), world.kCollision,
-                                             world.dCollision);
+    auto plane = std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()),
+                                             world.kCollision, world.dCollision);
     scene.plane = plane.get();
     scene.terms.push_back(std::move(plane));
   } else {
@@ -98,7 +99,8 @@ Vec3 pullForce(const Pull& pull, Vec3 p) { return pull.stiffness * (pull.target 
 // The pair terms add into the total; the point terms in reach add into their own sum first,
 // which then joins the total (one term alone adds directly: x + (0 + y) is x + y). This is the
 // order docs/physics.md gives the terms in, so every kernel rounds alike.
-void computeForces(const Model& model, const double* p, const double* v, double* force, const Pull* pull) {
+void computeForces(const Model& model, const double* p, const double* v, double* force,
+                   const Pull* pull) {
   std::fill(force, force + kNumCoords, 0.0);
   const Scene& scene = model.scene;
   const Bounds box = scene.culling ? boundsOf(p) : Bounds{};
@@ -106,8 +108,10 @@ void computeForces(const Model& model, const double* p, const double* v, double*
   const ForceTerm* inReach[kMaxTerms];
   int count = 0;
   for (const auto& term : scene.terms) {
-    if (term->isPairTerm()) term->addForces(p, v, reach, force);
-    else if (!reach || term->mayReach(box)) inReach[count++] = term.get();
+    if (term->isPairTerm())
+      term->addForces(p, v, reach, force);
+    else if (!reach || term->mayReach(box))
+      inReach[count++] = term.get();
   }
   if (count == 1) {
     inReach[0]->addForces(p, v, reach, force);
@@ -116,7 +120,8 @@ void computeForces(const Model& model, const double* p, const double* v, double*
     for (int t = 0; t < count; ++t) inReach[t]->addForces(p, v, reach, sum);
     for (int c = 0; c < kNumCoords; ++c) force[c] += sum[c];
   }
-  if (pull && pull->point >= 0) store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
+  if (pull && pull->point >= 0)
+    store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
 }
 
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull) {

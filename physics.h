@@ -60,7 +60,8 @@ struct Model {
   const Plane& plane() const { return scene.plane->plane(); }
   double planeSide() const { return scene.plane ? scene.plane->side() : 1; }
 };
-Model makeModel(const World& world, const State& initial, KernelChoice choice = KernelChoice::Specialised);
+Model makeModel(const World& world, const State& initial,
+                KernelChoice choice = KernelChoice::Specialised);
 
 // How many points of `state` are strictly on the far side of the model's plane (0 without one).
 int pointsAcrossPlane(const Model& model, const State& state);
@@ -78,7 +79,8 @@ Vec3 pullForce(const Pull& pull, Vec3 p);
 // The force kernel: total force on every point (per-point arrays, see coordIndex) for
 // positions p and velocities v, with the user's pull when there is one: the scene's terms,
 // each skipped when the positions are out of its reach.
-void computeForces(const Model& model, const double* p, const double* v, double* force, const Pull* pull = nullptr);
+void computeForces(const Model& model, const double* p, const double* v, double* force,
+                   const Pull* pull = nullptr);
 
 // The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass.
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr);

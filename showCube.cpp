@@ -268,7 +268,8 @@ void drawSprings(const Model& model, const State& state, const DrawOptions& opti
   glBegin(GL_LINES);
   for (const Spring& s : model.springs()) {
     bool shown = (s.kind == SpringKind::Structural && options.structural) ||
-                 (s.kind == SpringKind::Shear && options.shear) || (s.kind == SpringKind::Bend && options.bend);
+                 (s.kind == SpringKind::Shear && options.shear) ||
+                 (s.kind == SpringKind::Bend && options.bend);
     if (!shown) continue;
     if (s.kind == SpringKind::Structural) glColor3f(0.2f, 0.9f, 0.95f);
     if (s.kind == SpringKind::Shear) glColor3f(0.95f, 0.85f, 0.2f);
@@ -291,7 +292,8 @@ std::vector<Vec3> planeInBox(const Plane& plane) {
     if (sp * sq > 0 || sp == sq) continue;
     Vec3 x = lerp(p, q, sp / (sp - sq));
     // A corner on the plane is found by each of its three edges: keep it once.
-    bool seen = std::any_of(points.begin(), points.end(), [&](Vec3 y) { return length(x - y) < 1e-9; });
+    bool seen =
+        std::any_of(points.begin(), points.end(), [&](Vec3 y) { return length(x - y) < 1e-9; });
     if (!seen) points.push_back(x);
   }
   if (points.size() < 3) return {};
@@ -303,7 +305,8 @@ std::vector<Vec3> planeInBox(const Plane& plane) {
   Vec3 e1 = direction(points[0] - centre, &len);
   Vec3 e2 = cross(unitNormal, e1);
   std::sort(points.begin(), points.end(), [&](Vec3 p, Vec3 q) {
-    return std::atan2(dot(p - centre, e2), dot(p - centre, e1)) < std::atan2(dot(q - centre, e2), dot(q - centre, e1));
+    return std::atan2(dot(p - centre, e2), dot(p - centre, e1)) <
+           std::atan2(dot(q - centre, e2), dot(q - centre, e1));
   });
   return points;
 }
@@ -369,7 +372,8 @@ void drawLegend(const SurfaceColors& colors, int width, int height) {
   const int barWidth = 14, barHeight = std::min(160, height / 3), scale = 2, margin = 12, gap = 6;
   std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
   std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
-  int labels = std::max({textWidth(top, scale), textWidth(bottom, scale), textWidth(colors.title, scale) - barWidth});
+  int labels = std::max(
+      {textWidth(top, scale), textWidth(bottom, scale), textWidth(colors.title, scale) - barWidth});
   const int x = width - margin - labels - gap - barWidth, y = height - barHeight - 20;
   beginPixels(width, height);
   glBegin(GL_QUADS);
@@ -412,8 +416,8 @@ const char* coloringName(Coloring coloring) {
   return "plain";  // not reached: every colouring is named above
 }
 
-void drawScene(const Model& model, const State& state, const Camera& camera, const DrawOptions& options,
-               int width, int height, const Pull* pull) {
+void drawScene(const Model& model, const State& state, const Camera& camera,
+               const DrawOptions& options, int width, int height, const Pull* pull) {
   glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -436,13 +440,16 @@ int textWidth(const std::string& text, int scale) {
   return static_cast<int>(text.size()) * kGlyphAdvance * scale;
 }
 
-void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r, float g, float b) {
+void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r,
+              float g, float b) {
   beginPixels(width, height);
   // A dark shadow one dot down and right keeps the text readable on any background.
   for (int pass = 0; pass < 2; ++pass) {
     int offset = pass == 0 ? scale : 0;
-    if (pass == 0) glColor3f(0.1f, 0.1f, 0.1f);
-    else glColor3f(r, g, b);
+    if (pass == 0)
+      glColor3f(0.1f, 0.1f, 0.1f);
+    else
+      glColor3f(r, g, b);
     glBegin(GL_QUADS);
     for (std::size_t i = 0; i < text.size(); ++i) {
       int c = std::toupper(static_cast<unsigned char>(text[i]));

@@ -42,8 +42,8 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
 
 // Text in a small built-in bitmap font (upper case, digits, punctuation; lower case is drawn
 // as upper case), its top-left corner at pixel (x, y), `scale` pixels per font dot.
-void drawText(const std::string& text, int x, int y, int width, int height, int scale,
-              float r, float g, float b);
+void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r,
+              float g, float b);
 // Width in pixels of `text` drawn at `scale`.
 int textWidth(const std::string& text, int scale);
 

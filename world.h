@@ -17,27 +17,27 @@
 
 namespace jello {
 
-constexpr int kLatticeSize = 8;                                     // points per cube edge
+constexpr int kLatticeSize = 8;                                         // points per cube edge
 constexpr int kNumPoints = kLatticeSize * kLatticeSize * kLatticeSize;  // 512
-constexpr int kNumCoords = 3 * kNumPoints;                          // 1536 doubles per array
-constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);           // 1/7 m between neighbours
-constexpr double kBoxHalfSize = 2.0;                                // bounding box [-2,2]^3
+constexpr int kNumCoords = 3 * kNumPoints;                              // 1536 doubles per array
+constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);               // 1/7 m between neighbours
+constexpr double kBoxHalfSize = 2.0;                                    // bounding box [-2,2]^3
 // The largest field resolution. What a field of R^3 nodes costs is memory (memory.h; a world that
 // does not fit is refused before anything is allocated): 24 bytes a node held once by createWorld,
 // 80 by a run (the World read, the Model's copy of it and its 32-byte padded nodes). Peak RSS at
 // R = 512 (134M nodes; /usr/bin/time -v): createWorld 3.27 GB, a run with --dump 10.7 GB.
 constexpr int kMaxResolution = 512;
 
-constexpr int pointIndex(int i, int j, int k) {
-  return (i * kLatticeSize + j) * kLatticeSize + k;
-}
+constexpr int pointIndex(int i, int j, int k) { return (i * kLatticeSize + j) * kLatticeSize + k; }
 
 // A per-point array (positions, velocities, forces) holds kNumCoords doubles, structure of
 // arrays: all x, then all y, then all z, each in point order. Coordinate `axis` (0 x, 1 y,
 // 2 z) of point q is element coordIndex(q, axis). The force kernel's loops then run over
 // contiguous, equally spaced doubles and vectorise.
 constexpr int coordIndex(int q, int axis) { return axis * kNumPoints + q; }
-inline Vec3 load(const double* a, int q) { return {a[q], a[kNumPoints + q], a[2 * kNumPoints + q]}; }
+inline Vec3 load(const double* a, int q) {
+  return {a[q], a[kNumPoints + q], a[2 * kNumPoints + q]};
+}
 inline void store(double* a, int q, Vec3 value) {
   a[q] = value.x;
   a[kNumPoints + q] = value.y;
@@ -90,10 +90,10 @@ struct ForceField {
 // Everything a world file fixes except the state. Read once, never changed by a run.
 struct World {
   Integrator integrator = Integrator::RK4;
-  double dt = 0.001;  // s, > 0
-  int n = 1;          // steps per drawn frame, >= 1
+  double dt = 0.001;                                                  // s, > 0
+  int n = 1;                                                          // steps per drawn frame, >= 1
   double kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0;  // >= 0
-  double mass = 1.0 / kNumPoints;  // kg per point, > 0
+  double mass = 1.0 / kNumPoints;                                     // kg per point, > 0
   bool hasPlane = false;
   Plane plane;
   ForceField field;
@@ -121,9 +121,9 @@ struct WorldFile {
   State state;
 };
 
-// Why a world in memory is one the reader would refuse (the rules of docs/world-format.md on its values),
-// by the part of the world at fault, so that a program that makes worlds can say which of its
-// inputs is to blame.
+// Why a world in memory is one the reader would refuse (the rules of docs/world-format.md on its
+// values), by the part of the world at fault, so that a program that makes worlds can say which of
+// its inputs is to blame.
 struct WorldProblem {
   enum class Part { Parameters, Plane, Field, Position, Velocity };
   Part part = Part::Parameters;
@@ -150,6 +150,7 @@ void formatWorldInBlocks(const World& world, const State& state,
 // that is not a regular file; over an existing regular file only with `overwrite` (without it
 // the check and the write are one atomic step). Throws OutputError (a std::runtime_error) with a
 // one-line message on failure.
-void writeWorldFile(const std::string& path, const World& world, const State& state, bool overwrite = true);
+void writeWorldFile(const std::string& path, const World& world, const State& state,
+                    bool overwrite = true);
 
 }  // namespace jello

@@ -13,8 +13,8 @@
 #include <thread>
 #include <vector>
 
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "solver/simulation.h"
 
 namespace jello {
@@ -28,7 +28,8 @@ using Work = std::function<void(long long)>;
 // Seconds per call of each work(count), the medians over `repeats` runs of each. The works
 // take turns, so that a change in the machine's load falls on both alike and their ratio
 // holds. Without a fixed count, the first work's first calls size it to about kBenchSeconds.
-std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long long fixedCount, int repeats) {
+std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long long fixedCount,
+                                         int repeats) {
   long long count = fixedCount;
   if (count <= 0) {
     count = 1;
@@ -37,7 +38,8 @@ std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long lo
       works.front()(count);
       double seconds = std::chrono::duration<double>(Clock::now() - start).count();
       if (seconds >= kBenchSeconds / 4 || count >= (1LL << 30)) {
-        count = std::max(1LL, static_cast<long long>(count * kBenchSeconds / std::max(seconds, 1e-9)));
+        count =
+            std::max(1LL, static_cast<long long>(count * kBenchSeconds / std::max(seconds, 1e-9)));
         break;
       }
       count *= 4;
@@ -67,14 +69,16 @@ struct StepTiming {
 
 // Steps of each model as a run takes them (Simulation: the stepper and the checks), from the
 // initial state every time, so that each run does the same work.
-std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const State& initial, Integrator integrator,
-                                  double dt, const RunOptions& run, long long fixedSteps, int repeats) {
+std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const State& initial,
+                                  Integrator integrator, double dt, const RunOptions& run,
+                                  long long fixedSteps, int repeats) {
   std::vector<StepTiming> timings(models.size());
   std::vector<long long> steps(models.size()), evaluations(models.size());
   // Made once, outside the timing: making one passes over the field's nodes (the guard's bound).
   std::vector<std::unique_ptr<Simulation>> simulations;
   for (const Model* model : models)
-    simulations.push_back(std::make_unique<Simulation>(*model, initial, integrator, dt, run.tolerances));
+    simulations.push_back(
+        std::make_unique<Simulation>(*model, initial, integrator, dt, run.tolerances));
   std::vector<Work> works;
   for (std::size_t m = 0; m < models.size(); ++m) {
     works.push_back([&, m](long long count) {
@@ -93,13 +97,14 @@ std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const
   return timings;
 }
 
-std::vector<double> timeForces(const std::vector<const Model*>& models, const State& state, long long fixedCount,
-                               int repeats) {
+std::vector<double> timeForces(const std::vector<const Model*>& models, const State& state,
+                               long long fixedCount, int repeats) {
   std::vector<double> force(kNumCoords);
   std::vector<Work> works;
   for (const Model* model : models) {
     works.push_back([&, model](long long count) {
-      for (long long i = 0; i < count; ++i) computeForces(*model, state.p(), state.v(), force.data());
+      for (long long i = 0; i < count; ++i)
+        computeForces(*model, state.p(), state.v(), force.data());
     });
   }
   return medianSecondsPerCall(works, fixedCount, repeats);
@@ -138,9 +143,10 @@ Outcome runBench(const RunOptions& run) {
 
   std::printf("%s\n", sceneLine(specialised.scene).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
-  std::printf("medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
-              "general = every term at every point\n\n",
-              repeats, world.dt);
+  std::printf(
+      "medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
+      "general = every term at every point\n\n",
+      repeats, world.dt);
   std::fflush(stdout);
 
   const std::vector<const Model*> models = {&specialised, &general};
@@ -149,15 +155,20 @@ Outcome runBench(const RunOptions& run) {
   // The world's text is parsed from memory: the file itself may be a pipe, read once already.
   const std::string text = formatWorld(world, file.state);
   double loading = medianSecondsPerCall({[&](long long count) {
-                                          for (long long i = 0; i < count; ++i) parseWorld(text, run.worldPath);
+                                          for (long long i = 0; i < count; ++i)
+                                            parseWorld(text, run.worldPath);
                                         }},
                                         run.steps ? 1 : 0, repeats)[0];
-  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", loading * 1e3, world.field.resolution > 0
-              ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str() : "no field");
+  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", loading * 1e3,
+              world.field.resolution > 0
+                  ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
+                  : "no field");
   std::printf("%-22s %14s %14s %9s\n", "", "specialised", "general", "speed-up");
-  std::printf("%-22s %11.2f us %11.2f us %8.2fx\n", "force evaluation", forcesS * 1e6, forcesG * 1e6, forcesG / forcesS);
+  std::printf("%-22s %11.2f us %11.2f us %8.2fx\n", "force evaluation", forcesS * 1e6,
+              forcesG * 1e6, forcesG / forcesS);
   std::printf("%-22s %14.0f %14.0f\n", "evaluations per second", 1 / forcesS, 1 / forcesG);
-  std::printf("\n%-22s %14s %14s %9s  %s\n", "us per step", "specialised", "general", "speed-up", "evaluations/step");
+  std::printf("\n%-22s %14s %14s %9s  %s\n", "us per step", "specialised", "general", "speed-up",
+              "evaluations/step");
   for (const IntegratorInfo& row : integratorTable()) {
     const Integrator integrator = row.integrator;
     // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
@@ -167,17 +178,20 @@ Outcome runBench(const RunOptions& run) {
     // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
     constexpr int kHalvings = 12;
     double dt = world.dt;
-    std::vector<StepTiming> timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
+    std::vector<StepTiming> timings =
+        timeSteps(models, file.state, integrator, dt, run, steps, repeats);
     for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
       dt /= 2;
       timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
     }
     const StepTiming &s = timings[0], &g = timings[1];
     char note[96] = "";
-    if (s.diverged || g.diverged) std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
-    else if (dt != world.dt) std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
-    std::printf("%-22s %14.2f %14.2f %8.2fx  %.1f%s\n", integratorName(integrator), s.seconds * 1e6, g.seconds * 1e6,
-                g.seconds / s.seconds, s.evaluationsPerStep, note);
+    if (s.diverged || g.diverged)
+      std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
+    else if (dt != world.dt)
+      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
+    std::printf("%-22s %14.2f %14.2f %8.2fx  %.1f%s\n", integratorName(integrator), s.seconds * 1e6,
+                g.seconds * 1e6, g.seconds / s.seconds, s.evaluationsPerStep, note);
     std::fflush(stdout);
   }
   return succeeded();

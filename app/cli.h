@@ -47,7 +47,8 @@ inline CLI::Validator wholeNumber(long long lowest, long long highest) {
         long long value = 0;
         std::string why;
         if (!parseWorldInteger(text, &value, &why)) return "'" + text + "' " + why;
-        if (value < lowest || value > highest) return "must be a whole number " + rule + ", got " + text;
+        if (value < lowest || value > highest)
+          return "must be a whole number " + rule + ", got " + text;
         text = std::to_string(value);
         return {};
       },
@@ -56,7 +57,8 @@ inline CLI::Validator wholeNumber(long long lowest, long long highest) {
 
 // A non-empty text (a file or folder name): an empty name is refused, not ignored.
 inline const CLI::Validator kNonEmpty = CLI::Validator(
-    [](std::string& text) -> std::string { return text.empty() ? "an empty name" : std::string(); }, "");
+    [](std::string& text) -> std::string { return text.empty() ? "an empty name" : std::string(); },
+    "");
 
 // Parses the command line. --help and --version print and set *status to 0; an error prints
 // one line "NAME: what (see NAME --help)" and sets *status to 2. Returns true when the program

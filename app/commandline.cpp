@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "app/cli.h"
-#include "solver/integrators.h"
 #include "core/output.h"
+#include "solver/integrators.h"
 
 namespace jello {
 
@@ -21,8 +21,10 @@ constexpr const char* kVersion = "jello 0.1.0";
 bool parseSize(const std::string& text, int* width, int* height) {
   int w = 0, h = 0;
   char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return false;
-  if (w < kMinPictureSize || h < kMinPictureSize || w > kMaxPictureSize || h > kMaxPictureSize) return false;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+    return false;
+  if (w < kMinPictureSize || h < kMinPictureSize || w > kMaxPictureSize || h > kMaxPictureSize)
+    return false;
   *width = w;
   *height = h;
   return true;
@@ -44,76 +46,100 @@ struct Given {
   long long steps = 0;
   double time = 0, dt = 0;
   int n = 0;
-  CLI::Option *stepsOption, *timeOption, *integratorOption, *dtOption, *nOption, *dumpOption, *kernelOption;
-  CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption, *checkOption;
+  CLI::Option *stepsOption, *timeOption, *integratorOption, *dtOption, *nOption, *dumpOption,
+      *kernelOption;
+  CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
+      *checkOption;
   CLI::Option *jsonOption, *mapOption, *benchOption;
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
   app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
   app.add_flag("--headless", c->headless, "run without a window");
-  g->stepsOption = app.add_option("--steps", g->steps, "steps to run headless (default 300 frames of n steps)")
-                       ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
-  g->timeOption = app.add_option("--time", g->time, "simulated seconds to run headless")->transform(kPositive);
+  g->stepsOption =
+      app.add_option("--steps", g->steps, "steps to run headless (default 300 frames of n steps)")
+          ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
+  g->timeOption =
+      app.add_option("--time", g->time, "simulated seconds to run headless")->transform(kPositive);
   g->stepsOption->excludes(g->timeOption);
   g->integratorOption = app.add_option("--integrator", g->integrator,
-                                       integratorNameList() + ", any case (overrides the world file; see Integrators "
-                                       "below)")
+                                       integratorNameList() +
+                                           ", any case (overrides the world file; see Integrators "
+                                           "below)")
                             ->type_name("NAME");
-  g->dtOption = app.add_option("--dt", g->dt, "time step in seconds (overrides the world file)")->transform(kPositive);
+  g->dtOption = app.add_option("--dt", g->dt, "time step in seconds (overrides the world file)")
+                    ->transform(kPositive);
   g->nOption = app.add_option("--n", g->n, "steps per drawn frame (overrides the world file)")
                    ->transform(wholeNumber(1, std::numeric_limits<int>::max()));
-  g->dumpOption = app.add_option("--dump", g->dump,
-                                 "write the final state as a world file (creates FILE, or replaces a regular file "
-                                 "FILE; never the world being run)")
-                      ->check(kNonEmpty);
-  g->kernelOption = app.add_option("--kernel", g->kernel,
-                                   "the force kernel of a headless run: specialised (default: only what the world "
-                                   "needs) or general (every term at every point, for checking and timing)")
-                        ->check(CLI::IsMember({"specialised", "general"}));
-  app.add_option("--max-memory", c->maxMemoryGB,
-                 "the memory this run may use, GB (default: the machine's, or its cgroup's limit); a world "
-                 "needing more is refused before it is read")
+  g->dumpOption =
+      app.add_option(
+             "--dump", g->dump,
+             "write the final state as a world file (creates FILE, or replaces a regular file "
+             "FILE; never the world being run)")
+          ->check(kNonEmpty);
+  g->kernelOption =
+      app.add_option(
+             "--kernel", g->kernel,
+             "the force kernel of a headless run: specialised (default: only what the world "
+             "needs) or general (every term at every point, for checking and timing)")
+          ->check(CLI::IsMember({"specialised", "general"}));
+  app.add_option(
+         "--max-memory", c->maxMemoryGB,
+         "the memory this run may use, GB (default: the machine's, or its cgroup's limit); a world "
+         "needing more is refused before it is read")
       ->type_name("GB")
       ->transform(kPositive);
-  app.add_option("--rtol", c->run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")->transform(kPositive);
-  app.add_option("--atol", c->run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")->transform(kPositive);
+  app.add_option("--rtol", c->run.tolerances.rtol, "RK45's relative tolerance (default 1e-6)")
+      ->transform(kPositive);
+  app.add_option("--atol", c->run.tolerances.atol, "RK45's absolute tolerance (default 1e-9)")
+      ->transform(kPositive);
 }
 
 void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
-  g->framesOption = app.add_option("--frames", c->pictures.framesDir,
-                                   "save JPEG frames DIR/0000.jpg, 0001.jpg, ... one per drawn frame")
-                        ->check(kNonEmpty);
-  app.add_option("--max-frames", c->pictures.maxFrames, "save at most this many frames (default 300)")
+  g->framesOption =
+      app.add_option("--frames", c->pictures.framesDir,
+                     "save JPEG frames DIR/0000.jpg, 0001.jpg, ... one per drawn frame")
+          ->check(kNonEmpty);
+  app.add_option("--max-frames", c->pictures.maxFrames,
+                 "save at most this many frames (default 300)")
       ->transform(wholeNumber(1, kMaxFrames));
   g->sizeOption = app.add_option("--size", g->size, "picture size WxH (default 640x480)");
-  app.add_flag("--overwrite", c->pictures.overwrite, "replace the frames (or the report) a folder already holds");
+  app.add_flag("--overwrite", c->pictures.overwrite,
+               "replace the frames (or the report) a folder already holds");
 }
 
 void addAnalysisOptions(CLI::App& app, JelloCommand* c, Given* g) {
-  g->reportOption = app.add_option("--report", c->report.dir,
-                                   "error against run time for the world into DIR (CSV, plot, summary), then exit")
-                        ->type_name("DIR")
-                        ->check(kNonEmpty);
-  g->integratorsOption = app.add_option("--integrators", g->integrators,
-                                        "with --report: the integrators to study, e.g. EULER,RK4 (default all)")
-                             ->type_name("LIST");
+  g->reportOption =
+      app.add_option(
+             "--report", c->report.dir,
+             "error against run time for the world into DIR (CSV, plot, summary), then exit")
+          ->type_name("DIR")
+          ->check(kNonEmpty);
+  g->integratorsOption =
+      app.add_option("--integrators", g->integrators,
+                     "with --report: the integrators to study, e.g. EULER,RK4 (default all)")
+          ->type_name("LIST");
   g->toleranceOption = app.add_option("--tolerance", c->report.visualTolerance,
                                       "with --report: the visual tolerance, m RMS (default 1e-4)")
                            ->transform(kPositive);
-  g->checkOption = app.add_flag("--check",
-                                "stability analysis: the largest stable dt of every integrator, and a verdict on "
-                                "the world's own; then exit");
-  g->jsonOption = app.add_flag("--json", c->json, "with --check: print the analysis as one JSON object");
-  g->mapOption = app.add_option("--map", c->mapDir,
-                                "with --check: kElastic against dt, predicted and observed stable regions, into "
-                                "DIR (CSV, plot)")
-                     ->type_name("DIR")
-                     ->check(kNonEmpty);
-  g->benchOption = app.add_flag("--bench",
-                                "microseconds per step of every integrator and force evaluations per second, with "
-                                "the kernel specialised for the world and the general one; then exit (--steps N: "
-                                "time N steps, not ~30 ms' worth)");
+  g->checkOption = app.add_flag(
+      "--check",
+      "stability analysis: the largest stable dt of every integrator, and a verdict on "
+      "the world's own; then exit");
+  g->jsonOption =
+      app.add_flag("--json", c->json, "with --check: print the analysis as one JSON object");
+  g->mapOption =
+      app.add_option(
+             "--map", c->mapDir,
+             "with --check: kElastic against dt, predicted and observed stable regions, into "
+             "DIR (CSV, plot)")
+          ->type_name("DIR")
+          ->check(kNonEmpty);
+  g->benchOption = app.add_flag(
+      "--bench",
+      "microseconds per step of every integrator and force evaluations per second, with "
+      "the kernel specialised for the world and the general one; then exit (--steps N: "
+      "time N steps, not ~30 ms' worth)");
 }
 
 // The integrators of --integrators, comma-separated.
@@ -122,7 +148,8 @@ int readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
   for (std::string name; std::getline(names, name, ',');) {
     Integrator chosen;
     if (!parseIntegratorName(name, &chosen))
-      return refuse("--integrators: unknown integrator '" + name + "', expected " + integratorNameList());
+      return refuse("--integrators: unknown integrator '" + name + "', expected " +
+                    integratorNameList());
     out->push_back(chosen);
   }
   return kGoOn;
@@ -132,12 +159,16 @@ int readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
 int chooseMode(const Given& g, JelloCommand* c) {
   if (*g.mapOption && !*g.checkOption) return refuse("--map goes with --check");
   if (*g.jsonOption && !*g.checkOption) return refuse("--json goes with --check");
-  if (*g.jsonOption && *g.mapOption) return refuse("--json goes with --check alone, not with --map");
+  if (*g.jsonOption && *g.mapOption)
+    return refuse("--json goes with --check alone, not with --map");
   if (*g.integratorsOption && !*g.reportOption) return refuse("--integrators goes with --report");
   if (*g.toleranceOption && !*g.reportOption) return refuse("--tolerance goes with --report");
-  if (*g.benchOption) c->mode = JelloCommand::Mode::Bench;
-  else if (*g.checkOption) c->mode = *g.mapOption ? JelloCommand::Mode::Map : JelloCommand::Mode::Check;
-  else if (*g.reportOption) c->mode = JelloCommand::Mode::Report;
+  if (*g.benchOption)
+    c->mode = JelloCommand::Mode::Bench;
+  else if (*g.checkOption)
+    c->mode = *g.mapOption ? JelloCommand::Mode::Map : JelloCommand::Mode::Check;
+  else if (*g.reportOption)
+    c->mode = JelloCommand::Mode::Report;
   if (c->mode == JelloCommand::Mode::Report) {
     if (*g.stepsOption || *g.framesOption)
       return refuse("--report runs to --time T (default 1 s); it takes no --steps or --frames");
@@ -155,7 +186,8 @@ int readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.integratorOption) {
     Integrator chosen;
     if (!parseIntegratorName(g.integrator, &chosen))
-      return refuse("--integrator: unknown integrator '" + g.integrator + "', expected " + integratorNameList());
+      return refuse("--integrator: unknown integrator '" + g.integrator + "', expected " +
+                    integratorNameList());
     run.integrator = chosen;
   }
   if (*g.kernelOption && g.kernel == "general") run.kernel = KernelChoice::General;
@@ -166,8 +198,8 @@ int readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.dumpOption) run.dumpPath = g.dump;
   c->framesGiven = g.framesOption->count() > 0;
   if (*g.sizeOption && !parseSize(g.size, &c->pictures.width, &c->pictures.height))
-    return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) + " to " +
-                  std::to_string(kMaxPictureSize) + " pixels, got '" + g.size + "'");
+    return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) +
+                  " to " + std::to_string(kMaxPictureSize) + " pixels, got '" + g.size + "'");
   return kGoOn;
 }
 
@@ -176,8 +208,8 @@ int readRunOptions(const Given& g, JelloCommand* c) {
 int parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* command) {
   *command = JelloCommand{};
   command->run.worldPath = kDefaultWorld;
-  CLI::App app{"jello: the jello cube simulator. Runs WORLD (default " + std::string(kDefaultWorld) +
-                   ") in the viewer, or headless.",
+  CLI::App app{"jello: the jello cube simulator. Runs WORLD (default " +
+                   std::string(kDefaultWorld) + ") in the viewer, or headless.",
                "jello"};
   app.set_version_flag("--version", kVersion);
   Given given;

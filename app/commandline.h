@@ -17,8 +17,8 @@ constexpr double kDefaultMapTime = 0.1;  // s: each observed run of --check --ma
 struct JelloCommand {
   enum class Mode { Run, Check, Map, Report, Bench };
   Mode mode = Mode::Run;
-  RunOptions run;          // the world, its overrides, --dump, RK45's tolerances
-  PictureOptions pictures;  // --frames, --size, --max-frames, --overwrite
+  RunOptions run;            // the world, its overrides, --dump, RK45's tolerances
+  PictureOptions pictures;   // --frames, --size, --max-frames, --overwrite
   bool framesGiven = false;  // --frames named a folder
   bool headless = false;
   ReportOptions report;  // Mode::Report

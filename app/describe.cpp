@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics.h"
 #include "app/stability.h"
+#include "physics.h"
 
 namespace jello {
 
@@ -37,7 +37,8 @@ std::string termLines(const World& w, const State& state) {
   std::string out;
   const Model general = makeModel(w, state, KernelChoice::General);
   for (const auto& term : general.scene.terms)
-    for (const TermLine& line : term->describe(state.p())) out += textf("%-11s %s\n", line.label.c_str(), line.text.c_str());
+    for (const TermLine& line : term->describe(state.p()))
+      out += textf("%-11s %s\n", line.label.c_str(), line.text.c_str());
   const std::vector<std::string> left = leftOutOf(general.scene);
   std::string joined;
   for (const std::string& part : left) joined += (joined.empty() ? "" : ", ") + part;
@@ -48,12 +49,13 @@ std::string termLines(const World& w, const State& state) {
 
 std::string describeWorld(const World& w, const State& state) {
   std::string out;
-  out += textf("integrator  %s, dt %.9g s, n %d (a drawn frame every %.9g s)\n", integratorName(w.integrator), w.dt,
-                w.n, w.dt * w.n);
+  out += textf("integrator  %s, dt %.9g s, n %d (a drawn frame every %.9g s)\n",
+               integratorName(w.integrator), w.dt, w.n, w.dt * w.n);
   out += textf("mass        %.9g kg a point, %.9g kg in all\n", w.mass, w.mass * kNumPoints);
   out += termLines(w, state);
   Extent e = extentOf(state);
-  out += "cube        from " + vec(e.lower) + " to " + vec(e.upper) + " m, centroid " + vec(e.centroid) + " m\n";
+  out += "cube        from " + vec(e.lower) + " to " + vec(e.upper) + " m, centroid " +
+         vec(e.centroid) + " m\n";
   Vec3 meanVelocity;
   double fastest = 0;
   for (int q = 0; q < kNumPoints; ++q) {

@@ -6,18 +6,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
-#include "core/output.h"
-#include "solver/integrators.h"
-#include "physics.h"
-#include "core/progress.h"
-#include "solver/simulation.h"
 #include "app/stability.h"
+#include "core/output.h"
+#include "core/progress.h"
+#include "physics.h"
+#include "solver/integrators.h"
+#include "solver/simulation.h"
 
 namespace jello {
 
@@ -35,7 +35,8 @@ double secondsSince(Clock::time_point start) {
 // taken long enough for a user to wonder.
 class RunProgress {
  public:
-  RunProgress(long long totalSteps, const FrameObserver* frames) : total_(totalSteps), frames_(frames) {}
+  RunProgress(long long totalSteps, const FrameObserver* frames)
+      : total_(totalSteps), frames_(frames) {}
 
   void update(long long done) {
     if (!line_.enabled() || done % kProgressEvery != 0) return;
@@ -45,10 +46,11 @@ class RunProgress {
     double left = elapsed / done * (total_ - done);
     char text[160];
     if (frames_) {
-      std::snprintf(text, sizeof text, "frame %d, %.0f frames/s, step %lld/%lld, %.0f s left", frames_->framesDone(),
-                    frames_->framesDone() / elapsed, done, total_, left);
+      std::snprintf(text, sizeof text, "frame %d, %.0f frames/s, step %lld/%lld, %.0f s left",
+                    frames_->framesDone(), frames_->framesDone() / elapsed, done, total_, left);
     } else {
-      std::snprintf(text, sizeof text, "step %lld/%lld (%.0f%%), %.0f s left", done, total_, 100.0 * done / total_, left);
+      std::snprintf(text, sizeof text, "step %lld/%lld (%.0f%%), %.0f s left", done, total_,
+                    100.0 * done / total_, left);
     }
     line_.show(text);
   }
@@ -114,27 +116,31 @@ Outcome observed(Call call) {
 }
 
 // Why a run stopped: RK45's unmet tolerances are bad input, anything else a divergence.
-Outcome runFailure(const RunOptions& options, const World& world, const State& initial, const RunOutcome& outcome) {
+Outcome runFailure(const RunOptions& options, const World& world, const State& initial,
+                   const RunOutcome& outcome) {
   if (outcome.kind == RunOutcome::Kind::ToleranceUnmet)
-    return failed(options.worldPath + ": " + toleranceFailure(options.tolerances, outcome.step, world.dt));
+    return failed(options.worldPath + ": " +
+                  toleranceFailure(options.tolerances, outcome.step, world.dt));
   return diverged(options.worldPath + ": " +
                   divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
 }
 
 // The summary line on stdout.
-void printSummary(const RunOptions& options, const World& world, long long steps, double wall, const StepStats& stats,
-                  const FrameObserver* frames) {
-  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step", options.worldPath.c_str(),
-              integratorName(world.integrator), world.dt, steps, steps * world.dt, wall,
-              steps > 0 ? wall * 1e6 / steps : 0.0);
+void printSummary(const RunOptions& options, const World& world, long long steps, double wall,
+                  const StepStats& stats, const FrameObserver* frames) {
+  std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step",
+              options.worldPath.c_str(), integratorName(world.integrator), world.dt, steps,
+              steps * world.dt, wall, steps > 0 ? wall * 1e6 / steps : 0.0);
   if (world.integrator == Integrator::RK45) {
-    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps, stats.rejected,
-                stats.evaluations);
+    std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps,
+                stats.rejected, stats.evaluations);
   }
   if (world.integrator == Integrator::Implicit) {
-    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations, stats.evaluations + stats.jacobians);
+    std::printf("; %lld Newton iterations, %lld evaluations", stats.newtonIterations,
+                stats.evaluations + stats.jacobians);
   }
-  if (frames) std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
+  if (frames)
+    std::printf("; %s (%.1f frames/s)", frames->describe().c_str(), frames->framesDone() / wall);
   std::printf("\n");
   std::fflush(stdout);
 }
@@ -142,7 +148,8 @@ void printSummary(const RunOptions& options, const World& world, long long steps
 }  // namespace
 
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
-  if (sameFile(dumpPath, worldPath)) return "is the world being run; it is never replaced, name another file";
+  if (sameFile(dumpPath, worldPath))
+    return "is the world being run; it is never replaced, name another file";
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 
@@ -187,15 +194,23 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] { frames->frame(model, simulation.state()); };
   if (frames) {
-    if (Outcome begun = observed([&] { frames->begin(); showFrame(); }); !begun.ok()) return begun;
+    if (Outcome begun = observed([&] {
+          frames->begin();
+          showFrame();
+        });
+        !begun.ok())
+      return begun;
   }
   std::printf("%s%s\n", sceneLine(model.scene).c_str(),
-              options.kernel == KernelChoice::General ? "; --kernel general computes every term at every point anyway" : "");
+              options.kernel == KernelChoice::General
+                  ? "; --kernel general computes every term at every point anyway"
+                  : "");
   // In stretches that end where a frame is due or the progress line may be redrawn.
   const long long frameEvery = frames ? world.n : steps;
   while (simulation.step() < steps) {
     const long long done = simulation.step();
-    const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
+    const long long stop =
+        std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
     const RunOutcome outcome = simulation.advance(stop - done);
     if (!outcome.ran()) return runFailure(options, world, file.state, outcome);
     if (frames && simulation.step() % world.n == 0 && frames->wantsMore()) {

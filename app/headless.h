@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "solver/integrators.h"
 #include "core/outcome.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "solver/simulation.h"
 #include "world.h"
 
@@ -20,8 +20,8 @@ struct RunOptions {
   std::optional<Integrator> integrator;
   std::optional<double> dt;  // s
   std::optional<int> n;
-  std::optional<std::string> dumpPath;  // --dump FILE
-  Tolerances tolerances;  // RK45's error control
+  std::optional<std::string> dumpPath;              // --dump FILE
+  Tolerances tolerances;                            // RK45's error control
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };
 
@@ -63,7 +63,6 @@ std::string tooManyStepsMessage(double time, double dt);
 // file of that name, because the option names it; never the world being run, nor anything
 // that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
-
 
 // Reads the world of `options` and applies its overrides. Fails, saying why, on bad input.
 Outcome loadRun(const RunOptions& options, WorldFile* out);

@@ -18,11 +18,11 @@
 #include <system_error>
 #include <thread>
 
-#include "solver/integrators.h"
-#include "physics.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
+#include "physics.h"
+#include "solver/integrators.h"
 #include "solver/simulation.h"
 
 namespace jello {
@@ -31,12 +31,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr int kSweepLength = 6;              // steps per integrator, halving
-constexpr int kReferenceRefinement = 32;     // reference step: the smallest swept step / 32
+constexpr int kSweepLength = 6;                    // steps per integrator, halving
+constexpr int kReferenceRefinement = 32;           // reference step: the smallest swept step / 32
 constexpr long long kMaxReferenceSteps = 1 << 16;  // ... but no more steps than this
-constexpr int kLargestStepDivisor = 8;       // the stability search starts at T / 8
+constexpr int kLargestStepDivisor = 8;             // the stability search starts at T / 8
 constexpr int kSearchHalvings = 24;
-constexpr double kSameEnd = 0.01;  // m RMS: two runs that end this close agree
+constexpr double kSameEnd = 0.01;             // m RMS: two runs that end this close agree
 constexpr double kRepeatBelowSeconds = 0.25;  // runs shorter than this are timed three times
 constexpr double kRk45Tolerances[kSweepLength] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
 
@@ -64,12 +64,14 @@ Run simulate(const Model& model, const State& start, Integrator integrator, doub
 
 // Runs one setting into `row`: the run itself is the warm-up; runs shorter than
 // kRepeatBelowSeconds are timed twice more and the least time kept. Returns the end state.
-State measure(const Model& model, const State& start, double time, Tolerances tolerances, ReportRow* row) {
+State measure(const Model& model, const State& start, double time, Tolerances tolerances,
+              ReportRow* row) {
   Run run = simulate(model, start, row->integrator, row->dt, time, tolerances);
   double best = run.wall;
   if (!run.diverged && run.wall < kRepeatBelowSeconds) {
     for (int repeat = 0; repeat < 2; ++repeat)
-      best = std::min(best, simulate(model, start, row->integrator, row->dt, time, tolerances).wall);
+      best =
+          std::min(best, simulate(model, start, row->integrator, row->dt, time, tolerances).wall);
   }
   row->steps = run.stats.steps;
   row->evaluations = run.stats.evaluations + run.stats.jacobians;
@@ -96,7 +98,8 @@ class ReportProgress {
   void finish() { line_.finish(); }
   void show(const std::string& what) {
     ++done_;
-    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) + ")");
+    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) +
+               ")");
   }
 
  private:
@@ -122,10 +125,12 @@ std::string describeSetting(const ReportRow& r) {
   return s;
 }
 
-std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
-                          double floor, double visualTolerance, const std::string& title) {
+std::string gnuplotScript(const std::vector<ReportRow>& rows,
+                          const std::vector<Integrator>& integrators, double floor,
+                          double visualTolerance, const std::string& title) {
   std::ostringstream gp;
-  gp << "# Made by jello --report; run `gnuplot report.gp` in this folder to draw report.png again.\n";
+  gp << "# Made by jello --report; run `gnuplot report.gp` in this folder to draw report.png "
+        "again.\n";
   std::string plots;
   for (Integrator integrator : integrators) {
     std::string name = integratorName(integrator);
@@ -139,13 +144,16 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<
     gp << "EOD\n";
     if (points == 0) continue;
     double order = fittedOrder(rows, integrator, floor);
-    std::string label = name + (std::isnan(order) ? std::string() : " (order " + number(std::round(order * 100) / 100) + ")");
-    plots += (plots.empty() ? "" : ", ") + std::string("$") + name + " using 1:2 with linespoints lw 2 pt 7 title '" +
-             label + "'";
+    std::string label =
+        name + (std::isnan(order) ? std::string()
+                                  : " (order " + number(std::round(order * 100) / 100) + ")");
+    plots += (plots.empty() ? "" : ", ") + std::string("$") + name +
+             " using 1:2 with linespoints lw 2 pt 7 title '" + label + "'";
   }
   gp << "$OWN << EOD\n";
   for (const ReportRow& r : rows)
-    if (r.worldsOwn && !r.diverged && r.rmsError > 0) gp << r.wallSeconds << " " << r.rmsError << "\n";
+    if (r.worldsOwn && !r.diverged && r.rmsError > 0)
+      gp << r.wallSeconds << " " << r.rmsError << "\n";
   gp << "EOD\n";
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"
@@ -157,8 +165,8 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows, const std::vector<
      << "set ylabel 'RMS position error at the end (m)'\n"
      << "set grid\nset key outside right top\n"
      << "plot " << plots << (plots.empty() ? "" : ", ")
-     << "$OWN using 1:2 with points pt 6 ps 3 lc 'black' title \"the world's own\", " << visualTolerance
-     << " with lines dt 2 lc 'gray40' title 'visual tolerance'\n";
+     << "$OWN using 1:2 with points pt 6 ps 3 lc 'black' title \"the world's own\", "
+     << visualTolerance << " with lines dt 2 lc 'gray40' title 'visual tolerance'\n";
   return gp.str();
 }
 
@@ -169,9 +177,10 @@ std::string reportCsv(const std::vector<ReportRow>& rows) {
   csv << "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status\n";
   for (const ReportRow& r : rows) {
     char line[256];
-    std::snprintf(line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n", integratorName(r.integrator), r.dt,
-                  r.integrator == Integrator::RK45 ? number(r.tolerance).c_str() : "", r.steps, r.evaluations,
-                  r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
+    std::snprintf(line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n",
+                  integratorName(r.integrator), r.dt,
+                  r.integrator == Integrator::RK45 ? number(r.tolerance).c_str() : "", r.steps,
+                  r.evaluations, r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
                   r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
     csv << line;
   }
@@ -182,7 +191,8 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const ReportRow& r : rows) {
     if (r.integrator != integrator || r.diverged || r.worldsOwn || !(r.rmsError > floor)) continue;
-    double x = std::log(integrator == Integrator::RK45 ? r.tolerance : r.dt), y = std::log(r.rmsError);
+    double x = std::log(integrator == Integrator::RK45 ? r.tolerance : r.dt),
+           y = std::log(r.rmsError);
     n += 1;
     sx += x;
     sy += y;
@@ -217,10 +227,12 @@ double largestStableStep(const Study& s, Integrator integrator) {
   Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
   for (int k = 0; k < kSearchHalvings; ++k) {
     double dt = s.T / (kLargestStepDivisor << k);
-    s.progress.show(std::string("finding ") + integratorName(integrator) + "'s largest stable step, dt=" + number(dt));
+    s.progress.show(std::string("finding ") + integratorName(integrator) +
+                    "'s largest stable step, dt=" + number(dt));
     Run half = simulate(s.model, s.start, integrator, dt / 2, s.T);
     double ignored;
-    if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd) return dt;
+    if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd)
+      return dt;
     previous = std::move(half);
   }
   return s.T / (static_cast<double>(kLargestStepDivisor) * (1 << kSearchHalvings));
@@ -251,7 +263,8 @@ void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
 }
 
 // The world's own setting, unless a sweep already ran it.
-void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tolerances, Measured* m) {
+void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tolerances,
+                      Measured* m) {
   auto own = std::find_if(m->rows.begin(), m->rows.end(), [&](const ReportRow& r) {
     return r.integrator == world.integrator && r.integrator != Integrator::RK45 && r.dt == world.dt;
   });
@@ -281,13 +294,17 @@ struct Reference {
 Reference runReference(const Study& s, double smallestStep) {
   Reference reference;
   reference.steps = 1;
-  while (reference.steps < kMaxReferenceSteps && s.T / reference.steps > smallestStep / kReferenceRefinement)
+  while (reference.steps < kMaxReferenceSteps &&
+         s.T / reference.steps > smallestStep / kReferenceRefinement)
     reference.steps *= 2;
   reference.step = s.T / reference.steps;
-  s.progress.show("the reference, RK4 dt=" + number(reference.step) + " and dt=" + number(reference.step / 2));
+  s.progress.show("the reference, RK4 dt=" + number(reference.step) +
+                  " and dt=" + number(reference.step / 2));
   // The reference and its check run at once, one on each core, after the timed runs.
   Run run, check;
-  auto runCheck = [&] { check = simulate(s.model, s.start, Integrator::RK4, reference.step / 2, s.T); };
+  auto runCheck = [&] {
+    check = simulate(s.model, s.start, Integrator::RK4, reference.step / 2, s.T);
+  };
   std::thread other;
   try {
     other = std::thread(runCheck);
@@ -319,7 +336,8 @@ Recommendations recommend(const std::vector<ReportRow>& rows, double visualToler
   auto cheapest = [&](double limit) {
     const ReportRow* best = nullptr;
     for (const ReportRow& row : rows)
-      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds)) best = &row;
+      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds))
+        best = &row;
     return best;
   };
   r.asAccurate = r.own && !r.own->diverged ? cheapest(r.own->rmsError) : nullptr;
@@ -333,35 +351,44 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
   std::ostringstream md;
   md << "# Error against run time: " << worldPath << "\n\n"
      << "Every run goes from the world's initial state to T = " << number(T)
-     << " s. Error: RMS over the 512 points of the distance to the reference positions at T (max: the largest "
-        "distance). Time: the least wall time of the stepping over repeated runs, after a warm-up (runs over "
+     << " s. Error: RMS over the 512 points of the distance to the reference positions at T (max: "
+        "the largest "
+        "distance). Time: the least wall time of the stepping over repeated runs, after a warm-up "
+        "(runs over "
      << kRepeatBelowSeconds << " s are timed once).\n\n"
      << "Reference: RK4 at dt = " << number(reference.step) << " s (" << reference.steps
-     << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2) << " s, is "
-     << number(reference.error) << " m RMS. Errors below " << number(10 * reference.error)
+     << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2)
+     << " s, is " << number(reference.error) << " m RMS. Errors below "
+     << number(10 * reference.error)
      << " m are at the reference's limit and are left out of the fitted orders.\n\n"
      << "![error against run time](report.png)\n\n"
-     << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max error (m) | status |\n"
+     << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max "
+        "error (m) | status |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const ReportRow& r : rows) {
-    md << "| " << integratorName(r.integrator) << (r.worldsOwn ? " (the world's own)" : "") << " | " << number(r.dt)
-       << " | " << (r.integrator == Integrator::RK45 ? number(r.tolerance) : "") << " | " << r.steps << " | "
-       << r.evaluations << " | " << number(r.wallSeconds) << " | " << (r.diverged ? "" : number(r.rmsError)) << " | "
-       << (r.diverged ? "" : number(r.maxError)) << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
+    md << "| " << integratorName(r.integrator) << (r.worldsOwn ? " (the world's own)" : "") << " | "
+       << number(r.dt) << " | " << (r.integrator == Integrator::RK45 ? number(r.tolerance) : "")
+       << " | " << r.steps << " | " << r.evaluations << " | " << number(r.wallSeconds) << " | "
+       << (r.diverged ? "" : number(r.rmsError)) << " | " << (r.diverged ? "" : number(r.maxError))
+       << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
   }
   return md.str();
 }
 
 // report.md's fitted orders.
-std::string markdownOrders(const std::vector<ReportRow>& rows, const std::vector<Integrator>& integrators,
-                           double floor) {
+std::string markdownOrders(const std::vector<ReportRow>& rows,
+                           const std::vector<Integrator>& integrators, double floor) {
   std::ostringstream md;
-  md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against log(tolerance)).\n\n"
+  md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against "
+        "log(tolerance)).\n\n"
      << "| integrator | fitted order | theory |\n|---|---|---|\n";
   for (Integrator integrator : integrators) {
     double order = fittedOrder(rows, integrator, floor);
-    md << "| " << integratorName(integrator) << " | " << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
-       << (integrator == Integrator::RK45 ? std::string("(tolerance)") : std::to_string(orderOf(integrator))) << " |\n";
+    md << "| " << integratorName(integrator) << " | "
+       << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
+       << (integrator == Integrator::RK45 ? std::string("(tolerance)")
+                                          : std::to_string(orderOf(integrator)))
+       << " |\n";
   }
   return md.str();
 }
@@ -374,8 +401,8 @@ std::string markdownRecommendations(const Recommendations& recommended, double v
   if (ownRow) {
     md << "The world's own setting, " << describeSetting(*ownRow) << ", "
        << (ownRow->diverged ? std::string("diverges before T.")
-                            : "takes " + number(ownRow->wallSeconds) + " s for an error of " + number(ownRow->rmsError) +
-                                  " m.")
+                            : "takes " + number(ownRow->wallSeconds) + " s for an error of " +
+                                  number(ownRow->rmsError) + " m.")
        << "\n\n";
   }
   auto recommendation = [&](const char* what, const ReportRow* r) {
@@ -388,46 +415,57 @@ std::string markdownRecommendations(const Recommendations& recommended, double v
       md << "the world's own setting; nothing cheaper is as accurate.\n";
       return;
     }
-    md << describeSetting(*r) << ": " << number(r->wallSeconds) << " s, error " << number(r->rmsError) << " m";
-    if (ownRow && !ownRow->diverged && r->wallSeconds > 0) md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
+    md << describeSetting(*r) << ": " << number(r->wallSeconds) << " s, error "
+       << number(r->rmsError) << " m";
+    if (ownRow && !ownRow->diverged && r->wallSeconds > 0)
+      md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
     md << ".\n";
   };
-  recommendation("The cheapest setting at least as accurate as the world's own", recommended.asAccurate);
-  recommendation(("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)").c_str(),
-                 recommended.looksSame);
+  recommendation("The cheapest setting at least as accurate as the world's own",
+                 recommended.asAccurate);
+  recommendation(
+      ("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)")
+          .c_str(),
+      recommended.looksSame);
   return md.str();
 }
 
 // report.csv, report.md and report.gp into the claimed folder. Throws OutputError.
 void writeReportFiles(const std::string& worldPath, const ReportOptions& options,
-                      const std::vector<Integrator>& integrators, const std::vector<ReportRow>& rows,
-                      const Reference& reference, const Recommendations& recommended) {
+                      const std::vector<Integrator>& integrators,
+                      const std::vector<ReportRow>& rows, const Reference& reference,
+                      const Recommendations& recommended) {
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
   const double T = options.time, floor = 10 * reference.error;
   const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
-  const std::string md = markdownRuns(worldPath, T, reference, rows) + markdownOrders(rows, integrators, floor) +
+  const std::string md = markdownRuns(worldPath, T, reference, rows) +
+                         markdownOrders(rows, integrators, floor) +
                          markdownRecommendations(recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
-  writeFileWhole(options.dir + "/report.gp", gnuplotScript(rows, integrators, floor, options.visualTolerance, title),
-                 existing);
+  writeFileWhole(options.dir + "/report.gp",
+                 gnuplotScript(rows, integrators, floor, options.visualTolerance, title), existing);
 }
 
 // The lines on stdout: where the report is, and what it recommends.
-void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn, std::size_t runs,
-                        const Reference& reference, const Recommendations& recommended) {
+void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn,
+                        std::size_t runs, const Reference& reference,
+                        const Recommendations& recommended) {
   const ReportRow *ownRow = recommended.own, *asAccurate = recommended.asAccurate,
                   *looksSame = recommended.looksSame;
-  std::printf("%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its error %.3g m\n",
-              worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
-              reference.step, reference.error);
+  std::printf(
+      "%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its "
+      "error %.3g m\n",
+      worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
+      reference.step, reference.error);
   if (asAccurate == ownRow && ownRow)
     std::printf("as accurate as the world's own: nothing cheaper than the world's own setting\n");
   else if (asAccurate && ownRow && asAccurate->wallSeconds > 0)
     std::printf("as accurate as the world's own: %s, %s\n", describeSetting(*asAccurate).c_str(),
                 speedup(ownRow->wallSeconds / asAccurate->wallSeconds).c_str());
   if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
-    std::printf("within %g m: %s, %s\n", options.visualTolerance, describeSetting(*looksSame).c_str(),
+    std::printf("within %g m: %s, %s\n", options.visualTolerance,
+                describeSetting(*looksSame).c_str(),
                 speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
 }
 
@@ -449,7 +487,8 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   FolderClaim claim;
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
   try {
-    claim = claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
+    claim =
+        claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
   } catch (const OutputError& e) {
     return failed(std::string("--report: ") + e.what());
   }
@@ -462,10 +501,12 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   measureWorldsOwn(study, world, runOptions.tolerances, &measured);
   const Reference reference = runReference(study, measured.smallestStep);
   if (reference.diverged)
-    return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) + ") diverged; no report");
+    return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) +
+                    ") diverged; no report");
   std::vector<ReportRow>& rows = measured.rows;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!rows[i].diverged) rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
+    if (!rows[i].diverged)
+      rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
   }
   const Recommendations recommended = recommend(rows, options.visualTolerance);
   progress.finish();

@@ -11,10 +11,10 @@ namespace jello {
 
 struct ReportOptions {
   std::string dir;
-  double time = 1.0;                     // s: every run goes from the world's start to this time
-  std::vector<Integrator> integrators;   // empty: all of them
-  double visualTolerance = 1e-4;         // m RMS: "looks the same"
-  bool overwrite = false;                // replace the report files DIR already holds
+  double time = 1.0;                    // s: every run goes from the world's start to this time
+  std::vector<Integrator> integrators;  // empty: all of them
+  double visualTolerance = 1e-4;        // m RMS: "looks the same"
+  bool overwrite = false;               // replace the report files DIR already holds
 };
 
 // One run of the study.

@@ -2,27 +2,27 @@
 
 #include "app/stability.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <map>
-#include <unistd.h>
 #include <nlohmann/json.hpp>
-
-#include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
-#include "solver/guard.h"
 #include "app/headless.h"
-#include "solver/integrators.h"
-#include "solver/jacobian.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
+#include "solver/guard.h"
+#include "solver/integrators.h"
+#include "solver/jacobian.h"
 #include "solver/simulation.h"
 
 namespace jello {
@@ -31,9 +31,9 @@ const std::vector<Integrator> kExplicitIntegrators = integratorsWithStepLimit();
 
 namespace {
 
-constexpr double kWallPress = 1e-3;    // m: how far the face is pressed into the wall
-constexpr double kRigid = 1e-9;        // |omega^2| below this fraction of the largest: a rigid motion
-constexpr double kLargestStep = 1.0;   // s: no limit beyond this is reported
+constexpr double kWallPress = 1e-3;  // m: how far the face is pressed into the wall
+constexpr double kRigid = 1e-9;      // |omega^2| below this fraction of the largest: a rigid motion
+constexpr double kLargestStep = 1.0;  // s: no limit beyond this is reported
 // A mode counts as bounded when it grows by less than a factor of 2 over kHorizon: explicit
 // Euler amplifies an undamped slow mode (a field's slight restoring force, say) at any step,
 // but by so little that no run would see it.
@@ -95,11 +95,13 @@ std::string number(double x) {
 
 // --check's table: a line per integrator of the integrator table, its limits or "unbounded".
 std::string limitTable(const StabilityReport& r) {
-  std::string out = "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
+  std::string out =
+      "\n  integrator   largest stable dt (s)   at the initial state   with a face on a wall\n";
   char line[256];
   for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
-    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n", integratorName(kExplicitIntegrators[i]),
-                  limitText(r.criticalRest[i]).c_str(), limitText(r.criticalInitial[i]).c_str(),
+    std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n",
+                  integratorName(kExplicitIntegrators[i]), limitText(r.criticalRest[i]).c_str(),
+                  limitText(r.criticalInitial[i]).c_str(),
                   limitText(r.criticalFaceOnWall[i]).c_str());
     out += line;
   }
@@ -157,7 +159,9 @@ Linearisation lineariseAtRest(const World& world) {
     accelerationJacobian(model, restState().p(), restState().v(), nullptr, &jacobian);
     Eigen::MatrixXd stiffness(jacobian.dAdp);
     stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
-    return Eigen::VectorXd(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly).eigenvalues());
+    return Eigen::VectorXd(
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly)
+            .eigenvalues());
   }();
   Linearisation out;
   if (!std::isfinite(world.kElastic / world.mass) || !std::isfinite(world.dElastic / world.mass)) {
@@ -353,12 +357,15 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
          stepAdvice(world.dt);
 }
 
-double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess) {
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time,
+                     double guess) {
   // The smallest step tried is guess / 3: its runs must be a countable number of steps.
   if (!(guess > 0) || !stepsForTime(time, guess / 3)) return NAN;
   // Runs of `time` seconds (stepsForTime's count: every dt tried is above guess / 3), checked
   // as every run is (simulation.h).
-  auto stable = [&](double dt) { return Simulation(model, start, integrator, dt).advance(*stepsForTime(time, dt)).ran(); };
+  auto stable = [&](double dt) {
+    return Simulation(model, start, integrator, dt).advance(*stepsForTime(time, dt)).ran();
+  };
   double low = guess / 3, high = guess * 3;
   if (!stable(low) || stable(high)) return NAN;
   for (int i = 0; i < 9; ++i) {
@@ -380,7 +387,8 @@ struct StiffnessSweep {
 // every explicit integrator, and the observed one of three of them (real runs are slow).
 StiffnessSweep sweepStiffness(const World& world, const State& initial, double time) {
   const double base = world.kElastic > 0 ? world.kElastic : 500;
-  const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint, Integrator::RK4};
+  const std::vector<Integrator> observed = {Integrator::Euler, Integrator::Midpoint,
+                                            Integrator::RK4};
   StiffnessSweep sweep;
   sweep.csv = "kElastic,integrator,predicted_dt,observed_dt\n";
   Progress progress;
@@ -394,8 +402,8 @@ StiffnessSweep sweepStiffness(const World& world, const State& initial, double t
       bool measured = std::find(observed.begin(), observed.end(), integrator) != observed.end();
       double seen = measured ? observedLimit(model, initial, integrator, time, predicted) : NAN;
       char line[160];
-      std::snprintf(line, sizeof line, "%.6g,%s,%.6g,%s\n", w.kElastic, integratorName(integrator), predicted,
-                    std::isnan(seen) ? "" : number(seen).c_str());
+      std::snprintf(line, sizeof line, "%.6g,%s,%.6g,%s\n", w.kElastic, integratorName(integrator),
+                    predicted, std::isnan(seen) ? "" : number(seen).c_str());
       sweep.csv += line;
       std::snprintf(line, sizeof line, "%.6g %.6g\n", w.kElastic, predicted);
       sweep.predictedRows[integratorName(integrator)] += line;
@@ -412,16 +420,18 @@ StiffnessSweep sweepStiffness(const World& world, const State& initial, double t
 }
 
 // stability-map.gp: the data inline, so that the script alone draws the picture again.
-std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath, const World& world) {
+std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath,
+                      const World& world) {
   std::ostringstream gp;
-  gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png again.\n";
+  gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png "
+        "again.\n";
   std::string plots;
   int style = 0;
   for (const auto& [name, rows] : sweep.predictedRows) {
     std::string lt = " lt " + std::to_string(++style);  // one colour an integrator
     gp << "$P_" << name << " << EOD\n" << rows << "EOD\n";
-    plots += (plots.empty() ? "" : ", ") + std::string("$P_") + name + " with lines lw 2" + lt + " title '" + name +
-             " predicted'";
+    plots += (plots.empty() ? "" : ", ") + std::string("$P_") + name + " with lines lw 2" + lt +
+             " title '" + name + " predicted'";
     if (auto observed = sweep.observedRows.find(name); observed != sweep.observedRows.end()) {
       gp << "$O_" << name << " << EOD\n" << observed->second << "EOD\n";
       plots += ", $O_" + name + " with points pt 7 ps 1.3" + lt + " title '" + name + " observed'";
@@ -429,9 +439,12 @@ std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath,
   }
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'stability-map.png'\nset output png\n"
-     << "set title " << gnuplotString(worldPath + ": largest stable step against spring stiffness (stable below each line)")
+     << "set title "
+     << gnuplotString(worldPath +
+                      ": largest stable step against spring stiffness (stable below each line)")
      << "\n"
-     << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key outside right top\n"
+     << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key "
+        "outside right top\n"
      << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
      << world.kElastic << " " << world.dt << "\ne\n";
   return gp.str();
@@ -444,7 +457,8 @@ Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, 
   FolderClaim claim;
   const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
   try {
-    claim = claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
+    claim =
+        claimOutputs(dir, {"stability-map.csv", "stability-map.gp", "stability-map.png"}, existing);
   } catch (const OutputError& e) {
     return failed(std::string("--map: ") + e.what());
   }
@@ -455,7 +469,8 @@ Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, 
   } catch (const OutputError& e) {
     return failed(e.what());
   }
-  const std::string whyNotDrawn = drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
+  const std::string whyNotDrawn =
+      drawWithGnuplot(dir, "stability-map.gp", "stability-map.png", existing);
   const bool drawn = whyNotDrawn.empty();
   std::printf("%s: stability map in %s/ (stability-map.csv%s)\n", worldPath.c_str(), dir.c_str(),
               drawn ? ", stability-map.png" : "");
@@ -542,13 +557,16 @@ std::string modesText(const StabilityReport& r) {
   std::string out;
   char line[256];
   std::snprintf(line, sizeof line,
-                "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping rates %.3g to %.3g 1/s\n",
-                r.rest.modes.size(), r.rest.highestFrequency, r.rest.highestFrequency / (2 * 3.14159265358979),
-                r.rest.lowestDamping, r.rest.highestDamping);
+                "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping "
+                "rates %.3g to %.3g 1/s\n",
+                r.rest.modes.size(), r.rest.highestFrequency,
+                r.rest.highestFrequency / (2 * 3.14159265358979), r.rest.lowestDamping,
+                r.rest.highestDamping);
   out += line;
-  std::snprintf(line, sizeof line,
-                "  at the initial state: highest frequency %.4g rad/s, damping rates %.3g to %.3g 1/s\n",
-                r.initial.highestFrequency, r.initial.lowestDamping, r.initial.highestDamping);
+  std::snprintf(
+      line, sizeof line,
+      "  at the initial state: highest frequency %.4g rad/s, damping rates %.3g to %.3g 1/s\n",
+      r.initial.highestFrequency, r.initial.lowestDamping, r.initial.highestDamping);
   out +=
       r.initial.finite
           ? line
@@ -556,7 +574,8 @@ std::string modesText(const StabilityReport& r) {
             "arithmetic): no analysis\n";
   if (r.initial.growing) {
     out += "  " + std::to_string(r.initial.growing) +
-           " modes of the initial state grow whatever the step (negative stiffness: buckling springs, a repelling "
+           " modes of the initial state grow whatever the step (negative stiffness: buckling "
+           "springs, a repelling "
            "field): physics, not numerics\n";
   }
   return out;
@@ -570,8 +589,8 @@ std::string verdictText(const World& world, const StabilityReport& r) {
   const char* which =
       number(critical) != number(r.critical(world.integrator)) ? " at the initial state" : "";
   Verdict verdict = verdictFor(world.dt, critical, r.stableFraction);
-  std::string out = "  the world's dt " + number(world.dt) + " with " + integratorName(world.integrator) + ": " +
-                    verdictName(verdict);
+  std::string out = "  the world's dt " + number(world.dt) + " with " +
+                    integratorName(world.integrator) + ": " + verdictName(verdict);
   if (critical == 0) {
     out += " (the limit is " + limitText(critical) + " s)";
   } else if (std::isfinite(critical)) {
@@ -607,14 +626,16 @@ std::string otherLimitsText(const World& world, const StabilityReport& r) {
 
 }  // namespace
 
-std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& r) {
+std::string stabilityText(const std::string& worldPath, const World& world,
+                          const StabilityReport& r) {
   if (!r.beyond.empty()) {
     return worldPath +
            ": the world's numbers are beyond what double arithmetic can simulate: " + r.beyond +
            "\n  its first step overflows, or leaves the guard's 100 m: no practical step of any "
            "integrator will do, and no stability analysis was made\n";
   }
-  std::string out = worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
+  std::string out =
+      worldPath + ": the largest stable step of each integrator, from the linearised forces\n";
   out += modesText(r);
   out += limitTable(r);
   out += verdictText(world, r);
@@ -622,7 +643,8 @@ std::string stabilityText(const std::string& worldPath, const World& world, cons
   return out;
 }
 
-std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& r) {
+std::string stabilityJson(const std::string& worldPath, const World& world,
+                          const StabilityReport& r) {
   nlohmann::json j;
   j["world"] = worldPath;
   j["dt"] = world.dt;
@@ -639,15 +661,19 @@ std::string stabilityJson(const std::string& worldPath, const World& world, cons
   j["initial_state"] = {{"highest_frequency", r.initial.highestFrequency},
                         {"damping_rates", {r.initial.lowestDamping, r.initial.highestDamping}},
                         {"growing_modes", r.initial.growing}};
-  auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  auto finite = [](double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
   for (std::size_t i = 0; i < kExplicitIntegrators.size(); ++i) {
     Integrator integrator = kExplicitIntegrators[i];
-    j["integrators"][integratorName(integrator)] = {{"critical_dt", finite(r.critical(integrator))},
-                                                     {"initial_state", finite(r.criticalInitial[i])},
-                                                     {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
+    j["integrators"][integratorName(integrator)] = {
+        {"critical_dt", finite(r.critical(integrator))},
+        {"initial_state", finite(r.criticalInitial[i])},
+        {"face_on_wall", finite(r.criticalFaceOnWall[i])}};
   }
   for (const IntegratorInfo& row : integratorTable())
-    if (!row.boundedStableStep) j["integrators"][row.name] = {{"critical_dt", nullptr}, {"unbounded", true}};
+    if (!row.boundedStableStep)
+      j["integrators"][row.name] = {{"critical_dt", nullptr}, {"unbounded", true}};
   double critical = r.critical(world.integrator), verdictLimit = r.verdictLimit(world.integrator);
   j["verdict"] = verdictName(verdictFor(world.dt, verdictLimit, r.stableFraction));
   j["critical_dt"] = finite(critical);

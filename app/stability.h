@@ -29,8 +29,8 @@ struct Linearisation {
   // False when the forces' derivatives at the state hold a number that is not finite: no
   // eigen-analysis is run on such a matrix, and there are no modes.
   bool finite = true;
-  std::vector<Mode> modes;    // the oscillating ones, omega > 0
-  int growing = 0;            // modes with negative stiffness (buckling): physical, not numerical
+  std::vector<Mode> modes;      // the oscillating ones, omega > 0
+  int growing = 0;              // modes with negative stiffness (buckling): physical, not numerical
   double highestFrequency = 0;  // rad/s
   double lowestDamping = 0, highestDamping = 0;  // 1/s, over the modes
 };
@@ -117,8 +117,10 @@ Verdict verdictFor(double dt, double critical, double stableFraction = kStableFr
 const char* verdictName(Verdict verdict);
 
 // The human report of jello --check, and its JSON.
-std::string stabilityText(const std::string& worldPath, const World& world, const StabilityReport& report);
-std::string stabilityJson(const std::string& worldPath, const World& world, const StabilityReport& report);
+std::string stabilityText(const std::string& worldPath, const World& world,
+                          const StabilityReport& report);
+std::string stabilityJson(const std::string& worldPath, const World& world,
+                          const StabilityReport& report);
 
 // The limit that matters when a run has diverged: the smaller of the limits at the initial
 // state and with a face on a wall (two eigensolves, a few seconds). NaN when the forces'
@@ -132,9 +134,11 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
                               const std::string& reason);
 
 // The largest dt at which real runs of `time` seconds from `start` stay plausible (the checks of
-// every Simulation, simulation.h), by bisection to 0.5% between a third and three times `guess`; NaN when
-// the limit is not in that range, or when runs at guess / 3 would take more than kMaxSteps.
-double observedLimit(const Model& model, const State& start, Integrator integrator, double time, double guess);
+// every Simulation, simulation.h), by bisection to 0.5% between a third and three times `guess`;
+// NaN when the limit is not in that range, or when runs at guess / 3 would take more than
+// kMaxSteps.
+double observedLimit(const Model& model, const State& start, Integrator integrator, double time,
+                     double guess);
 
 // jello --check --map DIR: kElastic swept against dt, the predicted and the observed (real
 // runs of `time` seconds, by bisection) largest stable step per integrator; writes

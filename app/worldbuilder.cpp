@@ -33,7 +33,9 @@ void fillNodes(ForceField& field, int r, const std::function<Vec3(Vec3)>& force)
   for (int i = 0; i < r; ++i)
     for (int j = 0; j < r; ++j)
       for (int k = 0; k < r; ++k) {
-        Vec3 p = r == 1 ? Vec3{} : Vec3{fieldNodeCoordinate(i, r), fieldNodeCoordinate(j, r), fieldNodeCoordinate(k, r)};
+        Vec3 p = r == 1 ? Vec3{}
+                        : Vec3{fieldNodeCoordinate(i, r), fieldNodeCoordinate(j, r),
+                               fieldNodeCoordinate(k, r)};
         field.setNode((i * r + j) * r + k, force(p));
       }
 }
@@ -104,7 +106,8 @@ Recipe coursePreset(const std::string& name) {
     r.state.velocity = Vec3{10, -10, 0};
     return r;
   }
-  throw RecipeError("unknown preset '" + name + "', expected jello, rotate, moveLeft, skewedCorner or gravity");
+  throw RecipeError("unknown preset '" + name +
+                    "', expected jello, rotate, moveLeft, skewedCorner or gravity");
 }
 
 namespace {
@@ -119,7 +122,8 @@ std::vector<std::string> splitExpressions(const std::string& expression) {
   }
   parts.push_back(trim(rest));
   if (parts.size() != 3) {
-    throw RecipeError("--field-expr needs three expressions \"fx; fy; fz\", got " + std::to_string(parts.size()));
+    throw RecipeError("--field-expr needs three expressions \"fx; fy; fz\", got " +
+                      std::to_string(parts.size()));
   }
   return parts;
 }
@@ -171,7 +175,8 @@ ForceField buildField(const FieldRecipe& recipe) {
                       std::to_string(kMaxResolution) + ")");
   }
   if (r == 1 && recipe.source != Source::Uniform) {
-    throw RecipeError("a field that varies in space needs --field-resolution 2 or more (1 is one uniform force)");
+    throw RecipeError(
+        "a field that varies in space needs --field-resolution 2 or more (1 is one uniform force)");
   }
   switch (recipe.source) {
     case Source::Uniform:
@@ -208,7 +213,8 @@ State buildState(const StateRecipe& recipe) {
     centre = 0.5 * Vec3{recipe.cubeSize, recipe.cubeSize, recipe.cubeSize};
   }
   const Vec3 target = recipe.center.value_or(centre);
-  const bool turned = recipe.rotateDegrees.x != 0 || recipe.rotateDegrees.y != 0 || recipe.rotateDegrees.z != 0;
+  const bool turned =
+      recipe.rotateDegrees.x != 0 || recipe.rotateDegrees.y != 0 || recipe.rotateDegrees.z != 0;
   for (int q = 0; q < kNumPoints; ++q) {
     Vec3 r = load(s.p(), q) - centre;
     if (recipe.insideOut) r = -r;
@@ -226,7 +232,8 @@ State buildState(const StateRecipe& recipe) {
   if (!isZero(recipe.skewCorner)) store(s.p(), corner, load(s.p(), corner) + recipe.skewCorner);
   for (int q = 0; q < kNumPoints; ++q) {
     if (recipe.velocity) store(s.v(), q, *recipe.velocity);
-    if (!isZero(recipe.spin)) store(s.v(), q, load(s.v(), q) + cross(recipe.spin, load(s.p(), q) - target));
+    if (!isZero(recipe.spin))
+      store(s.v(), q, load(s.v(), q) + cross(recipe.spin, load(s.p(), q) - target));
   }
   return s;
 }

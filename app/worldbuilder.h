@@ -17,9 +17,9 @@ namespace jello {
 struct FieldRecipe {
   enum class Source { None, Uniform, Swirl, Radial, Expression, Given };
   Source source = Source::None;
-  int resolution = 30;  // the course's
-  Vec3 uniform;         // N, Uniform
-  double strength = 0;  // N/m: Swirl F = s (-y, x, 0), Radial F = s (x, y, z)
+  int resolution = 30;     // the course's
+  Vec3 uniform;            // N, Uniform
+  double strength = 0;     // N/m: Swirl F = s (-y, x, 0), Radial F = s (x, y, z)
   std::string expression;  // Expression: "fx; fy; fz" in x, y, z (muparser syntax)
   ForceField given;        // Given: this field as it is (e.g. copied from another world)
 };

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "world.h"
 
 namespace {
@@ -19,7 +19,8 @@ const char* const kWorlds[] = {"rotate", "jello", "moveLeft", "skewedCorner", "g
 const WorldFile& courseWorld(int index) {
   static std::vector<WorldFile> files = [] {
     std::vector<WorldFile> out;
-    for (const char* name : kWorlds) out.push_back(readWorldFile(std::string(JELLO_WORLD_DIR) + "/" + name + ".w"));
+    for (const char* name : kWorlds)
+      out.push_back(readWorldFile(std::string(JELLO_WORLD_DIR) + "/" + name + ".w"));
     return out;
   }();
   return files[index];
@@ -33,7 +34,8 @@ void Forces(benchmark::State& bench, int world, KernelChoice choice) {
     computeForces(model, f.state.p(), f.state.v(), force.data());
     benchmark::DoNotOptimize(force.data());
   }
-  bench.counters["evaluations/s"] = benchmark::Counter(static_cast<double>(bench.iterations()), benchmark::Counter::kIsRate);
+  bench.counters["evaluations/s"] =
+      benchmark::Counter(static_cast<double>(bench.iterations()), benchmark::Counter::kIsRate);
 }
 
 void Step(benchmark::State& bench, int world, KernelChoice choice, Integrator integrator) {
@@ -56,18 +58,20 @@ void WorldLoading(benchmark::State& bench) {
 
 void registerAll() {
   for (int w = 0; w < static_cast<int>(std::size(kWorlds)); ++w) {
-    for (auto [choice, name] : {std::pair{KernelChoice::Specialised, "specialised"}, {KernelChoice::General, "general"}}) {
-      benchmark::RegisterBenchmark((std::string("Forces/") + kWorlds[w] + "/" + name).c_str(), Forces, w, choice)
+    for (auto [choice, name] : {std::pair{KernelChoice::Specialised, "specialised"},
+                                {KernelChoice::General, "general"}}) {
+      benchmark::RegisterBenchmark((std::string("Forces/") + kWorlds[w] + "/" + name).c_str(),
+                                   Forces, w, choice)
           ->Unit(benchmark::kMicrosecond);
-      benchmark::RegisterBenchmark((std::string("StepRK4/") + kWorlds[w] + "/" + name).c_str(), Step, w, choice,
-                                   Integrator::RK4)
+      benchmark::RegisterBenchmark((std::string("StepRK4/") + kWorlds[w] + "/" + name).c_str(),
+                                   Step, w, choice, Integrator::RK4)
           ->Unit(benchmark::kMicrosecond);
     }
   }
-  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::Symplectic, Integrator::Verlet,
-                                Integrator::RK45}) {
-    benchmark::RegisterBenchmark((std::string("Step/rotate/") + integratorName(integrator)).c_str(), Step, 0,
-                                 KernelChoice::Specialised, integrator)
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::Symplectic,
+                                Integrator::Verlet, Integrator::RK45}) {
+    benchmark::RegisterBenchmark((std::string("Step/rotate/") + integratorName(integrator)).c_str(),
+                                 Step, 0, KernelChoice::Specialised, integrator)
         ->Unit(benchmark::kMicrosecond);
   }
   benchmark::RegisterBenchmark("WorldLoading/rotate", WorldLoading)->Unit(benchmark::kMillisecond);

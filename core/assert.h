@@ -10,12 +10,12 @@
 #include <cstdlib>
 
 #if !defined(NDEBUG) || defined(JELLO_ASSERTS)
-#define JELLO_ASSERT(condition)                                                                   \
-  do {                                                                                            \
-    if (!(condition)) {                                                                           \
-      std::fprintf(stderr, "%s:%d: invariant broken: %s\n", __FILE__, __LINE__, #condition);      \
-      std::abort();                                                                               \
-    }                                                                                             \
+#define JELLO_ASSERT(condition)                                                              \
+  do {                                                                                       \
+    if (!(condition)) {                                                                      \
+      std::fprintf(stderr, "%s:%d: invariant broken: %s\n", __FILE__, __LINE__, #condition); \
+      std::abort();                                                                          \
+    }                                                                                        \
   } while (0)
 #else
 #define JELLO_ASSERT(condition) static_cast<void>(sizeof(condition))

@@ -10,24 +10,25 @@
 
 namespace jello {
 
-enum class Status {
+// How a command ended (not named Status: X11 defines that as a macro).
+enum class Ending {
   Ok,        // done as asked
   Diverged,  // the simulation the command needed diverged: exit status 1
   Failed,    // bad input or usage, or an output that cannot be written: exit status 2
 };
 
 struct Outcome {
-  Status status = Status::Ok;
+  Ending status = Ending::Ok;
   // The one line main prints on stderr, without the program's name: why the command failed,
-  // or, with Status::Ok, what it left undone (a picture not drawn without gnuplot). "" when
+  // or, with Ending::Ok, what it left undone (a picture not drawn without gnuplot). "" when
   // there is nothing to say (success; a window that showed its message as it happened).
   std::string message;
 
-  bool ok() const { return status == Status::Ok; }
+  bool ok() const { return status == Ending::Ok; }
 };
 
-inline Outcome succeeded(std::string note = {}) { return {Status::Ok, std::move(note)}; }
-inline Outcome failed(std::string message) { return {Status::Failed, std::move(message)}; }
-inline Outcome diverged(std::string message) { return {Status::Diverged, std::move(message)}; }
+inline Outcome succeeded(std::string note = {}) { return {Ending::Ok, std::move(note)}; }
+inline Outcome failed(std::string message) { return {Ending::Failed, std::move(message)}; }
+inline Outcome diverged(std::string message) { return {Ending::Diverged, std::move(message)}; }
 
 }  // namespace jello

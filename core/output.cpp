@@ -79,9 +79,11 @@ WriteCheck whyNotReplaceable(const std::string& path, Existing existing, struct 
   }
   if (S_ISLNK(found->st_mode)) return {"is a symbolic link; name the file itself"};
   if (S_ISDIR(found->st_mode)) return {"is a directory"};
-  if (!S_ISREG(found->st_mode)) return {"is not a regular file (a device, FIFO or socket); it is never replaced"};
+  if (!S_ISREG(found->st_mode))
+    return {"is not a regular file (a device, FIFO or socket); it is never replaced"};
   if (existing == Existing::Refuse) return {"already exists", true};
-  if ((found->st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0) return {"is read-only; it is not replaced"};
+  if ((found->st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0)
+    return {"is read-only; it is not replaced"};
   return {};
 }
 
@@ -95,21 +97,26 @@ void nameTemporary(const std::string& temporary, const std::string& path, Existi
   struct stat found {};
   std::string why = whyNotReplaceable(path, existing, &found).why;
   if (!why.empty()) throw OutputError(path + ": " + why);
-  if (found.st_mode != 0) ::chmod(temporary.c_str(), found.st_mode & 07777);  // keep the user's mode
+  if (found.st_mode != 0)
+    ::chmod(temporary.c_str(), found.st_mode & 07777);  // keep the user's mode
   if (existing == Existing::Replace) {
-    if (::rename(temporary.c_str(), path.c_str()) != 0) throw OutputError(withError(path, "cannot write", errno));
+    if (::rename(temporary.c_str(), path.c_str()) != 0)
+      throw OutputError(withError(path, "cannot write", errno));
     return;
   }
   if (::link(temporary.c_str(), path.c_str()) != 0) {
     int error = errno;
-    throw OutputError(error == EEXIST ? path + ": already exists" : withError(path, "cannot write", error));
+    throw OutputError(error == EEXIST ? path + ": already exists"
+                                      : withError(path, "cannot write", error));
   }
   ::unlink(temporary.c_str());
 }
 
 }  // namespace
 
-std::string whyNotWritable(const std::string& path, Existing existing) { return checkWritable(path, existing).why; }
+std::string whyNotWritable(const std::string& path, Existing existing) {
+  return checkWritable(path, existing).why;
+}
 
 WriteCheck checkWritable(const std::string& path, Existing existing) {
   if (path.empty()) return {"an empty name"};
@@ -117,18 +124,22 @@ WriteCheck checkWritable(const std::string& path, Existing existing) {
   WriteCheck replaceable = whyNotReplaceable(path, existing, &found);
   if (!replaceable.writable()) return replaceable;
   const std::size_t slash = path.find_last_of('/');
-  const std::string dir = folderOf(path), name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string dir = folderOf(path),
+                    name = slash == std::string::npos ? path : path.substr(slash + 1);
   if (name.empty()) return {"names a folder, not a file"};
   struct stat info {};
-  if (::stat(dir.c_str(), &info) != 0) return {"cannot write into " + dir + ": " + std::strerror(errno)};
+  if (::stat(dir.c_str(), &info) != 0)
+    return {"cannot write into " + dir + ": " + std::strerror(errno)};
   if (!S_ISDIR(info.st_mode)) return {"cannot write into " + dir + ": it is not a folder"};
-  if (::access(dir.c_str(), W_OK) != 0) return {"cannot write into " + dir + ": " + std::strerror(errno)};
+  if (::access(dir.c_str(), W_OK) != 0)
+    return {"cannot write into " + dir + ": " + std::strerror(errno)};
   long longest = ::pathconf(dir.c_str(), _PC_NAME_MAX);
   if (longest <= 0) longest = NAME_MAX;
   if (name.size() > static_cast<std::size_t>(longest))
-    return {"the name is " + std::to_string(name.size()) + " bytes long, more than the " + std::to_string(longest) +
-            " its folder's file system allows"};
-  if (path.size() >= PATH_MAX) return {"the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes"};
+    return {"the name is " + std::to_string(name.size()) + " bytes long, more than the " +
+            std::to_string(longest) + " its folder's file system allows"};
+  if (path.size() >= PATH_MAX)
+    return {"the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes"};
   return {};
 }
 
@@ -149,7 +160,8 @@ void discardTemporary(const std::string& temporary) {
 void publishTemporary(const std::string& temporary, const std::string& path, Existing existing) {
   struct stat info {};
   try {
-    if (::stat(temporary.c_str(), &info) != 0 || info.st_size == 0) throw OutputError(path + ": was not written (empty)");
+    if (::stat(temporary.c_str(), &info) != 0 || info.st_size == 0)
+      throw OutputError(path + ": was not written (empty)");
     ::chmod(temporary.c_str(), defaultMode());
     nameTemporary(temporary, path, existing);
   } catch (...) {
@@ -159,7 +171,8 @@ void publishTemporary(const std::string& temporary, const std::string& path, Exi
   forgetTemporary(temporary);
 }
 
-void writeFileWhole(const std::string& path, const std::function<void(std::FILE*)>& fill, Existing existing) {
+void writeFileWhole(const std::string& path, const std::function<void(std::FILE*)>& fill,
+                    Existing existing) {
   std::string why = whyNotWritable(path, existing);
   if (!why.empty()) throw OutputError(path + ": " + why);
   std::string temporary = temporaryTemplate(folderOf(path), "");
@@ -251,15 +264,18 @@ std::string makeNewFolder(const std::string& parent, const std::string& stem) {
     if (::mkdir(candidate.c_str(), 0777) == 0) return candidate;
     if (errno != EEXIST) throw OutputError(withError(candidate, "cannot make the folder", errno));
   }
-  throw OutputError(parent + ": holds " + std::to_string(kMostFolders) + " folders of " + stem + " already");
+  throw OutputError(parent + ": holds " + std::to_string(kMostFolders) + " folders of " + stem +
+                    " already");
 }
 
-FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names, Existing existing) {
+FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names,
+                         Existing existing) {
   FolderClaim claim = claimFolder(dir);
   for (const std::string& name : names) {
     const std::string path = dir + "/" + name;
     const WriteCheck check = checkWritable(path, existing);
-    if (check.alreadyExists) throw OutputError(path + ": " + check.why + "; choose another folder, or add --overwrite");
+    if (check.alreadyExists)
+      throw OutputError(path + ": " + check.why + "; choose another folder, or add --overwrite");
     if (!check.writable()) throw OutputError(path + ": " + check.why);
   }
   return claim;
@@ -275,9 +291,10 @@ void installSignalCleanup() {
 }
 
 bool sameFile(const std::string& a, const std::string& b) {
-  struct stat first {}, second {};
-  return ::stat(a.c_str(), &first) == 0 && ::stat(b.c_str(), &second) == 0 && first.st_dev == second.st_dev &&
-         first.st_ino == second.st_ino;
+  struct stat first {
+  }, second{};
+  return ::stat(a.c_str(), &first) == 0 && ::stat(b.c_str(), &second) == 0 &&
+         first.st_dev == second.st_dev && first.st_ino == second.st_ino;
 }
 
 namespace {
@@ -285,18 +302,24 @@ namespace {
 std::size_t utf8Length(std::string_view s, std::size_t i) {
   const auto byte = [&s](std::size_t k) { return static_cast<unsigned char>(s[k]); };
   const unsigned char lead = byte(i);
-  std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+  std::size_t length = lead < 0x80           ? 1
+                       : (lead >> 5) == 0x6  ? 2
+                       : (lead >> 4) == 0xE  ? 3
+                       : (lead >> 3) == 0x1E ? 4
+                                             : 0;
   if (length == 0 || i + length > s.size()) return 0;
   for (std::size_t k = 1; k < length; ++k)
     if ((byte(i + k) >> 6) != 0x2) return 0;
   if (length == 2 && lead < 0xC2) return 0;  // overlong
   if (length == 3) {
     const unsigned char second = byte(i + 1);
-    if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second >= 0xA0)) return 0;  // overlong, surrogate
+    if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second >= 0xA0))
+      return 0;  // overlong, surrogate
   }
   if (length == 4) {
     const unsigned char second = byte(i + 1);
-    if ((lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second >= 0x90) || lead > 0xF4) return 0;
+    if ((lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second >= 0x90) || lead > 0xF4)
+      return 0;
   }
   return length;
 }

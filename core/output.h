@@ -51,7 +51,8 @@ std::string whyNotWritable(const std::string& path, Existing existing);
 void writeFileWhole(const std::string& path, std::string_view bytes, Existing existing);
 // The same, for output made piece by piece: `fill` writes into the open temporary file and
 // throws (any std::exception, whose what() becomes the message) when it cannot.
-void writeFileWhole(const std::string& path, const std::function<void(std::FILE*)>& fill, Existing existing);
+void writeFileWhole(const std::string& path, const std::function<void(std::FILE*)>& fill,
+                    Existing existing);
 
 // A temporary file name in `dir`, made (empty, mode 0600) and registered for removal on a
 // signal, for output a child program writes (gnuplot's PNG). `suffix` ends the name (".png").
@@ -89,7 +90,8 @@ std::string makeNewFolder(const std::string& parent, const std::string& stem);
 // Claims `dir` for a run that will write the files `names` into it, and checks each of them
 // now, before the work (whyNotWritable). Throws OutputError naming the first that cannot be
 // written, e.g. "rep/report.gp: already exists; choose another folder, or add --overwrite".
-FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names, Existing existing);
+FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names,
+                         Existing existing);
 
 // Removes the temporary files of writes under way when SIGINT, SIGTERM or SIGHUP arrives, then
 // lets the signal end the program as it would have. Called once by each main.

@@ -44,7 +44,8 @@ int runGnuplot(const std::string& dir, const std::string& script, const std::str
 // complete when it starts with its signature and ends with its IEND chunk.
 bool isCompletePng(const std::string& path) {
   static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  static const unsigned char kEnd[8] = {'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};  // type and CRC
+  static const unsigned char kEnd[8] = {'I',  'E',  'N',  'D',
+                                        0xAE, 0x42, 0x60, 0x82};  // type and CRC
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return false;
   unsigned char head[8] = {}, tail[8] = {};
@@ -57,8 +58,8 @@ bool isCompletePng(const std::string& path) {
 
 }  // namespace
 
-std::string drawWithGnuplot(const std::string& dir, const std::string& script, const std::string& png,
-                            Existing existing) {
+std::string drawWithGnuplot(const std::string& dir, const std::string& script,
+                            const std::string& png, Existing existing) {
   std::string temporary;
   try {
     temporary = makeTemporary(dir, ".png");
@@ -69,7 +70,9 @@ std::string drawWithGnuplot(const std::string& dir, const std::string& script, c
   const int status = runGnuplot(dir, script, name);
   if (status != 0 || !isCompletePng(temporary)) {
     discardTemporary(temporary);
-    return status == kExecFailed ? kGnuplotMissing : status != 0 ? "gnuplot failed" : "gnuplot could not write it whole";
+    return status == kExecFailed ? kGnuplotMissing
+           : status != 0         ? "gnuplot failed"
+                                 : "gnuplot could not write it whole";
   }
   try {
     publishTemporary(temporary, dir + "/" + png, existing);

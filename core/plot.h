@@ -22,8 +22,8 @@ inline constexpr const char* kGnuplotMissing = "gnuplot is not installed";
 // output.h: gnuplot draws into a temporary file, which takes the name `png` only when gnuplot
 // succeeded and the file is not empty (gnuplot exits 0 on some write errors). Returns "" when
 // the picture was drawn, otherwise why not, in a few words.
-std::string drawWithGnuplot(const std::string& dir, const std::string& script, const std::string& png,
-                            Existing existing);
+std::string drawWithGnuplot(const std::string& dir, const std::string& script,
+                            const std::string& png, Existing existing);
 
 // `text` as a gnuplot single-quoted string literal: inside single quotes gnuplot expands
 // nothing (no backquotes, no macros) and '' is a quote; control characters and bytes that are

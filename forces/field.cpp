@@ -67,7 +67,8 @@ inline NodeForce<kStride> lerp(const NodeForce<kStride>& a, const NodeForce<kStr
 template <int kStride>
 inline Vec3 trilinear(const double* f, int r, Vec3 p) {
   const double perMetre = cellsPerMetre(r), lastCell = r - 2;
-  const CellCoordinate x = cellCoordinate(p.x, perMetre, lastCell), y = cellCoordinate(p.y, perMetre, lastCell),
+  const CellCoordinate x = cellCoordinate(p.x, perMetre, lastCell),
+                       y = cellCoordinate(p.y, perMetre, lastCell),
                        z = cellCoordinate(p.z, perMetre, lastCell);
   const double* base = f + kStride * ((x.cell * r + y.cell) * r + z.cell);
   auto node = [base, r](int di, int dj, int dk) {
@@ -77,8 +78,10 @@ inline Vec3 trilinear(const double* f, int r, Vec3 p) {
     return out;
   };
   using N = NodeForce<kStride>;
-  const N c00 = lerp(node(0, 0, 0), node(0, 0, 1), z.t), c01 = lerp(node(0, 1, 0), node(0, 1, 1), z.t);
-  const N c10 = lerp(node(1, 0, 0), node(1, 0, 1), z.t), c11 = lerp(node(1, 1, 0), node(1, 1, 1), z.t);
+  const N c00 = lerp(node(0, 0, 0), node(0, 0, 1), z.t),
+          c01 = lerp(node(0, 1, 0), node(0, 1, 1), z.t);
+  const N c10 = lerp(node(1, 0, 0), node(1, 0, 1), z.t),
+          c11 = lerp(node(1, 1, 0), node(1, 1, 1), z.t);
   const N value = lerp(lerp(c00, c01, y.t), lerp(c10, c11, y.t), x.t);
   return {value.c[0], value.c[1], value.c[2]};
 }
@@ -94,7 +97,8 @@ Block3 gradientAt(const double* f, int r, Vec3 p) {
   // Outside the box, or not a number (which fails every comparison): no field, no gradient.
   if (r < 2 || !insideBox(p)) return J;
   const double perMetre = cellsPerMetre(r);  // dt/dx of the cell coordinate
-  const CellCoordinate c[3] = {cellCoordinate(p.x, perMetre, r - 2), cellCoordinate(p.y, perMetre, r - 2),
+  const CellCoordinate c[3] = {cellCoordinate(p.x, perMetre, r - 2),
+                               cellCoordinate(p.y, perMetre, r - 2),
                                cellCoordinate(p.z, perMetre, r - 2)};
   for (int corner = 0; corner < 8; ++corner) {
     const int bit[3] = {(corner >> 2) & 1, (corner >> 1) & 1, corner & 1};
@@ -104,7 +108,8 @@ Block3 gradientAt(const double* f, int r, Vec3 p) {
       slope[a] = bit[a] ? perMetre : -perMetre;
     }
     std::size_t node =
-        (static_cast<std::size_t>(c[0].cell + bit[0]) * r + (c[1].cell + bit[1])) * r + (c[2].cell + bit[2]);
+        (static_cast<std::size_t>(c[0].cell + bit[0]) * r + (c[1].cell + bit[1])) * r +
+        (c[2].cell + bit[2]);
     const Vec3 force = FieldView(f, r).node(node);
     const double fv[3] = {force.x, force.y, force.z};
     const double dw[3] = {slope[0] * factor[1] * factor[2], factor[0] * slope[1] * factor[2],
@@ -121,22 +126,27 @@ Vec3 fieldForce(const ForceField& field, Vec3 p) {
   return referenceForce(field.forces.data(), field.resolution, p);
 }
 
-Block3 fieldJacobian(const ForceField& field, Vec3 p) { return gradientAt(field.forces.data(), field.resolution, p); }
+Block3 fieldJacobian(const ForceField& field, Vec3 p) {
+  return gradientAt(field.forces.data(), field.resolution, p);
+}
 
 FieldTerm::FieldTerm(const ForceField& field, Method method) : field_(field), method_(method) {
   const std::size_t nodes = field.forces.size() / 3;
-  for (std::size_t n = 0; n < nodes; ++n) largestNode_ = std::max(largestNode_, length(field.node(n)));
+  for (std::size_t n = 0; n < nodes; ++n)
+    largestNode_ = std::max(largestNode_, length(field.node(n)));
   if (method == Method::Uniform) uniform_ = field.node(0);
   if (method == Method::Padded) {
     padded_.assign(kPaddedNode * nodes, 0.0);
     for (std::size_t n = 0; n < nodes; ++n)
-      for (int axis = 0; axis < 3; ++axis) padded_[kPaddedNode * n + axis] = field.forces[3 * n + axis];
+      for (int axis = 0; axis < 3; ++axis)
+        padded_[kPaddedNode * n + axis] = field.forces[3 * n + axis];
   }
 }
 
 bool FieldTerm::mayReach(const Bounds& box) const {
-  return box.lower.x <= kBoxHalfSize && box.upper.x >= -kBoxHalfSize && box.lower.y <= kBoxHalfSize &&
-         box.upper.y >= -kBoxHalfSize && box.lower.z <= kBoxHalfSize && box.upper.z >= -kBoxHalfSize;
+  return box.lower.x <= kBoxHalfSize && box.upper.x >= -kBoxHalfSize &&
+         box.lower.y <= kBoxHalfSize && box.upper.y >= -kBoxHalfSize &&
+         box.lower.z <= kBoxHalfSize && box.upper.z >= -kBoxHalfSize;
 }
 
 namespace {
@@ -156,25 +166,30 @@ void FieldTerm::addForces(const double* p, const double*, const Bounds* box, dou
     case Method::Padded:
       if (inside) {  // the common case, without the per-point test
         for (int q = 0; q < kNumPoints; ++q)
-          store(force, q, load(force, q) + trilinear<kPaddedNode>(padded_.data(), field_.resolution, load(p, q)));
+          store(force, q,
+                load(force, q) +
+                    trilinear<kPaddedNode>(padded_.data(), field_.resolution, load(p, q)));
         return;
       }
       for (int q = 0; q < kNumPoints; ++q) {
-        const Vec3 pq = load(p, q), f = trilinear<kPaddedNode>(padded_.data(), field_.resolution, pq);
+        const Vec3 pq = load(p, q),
+                   f = trilinear<kPaddedNode>(padded_.data(), field_.resolution, pq);
         const bool in = insideBox(pq);
         store(force, q, load(force, q) + Vec3{in ? f.x : 0.0, in ? f.y : 0.0, in ? f.z : 0.0});
       }
       return;
     case Method::Reference:
       for (int q = 0; q < kNumPoints; ++q)
-        store(force, q, load(force, q) + referenceForce(field_.forces, field_.resolution, load(p, q)));
+        store(force, q,
+              load(force, q) + referenceForce(field_.forces, field_.resolution, load(p, q)));
       return;
   }
 }
 
 void FieldTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   const Block3 none;
-  for (int q = 0; q < kNumPoints; ++q) sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q)), none);
+  for (int q = 0; q < kNumPoints; ++q)
+    sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q)), none);
 }
 
 void FieldTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {
@@ -207,7 +222,8 @@ std::vector<TermLine> FieldTerm::describe(const double*) const {
     case FieldKind::General:
       break;
   }
-  if (shape.kind != FieldKind::Zero) text += textf("; |F| from %.6g to %.6g N", shape.smallest, shape.largest);
+  if (shape.kind != FieldKind::Zero)
+    text += textf("; |F| from %.6g to %.6g N", shape.smallest, shape.largest);
   return {{"field", text}};
 }
 
@@ -258,7 +274,8 @@ bool fitsPattern(FieldView field, Vec3 (*pattern)(Vec3), double* strength) {
   for (std::size_t node = 0; node < nodes; ++node) {
     Vec3 g = pattern(nodePosition(node, r)), f = field.node(node);
     Vec3 misfit = f - *strength * g;
-    if (std::max({std::fabs(misfit.x), std::fabs(misfit.y), std::fabs(misfit.z)}) > kFileRounding) return false;
+    if (std::max({std::fabs(misfit.x), std::fabs(misfit.y), std::fabs(misfit.z)}) > kFileRounding)
+      return false;
   }
   return true;
 }
@@ -286,7 +303,8 @@ FieldShape classifyField(FieldView field) {
     return shape;
   }
   if (field.resolution >= 2) {
-    for (auto [pattern, kind] : {std::pair{&swirl, FieldKind::Swirl}, std::pair{&radial, FieldKind::Radial}})
+    for (auto [pattern, kind] :
+         {std::pair{&swirl, FieldKind::Swirl}, std::pair{&radial, FieldKind::Radial}})
       if (fitsPattern(field, pattern, &shape.strength)) {
         shape.kind = kind;
         return shape;

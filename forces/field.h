@@ -18,8 +18,11 @@ struct FieldView {
   int resolution = 0;
   FieldView() = default;
   FieldView(const double* f, int r) : forces(f), resolution(r) {}
-  FieldView(const ForceField& field) : forces(field.forces.data()), resolution(field.resolution) {}  // NOLINT: a view
-  std::size_t nodes() const { return static_cast<std::size_t>(resolution) * resolution * resolution; }
+  FieldView(const ForceField& field)
+      : forces(field.forces.data()), resolution(field.resolution) {}  // NOLINT: a view
+  std::size_t nodes() const {
+    return static_cast<std::size_t>(resolution) * resolution * resolution;
+  }
   Vec3 node(std::size_t n) const { return {forces[3 * n], forces[3 * n + 1], forces[3 * n + 2]}; }
 };
 

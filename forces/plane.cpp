@@ -12,8 +12,8 @@ Plane normalisedPlane(const Plane& plane) {
   if (largest == 0 || !std::isfinite(largest)) return plane;  // refused by the reader already
   int exponent;
   std::frexp(largest, &exponent);  // largest = m 2^exponent, m in [0.5, 1)
-  return {std::ldexp(plane.a, -exponent), std::ldexp(plane.b, -exponent), std::ldexp(plane.c, -exponent),
-          std::ldexp(plane.d, -exponent)};
+  return {std::ldexp(plane.a, -exponent), std::ldexp(plane.b, -exponent),
+          std::ldexp(plane.c, -exponent), std::ldexp(plane.d, -exponent)};
 }
 
 std::string planeProblem(const Plane& plane) {
@@ -46,7 +46,8 @@ std::string planeEquation(const Plane& p) {
   return out + " = 0";
 }
 
-void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv) {
+void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp,
+                   Block3* dFdv) {
   *dFdp = Block3{};
   *dFdv = Block3{};
   if (!(planeValue(plane, p) * side < 0)) return;
@@ -68,7 +69,8 @@ bool mayCrossPlane(const Plane& plane, double side, const Bounds& b) {
   double smallest = lowest(plane.a, b.lower.x, b.upper.x) + lowest(plane.b, b.lower.y, b.upper.y) +
                     lowest(plane.c, b.lower.z, b.upper.z) + side * plane.d;
   auto largest = [](double lo, double hi) { return std::max(std::fabs(lo), std::fabs(hi)); };
-  double scale = std::fabs(plane.a) * largest(b.lower.x, b.upper.x) + std::fabs(plane.b) * largest(b.lower.y, b.upper.y) +
+  double scale = std::fabs(plane.a) * largest(b.lower.x, b.upper.x) +
+                 std::fabs(plane.b) * largest(b.lower.y, b.upper.y) +
                  std::fabs(plane.c) * largest(b.lower.z, b.upper.z) + std::fabs(plane.d);
   constexpr double kRelativeMargin = 1e-12;
   return !(smallest > kRelativeMargin * scale);
@@ -110,8 +112,8 @@ void PlaneTerm::summarise(std::vector<std::string>* kept, std::vector<std::strin
 }
 
 std::vector<TermLine> PlaneTerm::describe(const double* p) const {
-  std::string text =
-      planeEquation(given_) + textf("; the cube starts on its %s side", side_ > 0 ? "positive" : "negative");
+  std::string text = planeEquation(given_) +
+                     textf("; the cube starts on its %s side", side_ > 0 ? "positive" : "negative");
   if (int across = pointsAcross(p)) text += textf(", %d points across it", across);
   return {{"plane", text}};
 }

@@ -25,7 +25,9 @@ Plane normalisedPlane(const Plane& plane);
 // is not finite (the plane lies further from the origin than about 1e308 m).
 std::string planeProblem(const Plane& plane);
 // a*x + b*y + c*z + d at p: the one place it is computed (positive on the normal's side).
-inline double planeValue(const Plane& plane, Vec3 p) { return dot(Vec3{plane.a, plane.b, plane.c}, p) + plane.d; }
+inline double planeValue(const Plane& plane, Vec3 p) {
+  return dot(Vec3{plane.a, plane.b, plane.c}, p) + plane.d;
+}
 // The allowed side of the plane for a cube at positions p: the sign of the plane's value at
 // their centroid, +1 when the centroid is on the plane.
 double allowedSide(const Plane& plane, const double* p);
@@ -44,7 +46,8 @@ inline Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k
   return {across ? f.x : 0.0, across ? f.y : 0.0, across ? f.z : 0.0};
 }
 // Derivatives of planeForce: -k n n^T / |n|^2 and -d n n^T / |n|^2 when the point is across.
-void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv);
+void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp,
+                   Block3* dFdv);
 // Whether some point in `box` might be strictly across the plane: the smallest value of
 // side * (a x + b y + c z + d) over the box, at one of its corners, is not clearly positive.
 bool mayCrossPlane(const Plane& plane, double side, const Bounds& box);

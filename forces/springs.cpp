@@ -45,8 +45,10 @@ std::vector<SpringGroup> buildSpringGroups() {
       for (int j = 0; j < kLatticeSize; ++j) {
         if (!inside(i + o.di) || !inside(j + o.dj)) continue;
         const int rowBegin = pointIndex(i, j, 0), rowEnd = rowBegin + kLatticeSize;
-        if (!g.spans.empty() && g.spans.back().end == rowBegin) g.spans.back().end = rowEnd;
-        else g.spans.push_back({rowBegin, rowEnd});
+        if (!g.spans.empty() && g.spans.back().end == rowBegin)
+          g.spans.back().end = rowEnd;
+        else
+          g.spans.push_back({rowBegin, rowEnd});
         for (int k = 0; k < kLatticeSize; ++k)
           if (inside(k + o.dk)) g.mask[pointIndex(i, j, k)] = 1.0;
       }
@@ -71,7 +73,8 @@ std::vector<Spring> springsOf(const std::vector<SpringGroup>& groups) {
 
 std::vector<Spring> buildSprings() { return springsOf(buildSpringGroups()); }
 
-void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL, Block3* dFdw) {
+void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
+                    Block3* dFdw) {
   double len;
   const Vec3 unit = direction(L, &len);
   *dFdL = Block3{};
@@ -122,7 +125,8 @@ void addSpringGroup(const SpringGroup& g, double k, double d, const double* __re
       double len;
       Vec3 u = direction({px[q] - px[q + b], py[q] - py[q + b], pz[q] - pz[q + b]}, &len);
       double tension = springTension(len, k, g.rest);
-      if constexpr (kDampers) tension += damperTension({vx[q] - vx[q + b], vy[q] - vy[q + b], vz[q] - vz[q + b]}, u, d);
+      if constexpr (kDampers)
+        tension += damperTension({vx[q] - vx[q + b], vy[q] - vy[q + b], vz[q] - vz[q + b]}, u, d);
       Vec3 fq = (mask[q] * tension) * u;
       buffer[0][kMaxDelta + q] = fq.x;
       buffer[1][kMaxDelta + q] = fq.y;
@@ -151,15 +155,18 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
 
 void SpringTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
   for (const SpringGroup& g : groups_) {
-    if (dampers_) addSpringGroup<true>(g, k_, d_, p, v, force);
-    else addSpringGroup<false>(g, k_, d_, p, v, force);
+    if (dampers_)
+      addSpringGroup<true>(g, k_, d_, p, v, force);
+    else
+      addSpringGroup<false>(g, k_, d_, p, v, force);
   }
 }
 
 void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
   Block3 dFdL, dFdw;
   for (const Spring& s : springs_) {
-    springJacobian(load(p, s.a) - load(p, s.b), load(v, s.a) - load(v, s.b), k_, d_, s.rest, &dFdL, &dFdw);
+    springJacobian(load(p, s.a) - load(p, s.b), load(v, s.a) - load(v, s.b), k_, d_, s.rest, &dFdL,
+                   &dFdw);
     sink->addPair(dFdL, dFdw);
   }
 }
@@ -171,15 +178,19 @@ void SpringTerm::addEnergy(const double* p, double* energy) const {
   }
 }
 
-void SpringTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>* leftOut) const {
+void SpringTerm::summarise(std::vector<std::string>* kept,
+                           std::vector<std::string>* leftOut) const {
   kept->push_back("springs");
-  if (dampers_) kept->push_back("dampers");
-  else leftOut->push_back("dampers (zero damping)");
+  if (dampers_)
+    kept->push_back("dampers");
+  else
+    leftOut->push_back("dampers (zero damping)");
 }
 
 std::vector<TermLine> SpringTerm::describe(const double*) const {
-  return {{"springs", textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)", k_, d_,
-                            springs_.size())}};
+  return {{"springs",
+           textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)",
+                 k_, d_, springs_.size())}};
 }
 
 }  // namespace jello

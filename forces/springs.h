@@ -61,7 +61,8 @@ inline Vec3 springForce(Vec3 L, Vec3 relVel, double k, double d, double rest) {
 // Derivatives of springForce with respect to L and to w = relVel. With the geometric term:
 // dF/dL = -k [u u^T + (1 - rest/|L|) P] - (d/|L|) [u (P w)^T + (w.u) P], where P = I - u u^T;
 // dF/dw = -d u u^T. Zero at |L| = 0, where the force is zero.
-void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL, Block3* dFdw);
+void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
+                    Block3* dFdw);
 
 // All the springs of the lattice, with one stiffness and one damping. Without dampers
 // (d = 0, and not the reference) the kernel leaves their term out.

@@ -69,7 +69,8 @@ class ForceTerm {
   virtual bool mayReach(const Bounds& box) const = 0;
   // Adds the term's force on every point to `force`. `box` bounds the positions, so that the
   // term can skip its parts out of reach; null makes it compute every part (the reference).
-  virtual void addForces(const double* p, const double* v, const Bounds* box, double* force) const = 0;
+  virtual void addForces(const double* p, const double* v, const Bounds* box,
+                         double* force) const = 0;
   // Adds the term's Jacobian blocks at (p, v).
   virtual void addJacobian(const double* p, const double* v, JacobianSink* sink) const = 0;
   // Adds the energy the term stores at positions p, J (0 for a term that stores none).
@@ -80,7 +81,8 @@ class ForceTerm {
 
   // Its parts in the one-line scene summary: what it computes ("springs", "plane (when the
   // bounding box reaches it)") and what it leaves out, with why ("dampers (zero damping)").
-  virtual void summarise(std::vector<std::string>* kept, std::vector<std::string>* leftOut) const = 0;
+  virtual void summarise(std::vector<std::string>* kept,
+                         std::vector<std::string>* leftOut) const = 0;
   // Its lines in `createWorld --describe`, for a cube at positions p.
   virtual std::vector<TermLine> describe(const double* p) const = 0;
 };

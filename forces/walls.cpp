@@ -44,7 +44,8 @@ bool WallsTerm::mayReach(const Bounds& box) const {
 }
 
 // A wall pair out of reach adds nothing and is left out; the loop over the points vectorises.
-void WallsTerm::addForces(const double* p, const double* v, const Bounds* box, double* force) const {
+void WallsTerm::addForces(const double* p, const double* v, const Bounds* box,
+                          double* force) const {
   bool reached[3];
   wallsInReach(box, reached);
   for (int q = 0; q < kNumPoints; ++q) {
@@ -78,7 +79,8 @@ void WallsTerm::summarise(std::vector<std::string>* kept, std::vector<std::strin
 std::vector<TermLine> WallsTerm::describe(const double* p) const {
   int outside = 0;
   for (int q = 0; q < kNumPoints; ++q) outside += !insideBox(load(p, q));
-  std::string text = textf("the box [-2,2]^3, collision springs kCollision %.9g N/m, dCollision %.9g N s/m", k_, d_);
+  std::string text = textf(
+      "the box [-2,2]^3, collision springs kCollision %.9g N/m, dCollision %.9g N s/m", k_, d_);
   if (outside) text += textf("; %d points start outside it", outside);
   return {{"walls", text}};
 }

@@ -14,7 +14,9 @@ namespace jello {
 // not branches, so that the kernel's loop over the points vectorises.
 inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, double k, double d) {
   const double c = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-  const double beyond = c > kBoxHalfSize ? c - kBoxHalfSize : c < -kBoxHalfSize ? c + kBoxHalfSize : 0.0;
+  const double beyond = c > kBoxHalfSize    ? c - kBoxHalfSize
+                        : c < -kBoxHalfSize ? c + kBoxHalfSize
+                                            : 0.0;
   const Vec3 L{axis == 0 ? beyond : 0.0, axis == 1 ? beyond : 0.0, axis == 2 ? beyond : 0.0};
   return collisionForce(L, v, k, d);
 }
@@ -25,7 +27,8 @@ void wallJacobian(Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv);
 
 // Inside the box, walls included; false for a non-finite point.
 inline bool insideBox(Vec3 p) {
-  return std::fabs(p.x) <= kBoxHalfSize && std::fabs(p.y) <= kBoxHalfSize && std::fabs(p.z) <= kBoxHalfSize;
+  return std::fabs(p.x) <= kBoxHalfSize && std::fabs(p.y) <= kBoxHalfSize &&
+         std::fabs(p.z) <= kBoxHalfSize;
 }
 
 class WallsTerm final : public ForceTerm {

@@ -13,8 +13,8 @@
 #include <string_view>
 
 #include "app/commandline.h"
-#include "world.h"
 #include "app/worldbuilder.h"
+#include "world.h"
 
 namespace jello::fuzz {
 
@@ -26,17 +26,20 @@ namespace {
 }
 
 bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
 bool sameWorld(const WorldFile& a, const WorldFile& b) {
   const World &x = a.world, &y = b.world;
   auto same = [](double p, double q) { return std::memcmp(&p, &q, sizeof p) == 0; };
-  return x.integrator == y.integrator && same(x.dt, y.dt) && x.n == y.n && same(x.kElastic, y.kElastic) &&
-         same(x.dElastic, y.dElastic) && same(x.kCollision, y.kCollision) && same(x.dCollision, y.dCollision) &&
-         same(x.mass, y.mass) && x.hasPlane == y.hasPlane && same(x.plane.a, y.plane.a) && same(x.plane.b, y.plane.b) &&
-         same(x.plane.c, y.plane.c) && same(x.plane.d, y.plane.d) && x.field.resolution == y.field.resolution &&
-         sameBits(x.field.forces, y.field.forces) && sameBits(a.state.y, b.state.y);
+  return x.integrator == y.integrator && same(x.dt, y.dt) && x.n == y.n &&
+         same(x.kElastic, y.kElastic) && same(x.dElastic, y.dElastic) &&
+         same(x.kCollision, y.kCollision) && same(x.dCollision, y.dCollision) &&
+         same(x.mass, y.mass) && x.hasPlane == y.hasPlane && same(x.plane.a, y.plane.a) &&
+         same(x.plane.b, y.plane.b) && same(x.plane.c, y.plane.c) && same(x.plane.d, y.plane.d) &&
+         x.field.resolution == y.field.resolution && sameBits(x.field.forces, y.field.forces) &&
+         sameBits(a.state.y, b.state.y);
 }
 
 // The outcome of reading: the world, or the error's message.
@@ -54,7 +57,8 @@ Outcome outcomeOf(Read read) {
     o.accepted = true;
   } catch (const WorldFileError& e) {
     o.error = e.what();
-    if (o.error.empty() || o.error.find('\n') != std::string::npos) failed("error message", o.error);
+    if (o.error.empty() || o.error.find('\n') != std::string::npos)
+      failed("error message", o.error);
   }
   return o;
 }
@@ -79,7 +83,8 @@ void checkWorldText(const std::uint8_t* data, std::size_t size) {
     failed("memory and file disagree", fromMemory.error + " | " + fromFile.error);
   }
   if (fromMemory.accepted) {
-    if (!sameWorld(fromMemory.world, fromFile.world)) failed("memory and file disagree", "different worlds");
+    if (!sameWorld(fromMemory.world, fromFile.world))
+      failed("memory and file disagree", "different worlds");
     // createWorld's judge of a world in memory must pass every world the reader accepts.
     if (auto problem = findWorldProblem(fromMemory.world.world, fromMemory.world.state)) {
       failed("an accepted world has a problem", problem->what);
@@ -87,7 +92,8 @@ void checkWorldText(const std::uint8_t* data, std::size_t size) {
     const std::string written = formatWorld(fromMemory.world.world, fromMemory.world.state);
     Outcome again = outcomeOf([&] { return parseWorld(written, "round trip"); });
     if (!again.accepted) failed("a written world is refused", again.error);
-    if (!sameWorld(fromMemory.world, again.world)) failed("round trip", "the world read back differs");
+    if (!sameWorld(fromMemory.world, again.world))
+      failed("round trip", "the world read back differs");
   }
 }
 
@@ -99,7 +105,8 @@ void checkFieldExpression(const std::uint8_t* data, std::size_t size) {
   recipe.expression.assign(reinterpret_cast<const char*>(data), size);
   try {
     ForceField field = buildField(recipe);
-    if (field.resolution != kResolution || field.forces.size() != 3u * kResolution * kResolution * kResolution) {
+    if (field.resolution != kResolution ||
+        field.forces.size() != 3u * kResolution * kResolution * kResolution) {
       failed("field size", recipe.expression);
     }
     for (double f : field.forces)
@@ -129,12 +136,14 @@ void checkCommand(const JelloCommand& c) {
   if (p.width < kMinPictureSize || p.width > kMaxPictureSize || p.height < kMinPictureSize ||
       p.height > kMaxPictureSize)
     failed("--size", std::to_string(p.width) + "x" + std::to_string(p.height));
-  if (p.maxFrames < 1 || p.maxFrames > kMaxFrames) failed("--max-frames", std::to_string(p.maxFrames));
+  if (p.maxFrames < 1 || p.maxFrames > kMaxFrames)
+    failed("--max-frames", std::to_string(p.maxFrames));
   if (c.framesGiven && p.framesDir.empty()) failed("--frames", "empty");
-  if (c.mode == JelloCommand::Mode::Report && (c.report.dir.empty() || !positive(c.report.time) ||
-                                               !positive(c.report.visualTolerance)))
+  if (c.mode == JelloCommand::Mode::Report &&
+      (c.report.dir.empty() || !positive(c.report.time) || !positive(c.report.visualTolerance)))
     failed("--report", c.report.dir);
-  if (c.mode == JelloCommand::Mode::Map && (c.mapDir.empty() || !positive(c.mapTime))) failed("--map", c.mapDir);
+  if (c.mode == JelloCommand::Mode::Map && (c.mapDir.empty() || !positive(c.mapTime)))
+    failed("--map", c.mapDir);
   if (c.json && c.mode != JelloCommand::Mode::Check) failed("--json", "without --check");
 }
 
@@ -161,8 +170,10 @@ void checkCommandLine(const std::uint8_t* data, std::size_t size) {
   } catch (const std::exception& e) {
     failed("an exception escaped the parse", e.what());
   }
-  if (status == kGoOn) checkCommand(command);
-  else if (status != 0 && status != kExitBadInput) failed("exit status", std::to_string(status));
+  if (status == kGoOn)
+    checkCommand(command);
+  else if (status != 0 && status != kExitBadInput)
+    failed("exit status", std::to_string(status));
 }
 
 }  // namespace jello::fuzz

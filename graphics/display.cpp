@@ -1,12 +1,12 @@
 // display.cpp: whether a window can be opened. Apart from the viewer, and Xlib included
 // last, because Xlib's macros (Success, None, ...) collide with names in Eigen.
 
-#include "graphics/graphics.h"
-
 #include <X11/Xlib.h>
 
 #include <cstdlib>
 #include <string>
+
+#include "graphics/graphics.h"
 
 namespace jello {
 

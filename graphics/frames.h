@@ -6,11 +6,10 @@
 #include <string>
 
 #include "app/pictures.h"
-#include "graphics/image.h"
 #include "core/output.h"
+#include "graphics/image.h"
 
 namespace jello {
-
 
 class FrameError : public std::runtime_error {
  public:
@@ -47,6 +46,5 @@ class FrameSequence {
 
 // The number of files named like frames (NNNN.jpg) in dir; 0 when dir does not exist.
 int countFrames(const std::string& dir);
-
 
 }  // namespace jello

@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "graphics/frames.h"
 #include "app/headless.h"
 #include "app/pictures.h"
+#include "graphics/frames.h"
 
 namespace jello {
 

@@ -4,11 +4,11 @@
 
 #include <GL/osmesa.h>
 
-#include "graphics/frames.h"
-
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "graphics/frames.h"
 
 namespace jello {
 
@@ -17,17 +17,23 @@ struct OffscreenRenderer::Context {
   std::vector<std::uint8_t> rgba;  // OSMesa's colour buffer, rows bottom to top
 };
 
-OffscreenRenderer::OffscreenRenderer(int width, int height) : context_(std::make_unique<Context>()) {
-  if (width < kMinPictureSize || height < kMinPictureSize || width > kMaxPictureSize || height > kMaxPictureSize) {
-    throw std::runtime_error("picture size " + std::to_string(width) + "x" + std::to_string(height) +
-                             " is out of range (" + std::to_string(kMinPictureSize) + " to " +
+OffscreenRenderer::OffscreenRenderer(int width, int height)
+    : context_(std::make_unique<Context>()) {
+  if (width < kMinPictureSize || height < kMinPictureSize || width > kMaxPictureSize ||
+      height > kMaxPictureSize) {
+    throw std::runtime_error("picture size " + std::to_string(width) + "x" +
+                             std::to_string(height) + " is out of range (" +
+                             std::to_string(kMinPictureSize) + " to " +
                              std::to_string(kMaxPictureSize) + " pixels a side)");
   }
   const int depthBits = 24, stencilBits = 0, accumBits = 0;
-  context_->context = OSMesaCreateContextExt(OSMESA_RGBA, depthBits, stencilBits, accumBits, nullptr);
-  if (!context_->context) throw std::runtime_error("OSMesa could not create an off-screen GL context");
+  context_->context =
+      OSMesaCreateContextExt(OSMESA_RGBA, depthBits, stencilBits, accumBits, nullptr);
+  if (!context_->context)
+    throw std::runtime_error("OSMesa could not create an off-screen GL context");
   context_->rgba.resize(static_cast<std::size_t>(width) * height * 4);
-  if (!OSMesaMakeCurrent(context_->context, context_->rgba.data(), GL_UNSIGNED_BYTE, width, height)) {
+  if (!OSMesaMakeCurrent(context_->context, context_->rgba.data(), GL_UNSIGNED_BYTE, width,
+                         height)) {
     OSMesaDestroyContext(context_->context);
     throw std::runtime_error("OSMesa could not make its off-screen GL context current");
   }
@@ -46,7 +52,8 @@ const Image& OffscreenRenderer::render(const Model& model, const State& state, c
   glFinish();
   const int w = image_.width, h = image_.height;
   for (int row = 0; row < h; ++row) {
-    const std::uint8_t* from = context_->rgba.data() + static_cast<std::size_t>(h - 1 - row) * w * 4;
+    const std::uint8_t* from =
+        context_->rgba.data() + static_cast<std::size_t>(h - 1 - row) * w * 4;
     std::uint8_t* to = image_.rgb.data() + static_cast<std::size_t>(row) * w * 3;
     for (int x = 0; x < w; ++x) {
       to[3 * x] = from[4 * x];

@@ -12,11 +12,11 @@
 #include <limits>
 #include <string>
 
-#include "graphics/graphics.h"
-#include "core/output.h"
-#include "solver/simulation.h"
 #include "app/stability.h"
+#include "core/output.h"
+#include "graphics/graphics.h"
 #include "showCube.h"
+#include "solver/simulation.h"
 
 namespace jello {
 
@@ -24,16 +24,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kZoomStep = 0.2;              // m per z/x key press
-constexpr double kMinRadius = 0.5;             // m
-constexpr double kRadiansPerPixel = 0.01;      // camera rotation per pixel dragged
+constexpr double kZoomStep = 0.2;          // m per z/x key press
+constexpr double kMinRadius = 0.5;         // m
+constexpr double kRadiansPerPixel = 0.01;  // camera rotation per pixel dragged
 constexpr double kMaxElevation = kPi / 2 - 0.01;
-constexpr int kGrabPixels = 40;                // how near the cursor a grabbed point must be
-constexpr double kMinPullStiffness = 100;      // N/m
+constexpr int kGrabPixels = 40;            // how near the cursor a grabbed point must be
+constexpr double kMinPullStiffness = 100;  // N/m
 constexpr double kMessageSeconds = 4;
-constexpr double kMaxCatchUpSeconds = 0.1;     // real-time pacing never steps more than this at once
+constexpr double kMaxCatchUpSeconds = 0.1;  // real-time pacing never steps more than this at once
 constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
-constexpr int kStepsBetweenClockReads = 16;     // how often real-time pacing looks at that budget
+constexpr int kStepsBetweenClockReads = 16;       // how often real-time pacing looks at that budget
 constexpr int kEscape = 27;
 
 double seconds(Clock::time_point from, Clock::time_point to) {
@@ -45,7 +45,7 @@ struct Viewer {
   State initial;
   Simulation simulation;  // of `model`, declared after it
   Tolerances tolerances;  // RK45's, for the message when they cannot be met
-  State lastGood;  // the state before the current frame's steps, shown if they diverge
+  State lastGood;         // the state before the current frame's steps, shown if they diverge
   int n;
   long long savedStep = -1;  // the step of the last saved frame
 
@@ -106,7 +106,8 @@ Image readWindow(int width, int height) {
   glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
   const std::size_t stride = static_cast<std::size_t>(width) * 3;
   for (int row = 0; row < height; ++row) {
-    std::copy_n(bottomUp.data() + (height - 1 - row) * stride, stride, image.rgb.data() + row * stride);
+    std::copy_n(bottomUp.data() + (height - 1 - row) * stride, stride,
+                image.rgb.data() + row * stride);
   }
   return image;
 }
@@ -118,16 +119,20 @@ void drawOverlay(Viewer& v) {
                 v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
   drawText(line, 8, 8, v.width, v.height, 2, 1, 1, 1);
   if (v.saving) {
-    std::string mark = "SAVING " + std::to_string(v.frames.written()) + "/" + std::to_string(v.frames.maxFrames());
+    std::string mark =
+        "SAVING " + std::to_string(v.frames.written()) + "/" + std::to_string(v.frames.maxFrames());
     drawText(mark, v.width - textWidth(mark, 2) - 8, 8, v.width, v.height, 2, 1, 0.25f, 0.2f);
   }
   if (v.draw.coloring != Coloring::Plain) {
-    drawText(std::string("COLOUR: ") + coloringName(v.draw.coloring), 8, 26, v.width, v.height, 2, 1, 1, 1);
+    drawText(std::string("COLOUR: ") + coloringName(v.draw.coloring), 8, 26, v.width, v.height, 2,
+             1, 1, 1);
   }
   bool fresh = seconds(v.messageTime, Clock::now()) < kMessageSeconds;
   if (!v.message.empty() && (fresh || v.diverged)) {
-    if (v.diverged) drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 0.3f, 0.25f);
-    else drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 1, 0.4f);
+    if (v.diverged)
+      drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 0.3f, 0.25f);
+    else
+      drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 1, 0.4f);
   }
 }
 
@@ -149,7 +154,8 @@ void display() {
     }
     if (v.frames.full()) {
       v.saving = false;
-      v.say("saved " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() + "/ (the most allowed)");
+      v.say("saved " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() +
+            "/ (the most allowed)");
     }
   }
   drawOverlay(v);
@@ -217,7 +223,8 @@ void idle() {
 void toggleSaving(Viewer& v) {
   if (v.saving) {
     v.saving = false;
-    v.say("stopped saving: " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() + "/");
+    v.say("stopped saving: " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() +
+          "/");
     return;
   }
   if (v.frames.full()) {
@@ -284,7 +291,8 @@ void keyboard(unsigned char key, int, int) {
 }
 
 bool isSurfacePoint(int q) {
-  int index[3] = {q / (kLatticeSize * kLatticeSize), (q / kLatticeSize) % kLatticeSize, q % kLatticeSize};
+  int index[3] = {q / (kLatticeSize * kLatticeSize), (q / kLatticeSize) % kLatticeSize,
+                  q % kLatticeSize};
   for (int c : index)
     if (c == 0 || c == kLatticeSize - 1) return true;
   return false;
@@ -307,7 +315,8 @@ void grab(Viewer& v, int x, int y) {
     if (!gluProject(p.x, p.y, p.z, v.modelview, v.projection, v.viewport, &sx, &sy, &sz)) continue;
     double d = std::hypot(sx - x, sy - (v.height - y));
     // Of points equally near the cursor, the one nearest the camera.
-    if (d < bestDistance - 1e-9 || (best >= 0 && std::fabs(d - bestDistance) < 2 && sz < bestDepth)) {
+    if (d < bestDistance - 1e-9 ||
+        (best >= 0 && std::fabs(d - bestDistance) < 2 && sz < bestDepth)) {
       best = q;
       bestDistance = d;
       bestDepth = sz;
@@ -338,7 +347,8 @@ void motion(int x, int y) {
   Viewer& v = viewer();
   if (v.rotating) {
     v.camera.phi += (x - v.lastX) * kRadiansPerPixel;
-    v.camera.theta = std::clamp(v.camera.theta + (y - v.lastY) * kRadiansPerPixel, -kMaxElevation, kMaxElevation);
+    v.camera.theta = std::clamp(v.camera.theta + (y - v.lastY) * kRadiansPerPixel, -kMaxElevation,
+                                kMaxElevation);
   }
   if (v.pull.point >= 0) v.pull.target = unproject(v, x, y, v.grabDepth);
   v.lastX = x;
@@ -371,7 +381,7 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   if (pictures.saveFromStart) toggleSaving(v);
   glutMainLoop();
   // The window printed its divergence when it happened (say): nothing is left to print.
-  return v.diverged ? Outcome{Status::Diverged, ""} : succeeded();
+  return v.diverged ? Outcome{Ending::Diverged, ""} : succeeded();
 }
 
 extern "C" const GraphicsApi* jelloGraphicsApi() {

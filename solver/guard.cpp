@@ -10,14 +10,16 @@ namespace jello {
 
 namespace {
 
-constexpr double kEnergyMargin = 4;     // the state may hold 4 times the bound: rounding, integrators' drift
-constexpr double kEnergyFloor = 1e-6;   // J: below this nothing is judged
+constexpr double kEnergyMargin =
+    4;  // the state may hold 4 times the bound: rounding, integrators' drift
+constexpr double kEnergyFloor = 1e-6;  // J: below this nothing is judged
 
 }  // namespace
 
 double mechanicalEnergy(const Model& model, const State& state) {
   double energy = 0;
-  for (int q = 0; q < kNumPoints; ++q) energy += 0.5 * model.world.mass * dot(load(state.v(), q), load(state.v(), q));
+  for (int q = 0; q < kNumPoints; ++q)
+    energy += 0.5 * model.world.mass * dot(load(state.v(), q), load(state.v(), q));
   for (const auto& term : model.scene.terms) term->addEnergy(state.p(), &energy);
   return energy;
 }
@@ -39,14 +41,16 @@ std::string DivergenceGuard::check(const State& state, double time) const {
   if (bad >= 0) {
     Vec3 p = load(state.p(), bad), v = load(state.v(), bad);
     bool finite = std::isfinite(dot(p, p)) && std::isfinite(dot(v, v));
-    return "point p" + latticeLabel(bad) + (finite ? " is more than 100 m from the origin" : " is no longer finite");
+    return "point p" + latticeLabel(bad) +
+           (finite ? " is more than 100 m from the origin" : " is no longer finite");
   }
   double bound = rootEnergy_ + energyRate_ * (time - start_);
   double energy = mechanicalEnergy(model_, state);
   if (energy > kEnergyMargin * bound * bound + kEnergyFloor) {
     char text[160];
-    std::snprintf(text, sizeof text, "its energy, %.3g J, is beyond what the world's forces can supply (%.3g J)", energy,
-                  bound * bound);
+    std::snprintf(text, sizeof text,
+                  "its energy, %.3g J, is beyond what the world's forces can supply (%.3g J)",
+                  energy, bound * bound);
     return text;
   }
   return "";

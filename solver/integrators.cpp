@@ -32,13 +32,14 @@ constexpr double kA[kStages][kStages] = {
     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
 };
-constexpr double kErrorWeights[kStages] = {71.0 / 57600,  0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
-                                           22.0 / 525, -1.0 / 40};
+constexpr double kErrorWeights[kStages] = {
+    71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 constexpr double kSafety = 0.9, kMinShrink = 0.2, kMaxGrowth = 5.0;
 // A PI step-size controller (Gustafsson; the exponents of Hairer's DOPRI5): the last accepted
 // error damps the oscillation of the step at the stability limit of a stiff world, where a
 // plain controller alternates between too long (rejected) and too short.
-constexpr double kErrorExponent = 0.17, kPreviousErrorExponent = 0.04, kSmallestPreviousError = 1e-4;
+constexpr double kErrorExponent = 0.17, kPreviousErrorExponent = 0.04,
+                 kSmallestPreviousError = 1e-4;
 
 // Newton's iterations of IMPLICIT: stop when the update is this small against the velocities,
 // or after this many.
@@ -51,7 +52,8 @@ void sized(std::vector<double>& buffer, std::size_t n) {
 }
 
 // out = y + h * k
-void axpy(const std::vector<double>& y, double h, const std::vector<double>& k, std::vector<double>& out) {
+void axpy(const std::vector<double>& y, double h, const std::vector<double>& k,
+          std::vector<double>& out) {
   for (std::size_t i = 0; i < y.size(); ++i) out[i] = y[i] + h * k[i];
 }
 
@@ -108,7 +110,8 @@ struct StepWork {
 namespace {
 
 // out = f(at), counted.
-void evaluate(StepWork& w, const OdeSystem& system, const std::vector<double>& at, std::vector<double>& out) {
+void evaluate(StepWork& w, const OdeSystem& system, const std::vector<double>& at,
+              std::vector<double>& out) {
   system.derivative(at.data(), out.data());
   ++w.stats.evaluations;
 }
@@ -168,13 +171,15 @@ void stepRk4(StepWork& w, const OdeSystem& system, std::vector<double>& y, doubl
   evaluate(w, system, w.temp, k3);
   axpy(y, dt, k3, w.temp);
   evaluate(w, system, w.temp, k4);
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  for (std::size_t i = 0; i < y.size(); ++i)
+    y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
   ++w.stats.steps;
 }
 
 // One Dormand-Prince substep of h from y: the stages into w.k[1..], the fifth-order result
 // into w.next, and the norm of the scaled error estimate (via w.temp) returned.
-double dormandPrinceSubstep(StepWork& w, const OdeSystem& system, const std::vector<double>& y, double h) {
+double dormandPrinceSubstep(StepWork& w, const OdeSystem& system, const std::vector<double>& y,
+                            double h) {
   const std::size_t n = y.size();
   for (int s = 1; s < kStages; ++s) {
     std::vector<double>& at = s == kStages - 1 ? w.next : w.temp;
@@ -190,7 +195,8 @@ double dormandPrinceSubstep(StepWork& w, const OdeSystem& system, const std::vec
   for (std::size_t i = 0; i < n; ++i) {
     double error = 0;
     for (int j = 0; j < kStages; ++j) error += kErrorWeights[j] * w.k[j][i];
-    double scale = w.tolerances.atol + w.tolerances.rtol * std::max(std::fabs(y[i]), std::fabs(w.next[i]));
+    double scale =
+        w.tolerances.atol + w.tolerances.rtol * std::max(std::fabs(y[i]), std::fabs(w.next[i]));
     w.temp[i] = h * error / scale;
   }
   return rmsNorm(w.temp.data(), n);
@@ -212,10 +218,10 @@ void stepRk45(StepWork& w, const OdeSystem& system, std::vector<double>& y, doub
       }
       norm = INFINITY;  // an error beyond measure on a finite state: rejected, never accepted
     }
-    double factor =
-        norm == 0 ? kMaxGrowth
-                  : std::clamp(kSafety * std::pow(norm, -kErrorExponent) * std::pow(w.rk45Error, kPreviousErrorExponent),
-                               kMinShrink, kMaxGrowth);
+    double factor = norm == 0 ? kMaxGrowth
+                              : std::clamp(kSafety * std::pow(norm, -kErrorExponent) *
+                                               std::pow(w.rk45Error, kPreviousErrorExponent),
+                                           kMinShrink, kMaxGrowth);
     if (norm <= 1) {
       w.rk45Error = std::max(norm, kSmallestPreviousError);
       y.swap(w.next);
@@ -239,7 +245,8 @@ void stepRk45(StepWork& w, const OdeSystem& system, std::vector<double>& y, doub
 // One Newton update of IMPLICIT's velocities w.next in place: the residual at the iterate, the
 // Newton matrix I - dt dA/dv - dt^2 dA/dp, its solution. False when the matrix is singular
 // (the velocities are NaN then); *converged when the update was negligible.
-bool newtonUpdate(StepWork& w, const OdeSystem& system, const std::vector<double>& y, double dt, bool* converged) {
+bool newtonUpdate(StepWork& w, const OdeSystem& system, const std::vector<double>& y, double dt,
+                  bool* converged) {
   const std::size_t half = y.size() / 2;
   std::vector<double>& velocity = w.next;
   for (std::size_t i = 0; i < half; ++i) {
@@ -250,7 +257,8 @@ bool newtonUpdate(StepWork& w, const OdeSystem& system, const std::vector<double
   system.jacobian(w.temp.data(), w.jacobian);
   ++w.stats.jacobians;
   ++w.stats.newtonIterations;
-  for (std::size_t i = 0; i < half; ++i) w.residual[i] = -(velocity[i] - y[half + i] - dt * w.k[0][half + i]);
+  for (std::size_t i = 0; i < half; ++i)
+    w.residual[i] = -(velocity[i] - y[half + i] - dt * w.k[0][half + i]);
   // I - dt dA/dv - dt^2 dA/dp, written into the Jacobians' own pattern.
   if (w.newton.nonZeros() != w.jacobian.dAdp.nonZeros()) w.newton = w.jacobian.dAdp;
   const double* dp = w.jacobian.dAdp.valuePtr();
@@ -321,7 +329,8 @@ constexpr bool tableFollowsTheEnum() {
     if (static_cast<int>(kTable[i].integrator) != i) return false;
   return true;
 }
-static_assert(tableFollowsTheEnum(), "the integrator table must have one row per enumerator, in enum order");
+static_assert(tableFollowsTheEnum(),
+              "the integrator table must have one row per enumerator, in enum order");
 
 }  // namespace
 
@@ -340,7 +349,9 @@ int orderOf(Integrator integrator) { return integratorInfo(integrator).order; }
 std::string integratorNameList() {
   std::string list;
   for (const IntegratorInfo& row : kTable) {
-    list += row.integrator == kTable.front().integrator ? "" : row.integrator == kTable.back().integrator ? " or " : ", ";
+    list += row.integrator == kTable.front().integrator  ? ""
+            : row.integrator == kTable.back().integrator ? " or "
+                                                         : ", ";
     list += row.name;
   }
   return list;
@@ -372,7 +383,8 @@ std::string integratorHelp() {
   std::string help;
   for (const IntegratorInfo& row : kTable) {
     char line[200];
-    std::snprintf(line, sizeof line, "  %-11s order %d  %s\n", row.name, row.order, row.description);
+    std::snprintf(line, sizeof line, "  %-11s order %d  %s\n", row.name, row.order,
+                  row.description);
     help += line;
   }
   return help;
@@ -380,7 +392,9 @@ std::string integratorHelp() {
 
 OdeSystem jelloSystem(const Model& model, const Pull* pull) {
   OdeSystem system;
-  system.derivative = [&model, pull](const double* y, double* dydt) { derivative(model, y, dydt, pull); };
+  system.derivative = [&model, pull](const double* y, double* dydt) {
+    derivative(model, y, dydt, pull);
+  };
   system.jacobian = [&model, pull](const double* y, AccelerationJacobian& jacobian) {
     accelerationJacobian(model, y, y + kNumCoords, pull, &jacobian);
   };
@@ -388,7 +402,9 @@ OdeSystem jelloSystem(const Model& model, const Pull* pull) {
 }
 
 Stepper::Stepper(Integrator integrator, Tolerances tolerances)
-    : integrator_(integrator), step_(integratorInfo(integrator).step), work_(std::make_unique<StepWork>(tolerances)) {}
+    : integrator_(integrator),
+      step_(integratorInfo(integrator).step),
+      work_(std::make_unique<StepWork>(tolerances)) {}
 Stepper::~Stepper() = default;
 Stepper::Stepper(Stepper&&) noexcept = default;
 Stepper& Stepper::operator=(Stepper&&) noexcept = default;

@@ -65,7 +65,8 @@ double rmsNorm(const double* x, std::size_t n);
 // of its last substep. Defined in integrators.cpp; a step function exists only there.
 struct StepWork;
 // One step of dt seconds of `system` from y, in place (see Stepper::step).
-using StepFunction = void (*)(StepWork& work, const OdeSystem& system, std::vector<double>& y, double dt);
+using StepFunction = void (*)(StepWork& work, const OdeSystem& system, std::vector<double>& y,
+                              double dt);
 
 // The integrator table: one row per integrator, the only source of their names, orders, help
 // text and properties. integrators.cpp holds the rows, indexed by the enum (world.h) in its
@@ -73,8 +74,8 @@ using StepFunction = void (*)(StepWork& work, const OdeSystem& system, std::vect
 // integrator is an enumerator in world.h and a row and a step function in integrators.cpp.
 struct IntegratorInfo {
   Integrator integrator;
-  const char* name;         // canonical upper-case name, as in world files and on command lines
-  int order;                // theoretical order of convergence in dt (RK45: of the solution it keeps)
+  const char* name;  // canonical upper-case name, as in world files and on command lines
+  int order;         // theoretical order of convergence in dt (RK45: of the solution it keeps)
   bool boundedStableStep;   // false when A-stable: no dt makes it diverge (IMPLICIT)
   bool needsJacobian;       // its steps use OdeSystem::jacobian
   const char* description;  // one line for help text, lower case, no final full stop

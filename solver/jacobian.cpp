@@ -22,7 +22,8 @@ std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
   std::vector<std::pair<int, int>> blocks;
   for (const auto& term : model.scene.terms)
     for (auto [a, b] : term->pairs())
-      for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}}) blocks.push_back({row, column});
+      for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
+        blocks.push_back({row, column});
   for (int q = 0; q < kNumPoints; ++q) blocks.push_back({q, q});
   return blocks;
 }
@@ -32,7 +33,8 @@ void buildPattern(const std::vector<std::pair<int, int>>& blocks, AccelerationJa
   std::vector<Eigen::Triplet<double>> entries;
   for (auto [row, column] : blocks)
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
+      for (int j = 0; j < 3; ++j)
+        entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
   SparseMatrix pattern(kNumCoords, kNumCoords);
   pattern.setFromTriplets(entries.begin(), entries.end());
   pattern.makeCompressed();
@@ -48,7 +50,8 @@ void buildPattern(const std::vector<std::pair<int, int>>& blocks, AccelerationJa
   for (auto [row, column] : blocks) {
     BlockSlots slots;
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) slots[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
+      for (int j = 0; j < 3; ++j)
+        slots[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
     out->blockSlots.push_back(slots);
   }
   out->diagonal.resize(kNumCoords);

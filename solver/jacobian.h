@@ -33,7 +33,8 @@ struct AccelerationJacobian {
   // not adjacent in the per-point layout (see coordIndex), so each entry has its own slot.
   std::vector<BlockSlots> blockSlots;
   std::vector<int> diagonal;  // value index of each diagonal entry
-  std::vector<Block3> pointP, pointV;  // scratch: each point's diagonal block, summed over the terms
+  std::vector<Block3> pointP,
+      pointV;  // scratch: each point's diagonal block, summed over the terms
 };
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out);

@@ -3,7 +3,8 @@
 // and --bench all advance through it.
 //
 // The checks, one rule for every caller. After step s (s counted from the start, 1-based):
-//  - always the cheap test of docs/physics.md (Divergence): a position or velocity that is not finite, or a point more
+//  - always the cheap test of docs/physics.md (Divergence): a position or velocity that is not
+//  finite, or a point more
 //    than 100 m from the origin (findDivergedPoint's test);
 //  - when s is a multiple of max(n, kEnergyEvery), n the world's steps per drawn frame, the
 //    energy bound of the guard (guard.h) as well: at most once a drawn frame, and no more often
@@ -19,9 +20,9 @@
 #include <optional>
 #include <string>
 
+#include "physics.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
-#include "physics.h"
 #include "world.h"
 
 namespace jello {

@@ -1,8 +1,8 @@
 // 2000 steps of the course worlds against the independent reference results (docs/physics.md).
 #include <gtest/gtest.h>
 
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "test_support.h"
 
 namespace jello {
@@ -34,17 +34,19 @@ TEST_P(Agreement, TwoThousandStepsMatchTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(
     CourseWorlds, Agreement,
-    ::testing::Values(AgreementCase{"jello.w", Integrator::RK4, 0, "jello.RK4.2000.txt"},
-                      AgreementCase{"rotate.w", Integrator::RK4, 0, "rotate.RK4.2000.txt"},
-                      AgreementCase{"moveLeft.w", Integrator::RK4, 0, "moveLeft.RK4.2000.txt"},
-                      AgreementCase{"skewedCorner.w", Integrator::RK4, 0, "skewedCorner.RK4.2000.txt"},
-                      AgreementCase{"gravity.w", Integrator::RK4, 0, "gravity.RK4.2000.txt"},
-                      AgreementCase{"skewedCorner.w", Integrator::Euler, 0, "skewedCorner.EULER.2000.txt"},
-                      AgreementCase{"jello.w", Integrator::Euler, 1e-4, "jello.EULER.dt0.0001.2000.txt"}),
+    ::testing::Values(
+        AgreementCase{"jello.w", Integrator::RK4, 0, "jello.RK4.2000.txt"},
+        AgreementCase{"rotate.w", Integrator::RK4, 0, "rotate.RK4.2000.txt"},
+        AgreementCase{"moveLeft.w", Integrator::RK4, 0, "moveLeft.RK4.2000.txt"},
+        AgreementCase{"skewedCorner.w", Integrator::RK4, 0, "skewedCorner.RK4.2000.txt"},
+        AgreementCase{"gravity.w", Integrator::RK4, 0, "gravity.RK4.2000.txt"},
+        AgreementCase{"skewedCorner.w", Integrator::Euler, 0, "skewedCorner.EULER.2000.txt"},
+        AgreementCase{"jello.w", Integrator::Euler, 1e-4, "jello.EULER.dt0.0001.2000.txt"}),
     [](const auto& testInfo) {
       std::string name = testInfo.param.expected;
       name = name.substr(0, name.find(".2000"));
-      for (char& ch : name) if (ch == '.') ch = '_';
+      for (char& ch : name)
+        if (ch == '.') ch = '_';
       return name;
     });
 

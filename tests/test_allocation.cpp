@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <new>
 
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -34,8 +34,8 @@ namespace {
 // After its first step, a Stepper allocates nothing: not the kernel, not the integrator.
 TEST(Allocation, StepsAllocateNothingOnceStarted) {
   WorldFile f = readWorldFile(test::dataPath("rotate.w"));
-  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
-                                Integrator::Verlet, Integrator::RK45}) {
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4,
+                                Integrator::Symplectic, Integrator::Verlet, Integrator::RK45}) {
     Model model = makeModel(f.world, f.state);
     State state = f.state;
     Stepper stepper(integrator);
@@ -51,8 +51,8 @@ TEST(Allocation, StepsAllocateNothingOnceStarted) {
 TEST(Allocation, ASimulationAdvancesWithoutAllocatingOnceStarted) {
   WorldFile f = readWorldFile(test::dataPath("rotate.w"));
   Model model = makeModel(f.world, f.state);
-  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
-                                Integrator::Verlet, Integrator::RK45}) {
+  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4,
+                                Integrator::Symplectic, Integrator::Verlet, Integrator::RK45}) {
     Simulation simulation(model, f.state, integrator, 2e-4);
     ASSERT_TRUE(simulation.advance(1).ran());
     const long long before = allocations.load();

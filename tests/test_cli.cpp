@@ -1,14 +1,13 @@
 // The command line of ./jello (README: Running), run as a user runs it.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 
 #include "app/headless.h"
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "test_support.h"
 
 namespace jello {
@@ -17,7 +16,9 @@ namespace {
 using test::dataPath;
 using test::runJello;
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int lineCount(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
 bool exists(const std::string& path) {
   struct stat info;
@@ -29,7 +30,8 @@ TEST(Cli, HeadlessRunPrintsTheSceneAndOneSummaryLine) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(lineCount(r.out), 2) << r.out;
   EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
-  for (const char* part : {"rotate.w", "RK4", "dt=0.001 ", "steps=20 ", "simulated=0.02 s", "wall=", "us/step"}) {
+  for (const char* part :
+       {"rotate.w", "RK4", "dt=0.001 ", "steps=20 ", "simulated=0.02 s", "wall=", "us/step"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
   }
   EXPECT_EQ(r.err, "") << "quiet when stderr is not a terminal";
@@ -39,22 +41,27 @@ TEST(Cli, BenchTimesEveryIntegratorWithBothKernels) {
   test::CommandResult r = runJello("--bench --steps 2 '" + dataPath("rotate.w") + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
-  for (const char* part : {"specialised", "general", "speed-up", "force evaluation", "evaluations per second",
-                           "EULER", "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world parsing"}) {
+  for (const char* part :
+       {"specialised", "general", "speed-up", "force evaluation", "evaluations per second", "EULER",
+        "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world parsing"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
   }
 }
 
 // The pictures' library is loaded for frames and only for them.
 TEST(Cli, AHeadlessRunLoadsNoGlLibrary) {
-  const char* pictureLibraries[] = {"libGL.so", "libOSMesa.so", "libglut.so", "libX11.so", "libjpeg.so"};
-  test::CommandResult r = runJello("--headless --steps 3 '" + dataPath("rotate.w") + "'", "", "env LD_DEBUG=libs");
+  const char* pictureLibraries[] = {"libGL.so", "libOSMesa.so", "libglut.so", "libX11.so",
+                                    "libjpeg.so"};
+  test::CommandResult r =
+      runJello("--headless --steps 3 '" + dataPath("rotate.w") + "'", "", "env LD_DEBUG=libs");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("calling init"), std::string::npos) << "LD_DEBUG says nothing here";
-  for (const char* library : pictureLibraries) EXPECT_EQ(r.err.find(library), std::string::npos) << library;
+  for (const char* library : pictureLibraries)
+    EXPECT_EQ(r.err.find(library), std::string::npos) << library;
 #ifdef JELLO_HAVE_GRAPHICS
   std::string dir = test::makeTempDir();
-  r = runJello("--headless --steps 3 --frames frames '" + dataPath("rotate.w") + "'", dir, "env LD_DEBUG=libs");
+  r = runJello("--headless --steps 3 --frames frames '" + dataPath("rotate.w") + "'", dir,
+               "env LD_DEBUG=libs");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("libOSMesa.so"), std::string::npos) << "frames were drawn without OSMesa?";
   test::removeTree(dir);
@@ -62,7 +69,8 @@ TEST(Cli, AHeadlessRunLoadsNoGlLibrary) {
 }
 
 TEST(Cli, DefaultLengthIsThreeHundredFramesOfNSteps) {
-  test::CommandResult r = runJello("--headless --n 2 --integrator euler --dt 1e-5 '" + dataPath("moveLeft.w") + "'");
+  test::CommandResult r =
+      runJello("--headless --n 2 --integrator euler --dt 1e-5 '" + dataPath("moveLeft.w") + "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("EULER dt=1e-05 steps=600 "), std::string::npos) << r.out;
 }
@@ -94,9 +102,10 @@ TEST(Cli, ATimeOfMoreStepsThanARunMayTakeIsRefusedNamingTimeAndDt) {
     EXPECT_EQ(r.out, "") << args;
   }
   test::CommandResult r = runJello("--headless --time 1e16 --dt 0.001" + world);
-  EXPECT_EQ(r.err,
-            "jello: --time 1e+16 s at --dt 0.001 s would take 1e+19 steps, more than the 1e+12 a run may "
-            "take; choose a shorter --time or a larger --dt\n");
+  EXPECT_EQ(
+      r.err,
+      "jello: --time 1e+16 s at --dt 0.001 s would take 1e+19 steps, more than the 1e+12 a run may "
+      "take; choose a shorter --time or a larger --dt\n");
   // --report runs the world's own dt to --time: refused before its folder is made.
   std::string dir = test::makeTempDir();
   r = runJello("--report '" + dir + "/report' --dt 1e-300" + world);
@@ -109,7 +118,8 @@ TEST(Cli, ATimeOfMoreStepsThanARunMayTakeIsRefusedNamingTimeAndDt) {
 
 TEST(Cli, WithoutADisplayItSaysSoAndRunsHeadless) {
   std::string dir = test::makeTempDir();
-  test::CommandResult r = runJello("--steps 5 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+  test::CommandResult r =
+      runJello("--steps 5 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("running headless"), std::string::npos) << r.err;
@@ -120,8 +130,8 @@ TEST(Cli, WithoutADisplayItSaysSoAndRunsHeadless) {
 TEST(Cli, DumpHoldsTheFinalStateBitForBitAndTheOverrides) {
   std::string dir = test::makeTempDir();
   std::string out = dir + "/final.w";
-  test::CommandResult r = runJello("--headless --steps 50 --integrator EULER --dt 0.0002 --dump '" + out + "' '" +
-                                   dataPath("gravity.w") + "'");
+  test::CommandResult r = runJello("--headless --steps 50 --integrator EULER --dt 0.0002 --dump '" +
+                                   out + "' '" + dataPath("gravity.w") + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   WorldFile dumped = readWorldFile(out);
   WorldFile f = readWorldFile(dataPath("gravity.w"));
@@ -138,8 +148,8 @@ TEST(Cli, DumpHoldsTheFinalStateBitForBitAndTheOverrides) {
 TEST(Cli, DivergenceStopsWithStatusOneNamingStepTimeAndDt) {
   std::string dir = test::makeTempDir();
   std::string out = dir + "/never.w";
-  test::CommandResult r = runJello("--headless --steps 2000 --integrator EULER --dt 0.01 --dump '" + out + "' '" +
-                                   dataPath("jello.w") + "'");
+  test::CommandResult r = runJello("--headless --steps 2000 --integrator EULER --dt 0.01 --dump '" +
+                                   out + "' '" + dataPath("jello.w") + "'");
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   for (const char* part : {"diverged at step ", "(t=", "dt=0.01", "EULER"}) {
@@ -183,7 +193,8 @@ class CliUsage : public ::testing::TestWithParam<UsageCase> {};
 
 TEST_P(CliUsage, ExitsTwoWithOneLine) {
   const UsageCase& c = GetParam();
-  test::CommandResult r = runJello(c.ownWorld ? c.args : c.args + " '" + dataPath("rotate.w") + "'");
+  test::CommandResult r =
+      runJello(c.ownWorld ? c.args : c.args + " '" + dataPath("rotate.w") + "'");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
@@ -192,25 +203,28 @@ TEST_P(CliUsage, ExitsTwoWithOneLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliUsage,
-    ::testing::Values(UsageCase{"unknown_option", "--headless --fast", "--fast"},
-                      UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
-                      UsageCase{"negative_steps", "--headless --steps -3", "--steps"},
-                      UsageCase{"zero_dt", "--headless --dt 0", "--dt"},
-                      UsageCase{"nan_dt", "--headless --dt nan", "--dt"},
-                      UsageCase{"inf_time", "--headless --time inf", "--time"},
-                      UsageCase{"zero_n", "--headless --n 0", "--n"},
-                      UsageCase{"word_steps", "--headless --steps many", "--steps"},
-                      UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
-                      UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open", true},
-                      UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
-                      UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
-                      UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
+    ::testing::Values(
+        UsageCase{"unknown_option", "--headless --fast", "--fast"},
+        UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
+        UsageCase{"negative_steps", "--headless --steps -3", "--steps"},
+        UsageCase{"zero_dt", "--headless --dt 0", "--dt"},
+        UsageCase{"nan_dt", "--headless --dt nan", "--dt"},
+        UsageCase{"inf_time", "--headless --time inf", "--time"},
+        UsageCase{"zero_n", "--headless --n 0", "--n"},
+        UsageCase{"word_steps", "--headless --steps many", "--steps"},
+        UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
+        UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open",
+                  true},
+        UsageCase{"dump_into_missing_dir", "--headless --dump /no/such/dir/out.w", "/no/such/dir"},
+        UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
+        UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& testInfo) { return std::string(testInfo.param.name); });
 
 TEST(Cli, HelpAndVersion) {
   test::CommandResult help = runJello("--help");
   EXPECT_EQ(help.status, 0);
-  for (const char* option : {"--headless", "--steps", "--time", "--integrator", "--dt", "--n", "--dump"}) {
+  for (const char* option :
+       {"--headless", "--steps", "--time", "--integrator", "--dt", "--n", "--dump"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
   test::CommandResult version = runJello("--version");

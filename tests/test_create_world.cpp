@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "app/describe.h"
-#include "test_support.h"
 #include "app/worldbuilder.h"
+#include "test_support.h"
 
 namespace jello {
 namespace {
@@ -26,10 +26,11 @@ struct Result {
 
 Result createWorld(const std::string& args, const std::string& cwd = "") {
   std::string dir = test::makeTempDir();
-  std::string command = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + "'" + JELLO_CREATE_WORLD + "' " + args + " >" +
-                        dir + "/out 2>" + dir + "/err </dev/null";
+  std::string command = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + "'" + JELLO_CREATE_WORLD +
+                        "' " + args + " >" + dir + "/out 2>" + dir + "/err </dev/null";
   int raw = std::system(command.c_str());
-  Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, test::readText(dir + "/out"), test::readText(dir + "/err")};
+  Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, test::readText(dir + "/out"),
+           test::readText(dir + "/err")};
   test::removeTree(dir);
   return r;
 }
@@ -46,10 +47,12 @@ std::set<std::string> differences(const WorldFile& a, const WorldFile& b) {
   if (x.kCollision != y.kCollision) d.insert("kCollision");
   if (x.dCollision != y.dCollision) d.insert("dCollision");
   if (x.mass != y.mass) d.insert("mass");
-  if (x.hasPlane != y.hasPlane || (x.hasPlane && (x.plane.a != y.plane.a || x.plane.b != y.plane.b ||
-                                                  x.plane.c != y.plane.c || x.plane.d != y.plane.d)))
+  if (x.hasPlane != y.hasPlane ||
+      (x.hasPlane && (x.plane.a != y.plane.a || x.plane.b != y.plane.b || x.plane.c != y.plane.c ||
+                      x.plane.d != y.plane.d)))
     d.insert("plane");
-  if (x.field.resolution != y.field.resolution || x.field.forces != y.field.forces) d.insert("field");
+  if (x.field.resolution != y.field.resolution || x.field.forces != y.field.forces)
+    d.insert("field");
   if (!std::equal(a.state.p(), a.state.p() + kNumCoords, b.state.p())) d.insert("positions");
   if (!std::equal(a.state.v(), a.state.v() + kNumCoords, b.state.v())) d.insert("velocities");
   return d;
@@ -74,16 +77,26 @@ TEST_P(Preset, RebuildsTheCourseWorldWithinItsRounding) {
   EXPECT_EQ(m.integrator, c.integrator);
   EXPECT_EQ(m.n, c.n);
   EXPECT_EQ(m.hasPlane, c.hasPlane);
-  for (auto [x, y] : {std::pair{m.dt, c.dt}, {m.kElastic, c.kElastic}, {m.dElastic, c.dElastic},
-                      {m.kCollision, c.kCollision}, {m.dCollision, c.dCollision}, {m.mass, c.mass},
-                      {m.plane.a, c.plane.a}, {m.plane.b, c.plane.b}, {m.plane.c, c.plane.c}, {m.plane.d, c.plane.d}})
+  for (auto [x, y] : {std::pair{m.dt, c.dt},
+                      {m.kElastic, c.kElastic},
+                      {m.dElastic, c.dElastic},
+                      {m.kCollision, c.kCollision},
+                      {m.dCollision, c.dCollision},
+                      {m.mass, c.mass},
+                      {m.plane.a, c.plane.a},
+                      {m.plane.b, c.plane.b},
+                      {m.plane.c, c.plane.c},
+                      {m.plane.d, c.plane.d}})
     EXPECT_NEAR(x, y, 1e-6);
   ASSERT_EQ(m.field.resolution, c.field.resolution);
-  EXPECT_LE(maxDifference(m.field.forces.data(), c.field.forces.data(), c.field.forces.size()), 1e-6);
+  EXPECT_LE(maxDifference(m.field.forces.data(), c.field.forces.data(), c.field.forces.size()),
+            1e-6);
   EXPECT_LE(maxDifference(made.state.y.data(), course.state.y.data(), made.state.y.size()), 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(Course, Preset, ::testing::Values("jello", "rotate", "moveLeft", "skewedCorner", "gravity"));
+INSTANTIATE_TEST_SUITE_P(Course, Preset,
+                         ::testing::Values("jello", "rotate", "moveLeft", "skewedCorner",
+                                           "gravity"));
 
 TEST(CreateWorld, FromAWorldRoundTripsBitIdentically) {
   std::string dir = test::makeTempDir();
@@ -117,79 +130,132 @@ std::vector<OptionCase> optionCases() {
     return w.field.node((i * r + j) * r + k);
   };
   return {
-      {"integrator", "--integrator euler", {"integrator"}, [](const WorldFile& f) { EXPECT_EQ(f.world.integrator, Integrator::Euler); }},
+      {"integrator",
+       "--integrator euler",
+       {"integrator"},
+       [](const WorldFile& f) { EXPECT_EQ(f.world.integrator, Integrator::Euler); }},
       {"dt", "--dt 0.0025", {"dt"}, [](const WorldFile& f) { EXPECT_EQ(f.world.dt, 0.0025); }},
       {"n", "--n 4", {"n"}, [](const WorldFile& f) { EXPECT_EQ(f.world.n, 4); }},
-      {"k_elastic", "--k-elastic 123", {"kElastic"}, [](const WorldFile& f) { EXPECT_EQ(f.world.kElastic, 123); }},
-      {"d_elastic", "--d-elastic 1.5", {"dElastic"}, [](const WorldFile& f) { EXPECT_EQ(f.world.dElastic, 1.5); }},
-      {"k_collision", "--k-collision 0", {"kCollision"}, [](const WorldFile& f) { EXPECT_EQ(f.world.kCollision, 0); }},
-      {"d_collision", "--d-collision 2", {"dCollision"}, [](const WorldFile& f) { EXPECT_EQ(f.world.dCollision, 2); }},
+      {"k_elastic",
+       "--k-elastic 123",
+       {"kElastic"},
+       [](const WorldFile& f) { EXPECT_EQ(f.world.kElastic, 123); }},
+      {"d_elastic",
+       "--d-elastic 1.5",
+       {"dElastic"},
+       [](const WorldFile& f) { EXPECT_EQ(f.world.dElastic, 1.5); }},
+      {"k_collision",
+       "--k-collision 0",
+       {"kCollision"},
+       [](const WorldFile& f) { EXPECT_EQ(f.world.kCollision, 0); }},
+      {"d_collision",
+       "--d-collision 2",
+       {"dCollision"},
+       [](const WorldFile& f) { EXPECT_EQ(f.world.dCollision, 2); }},
       {"mass", "--mass 0.01", {"mass"}, [](const WorldFile& f) { EXPECT_EQ(f.world.mass, 0.01); }},
-      {"plane", "--plane 1 2 3 4", {"plane"}, [](const WorldFile& f) {
+      {"plane",
+       "--plane 1 2 3 4",
+       {"plane"},
+       [](const WorldFile& f) {
          EXPECT_TRUE(f.world.hasPlane);
          EXPECT_EQ(f.world.plane.c, 3);
        }},
-      {"field_uniform", "--field-uniform 1 -2 0.5", {"field"}, [=](const WorldFile& f) {
+      {"field_uniform",
+       "--field-uniform 1 -2 0.5",
+       {"field"},
+       [=](const WorldFile& f) {
          ASSERT_EQ(f.world.field.resolution, 30);
          EXPECT_EQ(nodeAt(f.world, 29, 3, 17).y, -2);
        }},
-      {"field_swirl", "--field-swirl 0.5 --field-resolution 5", {"field"}, [=](const WorldFile& f) {
+      {"field_swirl",
+       "--field-swirl 0.5 --field-resolution 5",
+       {"field"},
+       [=](const WorldFile& f) {
          Vec3 node = nodeAt(f.world, 4, 1, 2);  // at (2, -1, 0): 0.5 (1, 2, 0)
          EXPECT_EQ(node.x, 0.5);
          EXPECT_EQ(node.y, 1);
          EXPECT_EQ(node.z, 0);
        }},
-      {"field_radial", "--field-radial -0.25 --field-resolution 3", {"field"}, [=](const WorldFile& f) {
+      {"field_radial",
+       "--field-radial -0.25 --field-resolution 3",
+       {"field"},
+       [=](const WorldFile& f) {
          Vec3 node = nodeAt(f.world, 0, 1, 2);  // at (-2, 0, 2)
          EXPECT_EQ(node.x, 0.5);
          EXPECT_EQ(node.y, 0);
          EXPECT_EQ(node.z, -0.5);
        }},
-      {"field_resolution", "--field-resolution 4", {"field"}, [](const WorldFile& f) {
+      {"field_resolution",
+       "--field-resolution 4",
+       {"field"},
+       [](const WorldFile& f) {
          EXPECT_EQ(f.world.field.resolution, 4);
          EXPECT_EQ(classifyField(f.world.field).kind, FieldKind::Zero);
        }},
-      {"field_from", "--field-from " + rotate, {"field"}, [](const WorldFile& f) {
+      {"field_from",
+       "--field-from " + rotate,
+       {"field"},
+       [](const WorldFile& f) {
          EXPECT_EQ(f.world.field.forces, readWorldFile(dataPath("rotate.w")).world.field.forces);
        }},
-      {"cube_size", "--cube-size 0.5", {"positions"}, [](const WorldFile& f) {
+      {"cube_size",
+       "--cube-size 0.5",
+       {"positions"},
+       [](const WorldFile& f) {
          Extent e = extentOf(f.state);
          EXPECT_NEAR(e.upper.x - e.lower.x, 0.5, 1e-15);
          EXPECT_EQ(e.lower.z, 0);
        }},
-      {"center", "--center 1 -1 0.25", {"positions"}, [](const WorldFile& f) {
+      {"center",
+       "--center 1 -1 0.25",
+       {"positions"},
+       [](const WorldFile& f) {
          Vec3 c = centroidOf(f.state);
          EXPECT_NEAR(c.x, 1, 1e-14);
          EXPECT_NEAR(c.y, -1, 1e-14);
          EXPECT_NEAR(c.z, 0.25, 1e-14);
        }},
-      {"rotate", "--rotate 0 0 90", {"positions"}, [](const WorldFile& f) {
+      {"rotate",
+       "--rotate 0 0 90",
+       {"positions"},
+       [](const WorldFile& f) {
          // About the centre (0.5, 0.5, 0.5): p[7][0][0] = (1, 0, 0) goes to (1, 1, 0).
          Vec3 p = load(f.state.p(), pointIndex(7, 0, 0));
          EXPECT_NEAR(p.x, 1, 1e-14);
          EXPECT_NEAR(p.y, 1, 1e-14);
          EXPECT_NEAR(p.z, 0, 1e-14);
        }},
-      {"velocity", "--velocity 1 2 3", {"velocities"}, [](const WorldFile& f) {
-         EXPECT_EQ(load(f.state.v(), 300).z, 3);
-       }},
-      {"spin", "--spin 0 0 2", {"velocities"}, [](const WorldFile& f) {
+      {"velocity",
+       "--velocity 1 2 3",
+       {"velocities"},
+       [](const WorldFile& f) { EXPECT_EQ(load(f.state.v(), 300).z, 3); }},
+      {"spin",
+       "--spin 0 0 2",
+       {"velocities"},
+       [](const WorldFile& f) {
          // v = w x (p - c): at p[7][0][0] = (1, 0, 0), r = (0.5, -0.5, -0.5), v = (1, 1, 0).
          Vec3 v = load(f.state.v(), pointIndex(7, 0, 0));
          EXPECT_NEAR(v.x, 1, 1e-15);
          EXPECT_NEAR(v.y, 1, 1e-15);
          EXPECT_EQ(v.z, 0);
        }},
-      {"inside_out", "--inside-out", {"positions"}, [](const WorldFile& f) {
+      {"inside_out",
+       "--inside-out",
+       {"positions"},
+       [](const WorldFile& f) {
          // p[0][0][0] and p[7][7][7] trade places.
          EXPECT_NEAR(load(f.state.p(), 0).x, 1, 1e-15);
          EXPECT_NEAR(load(f.state.p(), pointIndex(7, 7, 7)).z, 0, 1e-15);
        }},
-      {"skew_corner", "--skew-corner 0.1 0 -0.05", {"positions"}, [](const WorldFile& f) {
+      {"skew_corner",
+       "--skew-corner 0.1 0 -0.05",
+       {"positions"},
+       [](const WorldFile& f) {
          Vec3 p = load(f.state.p(), pointIndex(7, 7, 7));
          EXPECT_NEAR(p.x, 1.1, 1e-15);
          EXPECT_NEAR(p.z, 0.95, 1e-15);
-         for (int q = 0; q < kNumPoints - 1; ++q) ASSERT_EQ(load(f.state.p(), q).x, load(test::restLattice().p(), q).x);
+         for (int q = 0; q < kNumPoints - 1; ++q)
+           ASSERT_EQ(load(f.state.p(), q).x, load(test::restLattice().p(), q).x);
        }},
   };
 }
@@ -216,7 +282,8 @@ TEST(CreateWorld, NoPlaneRemovesAPresetsPlane) {
   std::string dir = test::makeTempDir();
   ASSERT_EQ(createWorld("--preset gravity -o '" + dir + "/a.w'").status, 0);
   ASSERT_EQ(createWorld("--preset gravity --no-plane -o '" + dir + "/b.w'").status, 0);
-  EXPECT_EQ(differences(readWorldFile(dir + "/a.w"), readWorldFile(dir + "/b.w")), std::set<std::string>{"plane"});
+  EXPECT_EQ(differences(readWorldFile(dir + "/a.w"), readWorldFile(dir + "/b.w")),
+            std::set<std::string>{"plane"});
   test::removeTree(dir);
 }
 
@@ -272,7 +339,8 @@ TEST(CreateWorld, BadExpressionExitsTwoWithTheLibrarysMessage) {
   Result two = createWorld("--field-expr 'x; y' -o '" + dir + "/bad.w'");
   EXPECT_EQ(two.status, 2);
   EXPECT_NE(two.err.find("three expressions"), std::string::npos) << two.err;
-  Result infinite = createWorld("--field-resolution 3 --field-expr '1/x; 0; 0' -o '" + dir + "/bad.w'");
+  Result infinite =
+      createWorld("--field-resolution 3 --field-expr '1/x; 0; 0' -o '" + dir + "/bad.w'");
   EXPECT_EQ(infinite.status, 2);
   EXPECT_NE(infinite.err.find("not finite"), std::string::npos) << infinite.err;
   EXPECT_EQ(test::readText(dir + "/bad.w"), "") << "a refused world was written";
@@ -295,10 +363,10 @@ TEST(CreateWorld, NeverOverwritesWithoutForce) {
 
 TEST(CreateWorld, RefusesWorldsTheReaderWouldReject) {
   std::string dir = test::makeTempDir();
-  for (const char* bad : {"--dt 0", "--dt -1", "--mass 0", "--k-elastic -5", "--n 0", "--plane 0 0 0 1",
-                          "--integrator RK5", "--field-resolution 100000", "--field-resolution 1 --field-swirl 1",
-                          "--cube-size 0", "--velocity 1 2", "--dt nan", "--center inf 0 0", "--preset cube",
-                          "--from /no/such.w"}) {
+  for (const char* bad : {"--dt 0", "--dt -1", "--mass 0", "--k-elastic -5", "--n 0",
+                          "--plane 0 0 0 1", "--integrator RK5", "--field-resolution 100000",
+                          "--field-resolution 1 --field-swirl 1", "--cube-size 0", "--velocity 1 2",
+                          "--dt nan", "--center inf 0 0", "--preset cube", "--from /no/such.w"}) {
     Result r = createWorld(std::string(bad) + " -o '" + dir + "/bad.w'");
     EXPECT_EQ(r.status, 2) << bad;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << bad << ": " << r.err;
@@ -388,14 +456,18 @@ TEST(CreateWorld, WarnsWhenTheCubeStartsOutsideTheBoxOrAcrossThePlane) {
 
 TEST(Describe, RecognisesTheCourseFields) {
   const std::pair<const char*, const char*> expected[] = {
-      {"rotate.w", "swirl about z, F = 0.0097"}, {"gravity.w", "uniform F = (0, 0, -0.06) N"},
-      {"jello.w", "R = 30, zero"}, {"moveLeft.w", "left out    plane (none in the file)"}, {"jello.w", "-x + y + z + 2 = 0; the cube starts on its positive side"}};
+      {"rotate.w", "swirl about z, F = 0.0097"},
+      {"gravity.w", "uniform F = (0, 0, -0.06) N"},
+      {"jello.w", "R = 30, zero"},
+      {"moveLeft.w", "left out    plane (none in the file)"},
+      {"jello.w", "-x + y + z + 2 = 0; the cube starts on its positive side"}};
   for (auto [world, phrase] : expected) {
     Result r = createWorld(std::string("--describe '") + dataPath(world) + "'");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find(phrase), std::string::npos) << world << ":\n" << r.out;
   }
-  EXPECT_NEAR(classifyField(readWorldFile(dataPath("rotate.w")).world.field).strength, 5.0 / 512, 1e-6);
+  EXPECT_NEAR(classifyField(readWorldFile(dataPath("rotate.w")).world.field).strength, 5.0 / 512,
+              1e-6);
   FieldRecipe radial;
   radial.source = FieldRecipe::Source::Radial;
   radial.strength = -0.3;
@@ -419,9 +491,11 @@ TEST(ShowcaseWorlds, AreMadeByTheCommandsInTheirReadmes) {
       std::size_t out = line.rfind(" -o " + std::string(folder));
       ASSERT_NE(out, std::string::npos) << line;
       std::string name = line.substr(out + 4 + std::string(folder).size());
-      Result r = createWorld(line.substr(prefix.size(), out - prefix.size()) + " -o '" + dir + "/" + name + "'");
+      Result r = createWorld(line.substr(prefix.size(), out - prefix.size()) + " -o '" + dir + "/" +
+                             name + "'");
       ASSERT_EQ(r.status, 0) << line << "\n" << r.err;
-      EXPECT_EQ(test::readText(dir + "/" + name), test::readText(std::string(JELLO_SOURCE_DIR) + "/" + folder + name))
+      EXPECT_EQ(test::readText(dir + "/" + name),
+                test::readText(std::string(JELLO_SOURCE_DIR) + "/" + folder + name))
           << folder << name << " is not what its command makes";
       ++made;
     }
@@ -436,12 +510,17 @@ TEST(ShowcaseWorlds, RunOrStopCleanly) {
   std::string dir = test::makeTempDir();
   for (const char* folder : {"world/", "world/stress/"}) {
     std::string list = dir + "/list";
-    std::system(("ls '" + std::string(JELLO_SOURCE_DIR) + "/" + folder + "' | grep '[.]w$' > '" + list + "'").c_str());
+    std::system(("ls '" + std::string(JELLO_SOURCE_DIR) + "/" + folder + "' | grep '[.]w$' > '" +
+                 list + "'")
+                    .c_str());
     std::istringstream names(test::readText(list));
     for (std::string name; std::getline(names, name);) {
-      std::string path = std::string(JELLO_SOURCE_DIR) + "/" + folder + name, dump = dir + "/" + name;
-      test::CommandResult run = test::runJello("--headless --time 0.05 --dump '" + dump + "' '" + path + "'");
-      EXPECT_TRUE(run.status == 0 || run.status == 1) << name << ": " << run.status << " " << run.err;
+      std::string path = std::string(JELLO_SOURCE_DIR) + "/" + folder + name,
+                  dump = dir + "/" + name;
+      test::CommandResult run =
+          test::runJello("--headless --time 0.05 --dump '" + dump + "' '" + path + "'");
+      EXPECT_TRUE(run.status == 0 || run.status == 1)
+          << name << ": " << run.status << " " << run.err;
       EXPECT_EQ(run.out.find("nan"), std::string::npos) << name;
       if (run.status == 0) {
         EXPECT_NO_THROW(readWorldFile(dump)) << name << ": the dump must be a finite world";

@@ -6,9 +6,9 @@
 #include <random>
 #include <set>
 
+#include "physics.h"
 #include "solver/guard.h"
 #include "solver/jacobian.h"
-#include "physics.h"
 #include "test_support.h"
 
 namespace jello {
@@ -32,9 +32,14 @@ TEST(Springs, SixThousandTwoHundredTwentyWithIdealRestLengths) {
     bend += s.kind == SpringKind::Bend;
     pairs.insert({std::min(s.a, s.b), std::max(s.a, s.b)});
     EXPECT_NEAR(s.rest, length(load(rest.p(), s.a) - load(rest.p(), s.b)), 1e-15);
-    double expected = s.kind == SpringKind::Bend ? 2.0 / 7 : s.kind == SpringKind::Structural ? 1.0 / 7 : 0;
-    if (expected > 0) EXPECT_DOUBLE_EQ(s.rest, expected);
-    else EXPECT_TRUE(std::fabs(s.rest - std::sqrt(2.0) / 7) < 1e-15 || std::fabs(s.rest - std::sqrt(3.0) / 7) < 1e-15);
+    double expected = s.kind == SpringKind::Bend         ? 2.0 / 7
+                      : s.kind == SpringKind::Structural ? 1.0 / 7
+                                                         : 0;
+    if (expected > 0)
+      EXPECT_DOUBLE_EQ(s.rest, expected);
+    else
+      EXPECT_TRUE(std::fabs(s.rest - std::sqrt(2.0) / 7) < 1e-15 ||
+                  std::fabs(s.rest - std::sqrt(3.0) / 7) < 1e-15);
   }
   EXPECT_EQ(structural, 3 * 7 * 64);
   EXPECT_EQ(shear, 6 * 7 * 7 * 8 + 4 * 7 * 7 * 7);
@@ -55,8 +60,10 @@ TEST(Springs, RestLatticeUnderRigidMotionFeelsNoForce) {
   for (int q = 0; q < kNumPoints; ++q) {
     Vec3 r = load(state.p(), q) - Vec3{0.5, 0.5, 0.5};
     // Rodrigues' rotation of r about axis.
-    Vec3 cross{axis.y * r.z - axis.z * r.y, axis.z * r.x - axis.x * r.z, axis.x * r.y - axis.y * r.x};
-    Vec3 rotated = std::cos(angle) * r + std::sin(angle) * cross + (dot(axis, r) * (1 - std::cos(angle))) * axis;
+    Vec3 cross{axis.y * r.z - axis.z * r.y, axis.z * r.x - axis.x * r.z,
+               axis.x * r.y - axis.y * r.x};
+    Vec3 rotated = std::cos(angle) * r + std::sin(angle) * cross +
+                   (dot(axis, r) * (1 - std::cos(angle))) * axis;
     Vec3 spun{spin.y * rotated.z - spin.z * rotated.y, spin.z * rotated.x - spin.x * rotated.z,
               spin.x * rotated.y - spin.y * rotated.x};
     store(state.p(), q, rotated + shift);
@@ -133,8 +140,8 @@ TEST(Walls, PointBeyondOneWall) {
 TEST(Walls, PointBeyondTwoWallsGetsTwoSprings) {
   // 0.5 past x = -2 and 1 past y = 2: u_x = -x, u_y = +y.
   Vec3 f = wallForce({-2.5, 3, 0.5}, {1, -2, 9}, 1000, 0.25);
-  EXPECT_DOUBLE_EQ(f.x, 500 - 0.25 * 1);   // -k(-0.5) - d (v.u)(u_x) = 500 - 0.25*(-1)*(-1)
-  EXPECT_DOUBLE_EQ(f.y, -1000 + 0.5);      // -k(1) - d(-2)(1)
+  EXPECT_DOUBLE_EQ(f.x, 500 - 0.25 * 1);  // -k(-0.5) - d (v.u)(u_x) = 500 - 0.25*(-1)*(-1)
+  EXPECT_DOUBLE_EQ(f.y, -1000 + 0.5);     // -k(1) - d(-2)(1)
   EXPECT_EQ(f.z, 0);
 }
 
@@ -176,7 +183,7 @@ TEST(Plane, AllowedSideIsTheSideOfTheInitialCentroid) {
   World w = test::springsOnlyWorld();
   w.hasPlane = true;
   State rest = test::restLattice();  // centroid (0.5, 0.5, 0.5)
-  w.plane = {1, 0, 0, -0.25};         // centroid on the positive side
+  w.plane = {1, 0, 0, -0.25};        // centroid on the positive side
   EXPECT_EQ(makeModel(w, rest).planeSide(), 1);
   w.plane = {1, 0, 0, -0.75};  // negative side
   EXPECT_EQ(makeModel(w, rest).planeSide(), -1);
@@ -287,7 +294,8 @@ TEST(Field, TrilinearIsExactAtTheNodes) {
         for (int k = 0; k < r; k += 3) {
           Vec3 f = fieldForce(field, {-2 + h * i, -2 + h * j, -2 + h * k});
           const double* node = &field.forces[3 * ((i * r + j) * r + k)];
-          EXPECT_NEAR(f.x, node[0], tolerance) << "R=" << r << " node " << i << "," << j << "," << k;
+          EXPECT_NEAR(f.x, node[0], tolerance)
+              << "R=" << r << " node " << i << "," << j << "," << k;
           EXPECT_NEAR(f.y, node[1], tolerance);
           EXPECT_NEAR(f.z, node[2], tolerance);
         }
@@ -295,7 +303,9 @@ TEST(Field, TrilinearIsExactAtTheNodes) {
 }
 
 TEST(Field, TrilinearReproducesLinearFields) {
-  auto linear = [](Vec3 p) { return Vec3{0.3 * p.x - 0.2 * p.y + 0.7 * p.z + 0.1, -p.x + 0.5 * p.z, 2 * p.y - 0.25}; };
+  auto linear = [](Vec3 p) {
+    return Vec3{0.3 * p.x - 0.2 * p.y + 0.7 * p.z + 0.1, -p.x + 0.5 * p.z, 2 * p.y - 0.25};
+  };
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> inside(-2, 2);
   for (int r : {2, 3, 7, 30}) {
@@ -360,7 +370,8 @@ TEST(Field, ANotANumberCoordinateTakesAValidCellAndReadsNoOtherMemory) {
   store(state.p(), nan, {NAN, 0.5, 0.5});
   for (KernelChoice choice : {KernelChoice::Specialised, KernelChoice::General}) {
     Model model = makeModel(w, state, choice);
-    for (Vec3 outside : {Vec3{0, 0, 0}, Vec3{-2.5, 0, 0}}) {  // the field's own path, then the contact path
+    for (Vec3 outside :
+         {Vec3{0, 0, 0}, Vec3{-2.5, 0, 0}}) {  // the field's own path, then the contact path
       store(state.p(), far, outside);
       std::vector<double> force = forcesOf(model, state);
       EXPECT_TRUE(std::isnan(force[coordIndex(nan, 0)]));
@@ -387,15 +398,19 @@ TEST(Forces, TotalForceSumsEveryTermOnEveryPoint) {
   computeForces(model, state.p(), state.v(), force.data());
   const World& w = f.world;
   Vec3 expected = wallForce(load(state.p(), q), load(state.v(), q), w.kCollision, w.dCollision) +
-                  planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q), w.kCollision, w.dCollision) +
+                  planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q),
+                             w.kCollision, w.dCollision) +
                   fieldForce(w.field, load(state.p(), q));
   for (const Spring& s : model.springs()) {
     if (s.a != q && s.b != q) continue;
-    Vec3 fs = springForce(load(state.p(), s.a) - load(state.p(), s.b), load(state.v(), s.a) - load(state.v(), s.b),
-                          w.kElastic, w.dElastic, s.rest);
+    Vec3 fs =
+        springForce(load(state.p(), s.a) - load(state.p(), s.b),
+                    load(state.v(), s.a) - load(state.v(), s.b), w.kElastic, w.dElastic, s.rest);
     expected += s.a == q ? fs : -fs;
   }
-  EXPECT_NE(planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q), 1, 0).x, 0) << "plane not hit";
+  EXPECT_NE(planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q), 1, 0).x,
+            0)
+      << "plane not hit";
   Vec3 got = load(force.data(), q);
   EXPECT_NEAR(got.x, expected.x, 1e-9);
   EXPECT_NEAR(got.y, expected.y, 1e-9);

@@ -1,7 +1,6 @@
 // Pictures: the off-screen renderer, JPEG files, frame sequences, and --frames from the
 // command line (README: Running, The viewer). Built only where GL and OSMesa are.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 
 #include <cmath>
@@ -26,12 +25,15 @@ Rgb pixel(const Image& image, int x, int y) {
   return {p[0], p[1], p[2]};
 }
 
-bool isBackground(Rgb c) { return std::abs(c.r - 128) <= 6 && std::abs(c.g - 128) <= 6 && std::abs(c.b - 128) <= 6; }
+bool isBackground(Rgb c) {
+  return std::abs(c.r - 128) <= 6 && std::abs(c.g - 128) <= 6 && std::abs(c.b - 128) <= 6;
+}
 
 double meanAbsoluteDifference(const Image& a, const Image& b) {
   EXPECT_EQ(a.rgb.size(), b.rgb.size());
   double sum = 0;
-  for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
+  for (std::size_t i = 0; i < a.rgb.size() && i < b.rgb.size(); ++i)
+    sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
   return sum / a.rgb.size();
 }
 
@@ -77,7 +79,8 @@ TEST(Offscreen, FrameOfAKnownStateIsAGreyPictureWithTheCubeWhereTheCameraPutsIt)
     projectToPixel(camera, centroid(f.state), 320, 240, &x, &y);
     ASSERT_TRUE(x >= 0 && x < 320 && y >= 0 && y < 240) << x << "," << y;
     Rgb c = pixel(view, int(x), int(y));
-    EXPECT_FALSE(isBackground(c)) << "camera phi=" << camera.phi << ": " << c.r << " " << c.g << " " << c.b;
+    EXPECT_FALSE(isBackground(c)) << "camera phi=" << camera.phi << ": " << c.r << " " << c.g << " "
+                                  << c.b;
     EXPECT_GT(c.r, c.g + 40) << "the jelly is red";
     // A point well outside the cube's image is background.
     projectToPixel(camera, centroid(f.state) + Vec3{0, 0, 1.5}, 320, 240, &x, &y);
@@ -93,7 +96,8 @@ TEST(Offscreen, ColouringsAndSpringsChangeThePicture) {
   DrawOptions options;
   for (Coloring coloring : {Coloring::Strain, Coloring::Force}) {
     options.coloring = coloring;
-    EXPECT_GT(meanAbsoluteDifference(plain, renderer.render(model, f.state, Camera{}, options)), 0.5)
+    EXPECT_GT(meanAbsoluteDifference(plain, renderer.render(model, f.state, Camera{}, options)),
+              0.5)
         << coloringName(coloring);
   }
   options = DrawOptions{};
@@ -112,7 +116,8 @@ TEST(Jpeg, RoundTripKeepsSizeAndPixelsClose) {
   image.width = 64;
   image.height = 48;
   for (int y = 0; y < 48; ++y)
-    for (int x = 0; x < 64; ++x) image.rgb.insert(image.rgb.end(), {std::uint8_t(x * 4), std::uint8_t(y * 5), 90});
+    for (int x = 0; x < 64; ++x)
+      image.rgb.insert(image.rgb.end(), {std::uint8_t(x * 4), std::uint8_t(y * 5), 90});
   std::string dir = test::makeTempDir();
   writeJpeg(dir + "/a.jpg", image);
   Image back = readJpeg(dir + "/a.jpg");
@@ -133,7 +138,7 @@ Image tiny(std::uint8_t shade) {
 }
 
 TEST(FrameSequence, NumbersFromZeroAndStopsAtTheMost) {
-  std::string dir = test::makeTempDir() ;
+  std::string dir = test::makeTempDir();
   FrameSequence frames(dir + "/a/b/", 3, false);
   for (int i = 0; i < 5; ++i) frames.save(tiny(10));
   EXPECT_EQ(frames.written(), 3);
@@ -184,7 +189,8 @@ TEST(FrameSequence, NewFoldersAreMadeOnceEachAndNeverShared) {
 TEST(CliFrames, HeadlessFramesAreNumberedCappedAndNeverOverwritten) {
   std::string dir = test::makeTempDir();
   std::string frames = dir + "/out frames";
-  std::string args = "--headless --steps 30 --max-frames 5 --frames '" + frames + "' '" + dataPath("rotate.w") + "'";
+  std::string args = "--headless --steps 30 --max-frames 5 --frames '" + frames + "' '" +
+                     dataPath("rotate.w") + "'";
   test::CommandResult r = test::runJello(args);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("5 frames in " + frames + "/"), std::string::npos) << r.out;
@@ -209,11 +215,12 @@ TEST(CliFrames, HeadlessFramesAreNumberedCappedAndNeverOverwritten) {
 
 TEST(CliFrames, FramesOfRotateChangeOverTime) {
   std::string dir = test::makeTempDir();
-  test::CommandResult r =
-      test::runJello("--headless --n 300 --steps 900 --frames '" + dir + "' '" + dataPath("rotate.w") + "'");
+  test::CommandResult r = test::runJello("--headless --n 300 --steps 900 --frames '" + dir + "' '" +
+                                         dataPath("rotate.w") + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(countFrames(dir), 4);  // steps 0, 300, 600, 900
-  Image a = readJpeg(dir + "/0000.jpg"), b = readJpeg(dir + "/0001.jpg"), c = readJpeg(dir + "/0003.jpg");
+  Image a = readJpeg(dir + "/0000.jpg"), b = readJpeg(dir + "/0001.jpg"),
+        c = readJpeg(dir + "/0003.jpg");
   EXPECT_GT(meanAbsoluteDifference(a, b), 0.2);
   EXPECT_GT(meanAbsoluteDifference(b, c), 0.2);
   test::removeTree(dir);
@@ -221,12 +228,14 @@ TEST(CliFrames, FramesOfRotateChangeOverTime) {
 
 TEST(CliFrames, WithoutADisplayItRunsHeadlessIntoANewFolderItNames) {
   std::string dir = test::makeTempDir();
-  test::CommandResult r = test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+  test::CommandResult r =
+      test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("animation/rotate-001"), std::string::npos) << r.err;
   EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 3);
-  test::CommandResult again = test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+  test::CommandResult again =
+      test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(countFrames(dir + "/animation/rotate-002"), 3);
   test::removeTree(dir);
@@ -234,8 +243,8 @@ TEST(CliFrames, WithoutADisplayItRunsHeadlessIntoANewFolderItNames) {
 
 TEST(CliFrames, BadSizeIsRefused) {
   for (const char* size : {"640", "0x480", "640x480x3", "axb", "20000x20"}) {
-    test::CommandResult r = test::runJello(std::string("--headless --size ") + size + " --frames /tmp/never '" +
-                                           dataPath("rotate.w") + "'");
+    test::CommandResult r = test::runJello(std::string("--headless --size ") + size +
+                                           " --frames /tmp/never '" + dataPath("rotate.w") + "'");
     EXPECT_EQ(r.status, 2) << size;
     EXPECT_NE(r.err.find("--size"), std::string::npos) << r.err;
   }

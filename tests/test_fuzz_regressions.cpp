@@ -1,9 +1,8 @@
 // Every input a fuzzer ever found a fault with (tests/data/fuzz/: world-* for the reader, expr-*
-// for field expressions, cli-* for jello's command line), and the fuzzers' seeds, replayed through the fuzzers' own checks,
-// which abort on a fault. See `make fuzz`.
-#include <gtest/gtest.h>
-
+// for field expressions, cli-* for jello's command line), and the fuzzers' seeds, replayed through
+// the fuzzers' own checks, which abort on a fault. See `make fuzz`.
 #include <dirent.h>
+#include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
@@ -19,14 +18,16 @@ std::vector<std::string> filesIn(const std::string& dir, const std::string& pref
   if (DIR* d = ::opendir(dir.c_str())) {
     while (dirent* e = ::readdir(d)) {
       std::string name = e->d_name;
-      if (name.rfind(prefix, 0) == 0 && name != "." && name != "..") out.push_back(dir + "/" + name);
+      if (name.rfind(prefix, 0) == 0 && name != "." && name != "..")
+        out.push_back(dir + "/" + name);
     }
     ::closedir(d);
   }
   return out;
 }
 
-void replay(const std::vector<std::string>& files, void (*check)(const std::uint8_t*, std::size_t)) {
+void replay(const std::vector<std::string>& files,
+            void (*check)(const std::uint8_t*, std::size_t)) {
   for (const std::string& path : files) {
     SCOPED_TRACE(path);
     std::string bytes = test::readText(path);
@@ -36,7 +37,8 @@ void replay(const std::vector<std::string>& files, void (*check)(const std::uint
 
 TEST(FuzzRegressions, WorldReaderInputs) {
   std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "world-");
-  for (const char* world : {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w", "still.w"})
+  for (const char* world :
+       {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w", "still.w"})
     files.push_back(test::dataPath(world));
   ASSERT_GE(files.size(), 8u);
   replay(files, fuzz::checkWorldText);

@@ -8,10 +8,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/stability.h"
+#include "physics.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
-#include "physics.h"
-#include "app/stability.h"
 #include "test_support.h"
 
 namespace jello {
@@ -24,7 +24,8 @@ State tumblingCube(unsigned seed, double jitter) {
   std::uniform_real_distribution<double> any(-1, 1);
   Vec3 drift{0.3, -0.2, 0.1}, spin{1.5, -2, 3};
   for (int q = 0; q < kNumPoints; ++q) {
-    Vec3 r = load(state.p(), q) - Vec3{0.5, 0.5, 0.5} + jitter * Vec3{any(random), any(random), any(random)};
+    Vec3 r = load(state.p(), q) - Vec3{0.5, 0.5, 0.5} +
+             jitter * Vec3{any(random), any(random), any(random)};
     store(state.p(), q, r);
     store(state.v(), q, drift + cross(spin, r) + 0.2 * Vec3{any(random), any(random), any(random)});
   }
@@ -51,7 +52,8 @@ Vec3 angularMomentum(const State& s, double mass) {
 
 double energy(const Model& model, const State& s) {
   double e = 0;
-  for (int q = 0; q < kNumPoints; ++q) e += 0.5 * model.world.mass * dot(load(s.v(), q), load(s.v(), q));
+  for (int q = 0; q < kNumPoints; ++q)
+    e += 0.5 * model.world.mass * dot(load(s.v(), q), load(s.v(), q));
   for (const Spring& sp : model.springs()) {
     double stretch = length(load(s.p(), sp.a) - load(s.p(), sp.b)) - sp.rest;
     e += 0.5 * model.world.kElastic * stretch * stretch;
@@ -203,8 +205,8 @@ SmoothScene smoothScene() {
   w.dElastic = 0.05;
   w.field.resolution = 2;
   for (int node = 0; node < 8; ++node) {
-    w.field.forces.insert(w.field.forces.end(),
-                          {0.01 * (node & 1), -0.02 * ((node >> 1) & 1), 0.015 * ((node >> 2) & 1) - 0.01});
+    w.field.forces.insert(w.field.forces.end(), {0.01 * (node & 1), -0.02 * ((node >> 1) & 1),
+                                                 0.015 * ((node >> 2) & 1) - 0.01});
   }
   // Stretched and squeezed, spinning, drifting: the smooth, slow deformation of a jello, with
   // a little jitter so that every mode is in play.
@@ -271,15 +273,17 @@ TEST_P(ConvergenceOrder, MatchesTheory) {
     std::printf("%s dt=%g rms error %.3e\n", integratorName(c.integrator), dt, errors.back());
   }
   double order = fittedOrder(dts, errors);
-  std::printf("%s fitted order %.3f (theory %d)\n", integratorName(c.integrator), order, orderOf(c.integrator));
+  std::printf("%s fitted order %.3f (theory %d)\n", integratorName(c.integrator), order,
+              orderOf(c.integrator));
   EXPECT_NEAR(order, orderOf(c.integrator), 0.3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, ConvergenceOrder,
-                         ::testing::Values(OrderCase{Integrator::Euler, 2e-4}, OrderCase{Integrator::Symplectic, 2e-4},
-                                           OrderCase{Integrator::Midpoint, 1e-3}, OrderCase{Integrator::Verlet, 1e-3},
-                                           OrderCase{Integrator::RK4, 2e-3}, OrderCase{Integrator::Implicit, 1e-3}),
-                         [](const auto& testInfo) { return std::string(integratorName(testInfo.param.integrator)); });
+INSTANTIATE_TEST_SUITE_P(
+    Integrators, ConvergenceOrder,
+    ::testing::Values(OrderCase{Integrator::Euler, 2e-4}, OrderCase{Integrator::Symplectic, 2e-4},
+                      OrderCase{Integrator::Midpoint, 1e-3}, OrderCase{Integrator::Verlet, 1e-3},
+                      OrderCase{Integrator::RK4, 2e-3}, OrderCase{Integrator::Implicit, 1e-3}),
+    [](const auto& testInfo) { return std::string(integratorName(testInfo.param.integrator)); });
 
 TEST(Rk45, MeetsItsToleranceWithinAFactorOfTen) {
   SmoothScene scene = smoothScene();
@@ -288,8 +292,9 @@ TEST(Rk45, MeetsItsToleranceWithinAFactorOfTen) {
     Stepper stepper(Integrator::RK45, {tolerance, tolerance});
     State s = runFor(scene, stepper, 0.01, kSmoothTime);  // dt: the first and largest step
     double error = test::rmsDistance(s.p(), reference.p());
-    std::printf("RK45 tolerance %g: rms error %.3e, %lld steps, %lld rejected, %lld evaluations\n", tolerance, error,
-                stepper.stats().steps, stepper.stats().rejected, stepper.stats().evaluations);
+    std::printf("RK45 tolerance %g: rms error %.3e, %lld steps, %lld rejected, %lld evaluations\n",
+                tolerance, error, stepper.stats().steps, stepper.stats().rejected,
+                stepper.stats().evaluations);
     EXPECT_LT(error, 10 * tolerance);
     EXPECT_GT(stepper.stats().steps, 4) << "the steps did not adapt";
   }
@@ -298,7 +303,7 @@ TEST(Rk45, MeetsItsToleranceWithinAFactorOfTen) {
 TEST(Rk45, TheErrorNormNeitherOverflowsNorUnderflows) {
   const double ordinary[] = {3, 4}, huge[] = {3e200, 4e200}, tiny[] = {3e-200, 4e-200};
   EXPECT_EQ(rmsNorm(ordinary, 2), std::sqrt(12.5)) << "the usual formula, bit for bit";
-  EXPECT_NEAR(rmsNorm(huge, 2), std::sqrt(12.5) * 1e200, 1e-15 * 1e200);  // the squares overflow
+  EXPECT_NEAR(rmsNorm(huge, 2), std::sqrt(12.5) * 1e200, 1e-15 * 1e200);    // the squares overflow
   EXPECT_NEAR(rmsNorm(tiny, 2), std::sqrt(12.5) * 1e-200, 1e-15 * 1e-200);  // ... or underflow
   const double infinite[] = {1, INFINITY}, notANumber[] = {NAN, 1e300};
   EXPECT_EQ(rmsNorm(infinite, 2), INFINITY);
@@ -405,8 +410,8 @@ TEST(Implicit, StableAtTenTimesRk4sLargestStableStepOnAStiffWorld) {
   }
   // Backward Euler dissipates: the vibration is gone, the motion bounded.
   EXPECT_LT(energy(model, state), energy(model, start));
-  std::printf("IMPLICIT at %.3g s: %lld Newton iterations over %lld steps\n", dt, stepper.stats().newtonIterations,
-              stepper.stats().steps);
+  std::printf("IMPLICIT at %.3g s: %lld Newton iterations over %lld steps\n", dt,
+              stepper.stats().newtonIterations, stepper.stats().steps);
 }
 
 // Central differences of the total force against the analytic Jacobians, on a state that
@@ -422,7 +427,8 @@ TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
   std::uniform_real_distribution<double> any(-0.05, 0.05);
   for (int i = 0; i < 27 * 3; ++i) w.field.forces.push_back(any(random));
   State state = tumblingCube(16, 0.05);
-  for (int c = 0; c < kNumCoords; ++c) state.p()[c] += 0.3;  // centroid on the plane's positive side
+  for (int c = 0; c < kNumCoords; ++c)
+    state.p()[c] += 0.3;  // centroid on the plane's positive side
   Model model = makeModel(w, state);
   store(state.p(), 0, {-2.1, 2.05, 0.2});   // past two walls
   store(state.p(), 1, {-0.5, -0.5, -0.5});  // across the plane
@@ -489,7 +495,8 @@ TEST(IntegratorTable, EveryNameReadsBackFromAWorldFile) {
   WorldFile f = readWorldFile(test::dataPath("jello.w"));
   for (const IntegratorInfo& row : integratorTable()) {
     f.world.integrator = row.integrator;
-    EXPECT_EQ(parseWorld(formatWorld(f.world, f.state), "table.w").world.integrator, row.integrator) << row.name;
+    EXPECT_EQ(parseWorld(formatWorld(f.world, f.state), "table.w").world.integrator, row.integrator)
+        << row.name;
   }
 }
 
@@ -546,7 +553,8 @@ TEST(IntegratorTable, TheReadmesListAgreesWithIt) {
     std::istringstream cellText(line.substr(1));
     for (std::string cell; std::getline(cellText, cell, '|');) cells.push_back(cell);
     ASSERT_GE(cells.size(), 3u) << line;
-    const std::string name = cells[0].substr(cells[0].find('`') + 1, cells[0].rfind('`') - cells[0].find('`') - 1);
+    const std::string name =
+        cells[0].substr(cells[0].find('`') + 1, cells[0].rfind('`') - cells[0].find('`') - 1);
     Integrator integrator;
     ASSERT_TRUE(parseIntegratorName(name, &integrator)) << "the README lists " << name;
     EXPECT_EQ(std::stoi(cells[2]), orderOf(integrator)) << name;

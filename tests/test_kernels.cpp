@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "test_support.h"
 
 namespace jello {
@@ -24,7 +24,8 @@ double relativeDifference(const std::vector<double>& a, const std::vector<double
 
 // 1000 steps with each kernel from the same state; the largest relative difference of the
 // states along the way (a NaN counts as a failure).
-double kernelsDisagreeBy(const World& world, const State& start, Integrator integrator = Integrator::RK4) {
+double kernelsDisagreeBy(const World& world, const State& start,
+                         Integrator integrator = Integrator::RK4) {
   Model specialised = makeModel(world, start, KernelChoice::Specialised);
   Model general = makeModel(world, start, KernelChoice::General);
   EXPECT_TRUE(specialised.scene.culling && !general.scene.culling);
@@ -37,7 +38,8 @@ double kernelsDisagreeBy(const World& world, const State& start, Integrator inte
     double d = relativeDifference(a.y, b.y);
     if (!(d <= worst)) worst = d;  // keeps a NaN
   }
-  EXPECT_EQ(findDivergedPoint(b), -1) << "the general run diverged: the comparison would mean little";
+  EXPECT_EQ(findDivergedPoint(b), -1)
+      << "the general run diverged: the comparison would mean little";
   return worst;
 }
 
@@ -52,7 +54,9 @@ TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
   for (std::size_t o = 0; o < groups.size(); ++o) {
     const SpringGroup& g = groups[o];
     const SpringOffset& offset = kSpringOffsets[o];
-    EXPECT_DOUBLE_EQ(g.rest, std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj + offset.dk * offset.dk)) / 7);
+    EXPECT_DOUBLE_EQ(g.rest, std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj +
+                                              offset.dk * offset.dk)) /
+                                 7);
     std::vector<bool> slot(kNumPoints, false);
     for (const SpringGroup::Span& span : g.spans)
       for (int q = span.begin; q < span.end; ++q) {
@@ -64,7 +68,8 @@ TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
       for (int j = 0; j < kLatticeSize; ++j)
         for (int k = 0; k < kLatticeSize; ++k) {
           const int q = pointIndex(i, j, k);
-          const bool neighbour = inside(i + offset.di) && inside(j + offset.dj) && inside(k + offset.dk);
+          const bool neighbour =
+              inside(i + offset.di) && inside(j + offset.dj) && inside(k + offset.dk);
           if (neighbour) {
             EXPECT_TRUE(slot[q]) << "group " << o << ": no slot for point " << q;
             EXPECT_EQ(q + g.delta, pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
@@ -90,7 +95,8 @@ TEST_P(CourseKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Worlds, CourseKernels,
-                         ::testing::Values("jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"),
+                         ::testing::Values("jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w",
+                                           "gravity.w"),
                          [](const auto& testInfo) {
                            std::string name = testInfo.param;
                            return name.substr(0, name.find('.'));
@@ -108,11 +114,13 @@ World randomWorld(std::mt19937& random, State* start) {
   w.kCollision = 500 + 1500 * unit(random);
   w.dCollision = random() % 3 == 0 ? 0 : unit(random);
   w.hasPlane = random() % 2 == 0;
-  if (w.hasPlane) w.plane = {centred(random), centred(random), 1 + unit(random), 0.8 + unit(random)};
+  if (w.hasPlane)
+    w.plane = {centred(random), centred(random), 1 + unit(random), 0.8 + unit(random)};
   const int kind = static_cast<int>(random() % 4);  // absent, zero, uniform, trilinear
   if (kind > 0) {
     w.field.resolution = 2 + static_cast<int>(random() % 5);
-    std::size_t nodes = static_cast<std::size_t>(w.field.resolution) * w.field.resolution * w.field.resolution;
+    std::size_t nodes =
+        static_cast<std::size_t>(w.field.resolution) * w.field.resolution * w.field.resolution;
     w.field.forces.assign(3 * nodes, 0.0);
     Vec3 constant{centred(random), centred(random), centred(random)};
     for (std::size_t n = 0; n < nodes; ++n) {
@@ -136,7 +144,8 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
     State start;
     World w = randomWorld(random, &start);
     double d = kernelsDisagreeBy(w, start);
-    std::printf("random world %d (%s): %.3g\n", world, sceneLine(makeModel(w, start).scene).c_str(), d);
+    std::printf("random world %d (%s): %.3g\n", world, sceneLine(makeModel(w, start).scene).c_str(),
+                d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
   }
 }
@@ -150,8 +159,10 @@ TEST(Culling, APointJustPastAWallOrThePlaneIsNotMissed) {
   w.hasPlane = true;
   w.plane = {0, 0, 1, 1};  // z = -1; the cube is above it
   State s = test::restLattice();
-  Model specialised = makeModel(w, s, KernelChoice::Specialised), general = makeModel(w, s, KernelChoice::General);
-  for (Vec3 p : {Vec3{0.5, 0.5, -1 - 1e-12}, Vec3{2 + 1e-12, 0.5, 0.5}, Vec3{0.5, -2 - 1e-15, 0.5}}) {
+  Model specialised = makeModel(w, s, KernelChoice::Specialised),
+        general = makeModel(w, s, KernelChoice::General);
+  for (Vec3 p :
+       {Vec3{0.5, 0.5, -1 - 1e-12}, Vec3{2 + 1e-12, 0.5, 0.5}, Vec3{0.5, -2 - 1e-15, 0.5}}) {
     State t = s;
     store(t.p(), pointIndex(3, 3, 3), p);
     store(t.v(), pointIndex(3, 3, 3), {1, 1, 1});  // so that the contact's damper adds 0.5 N
@@ -178,7 +189,8 @@ TEST(Scene, FieldAndPlaneAnalysis) {
   World w;
   w.dElastic = 0.25;
   EXPECT_EQ(fieldUse(w.field), FieldUse::Absent);
-  EXPECT_NE(sceneOf(w).find("left out: plane (none in the file), field (none in the file)"), std::string::npos)
+  EXPECT_NE(sceneOf(w).find("left out: plane (none in the file), field (none in the file)"),
+            std::string::npos)
       << sceneOf(w);
   w.field.resolution = 2;
   w.field.forces.assign(24, 0.0);
@@ -186,21 +198,25 @@ TEST(Scene, FieldAndPlaneAnalysis) {
   EXPECT_NE(sceneOf(w).find("field (all zero)"), std::string::npos) << sceneOf(w);
   for (std::size_t n = 0; n < 8; ++n) w.field.setNode(n, {0, 0, -9.8});
   EXPECT_EQ(fieldUse(w.field), FieldUse::Uniform);
-  EXPECT_NE(sceneOf(w).find("kept: springs, dampers, walls (when the cube's bounding box reaches them), field "
-                            "(uniform: a constant, no interpolation)"),
+  EXPECT_NE(sceneOf(w).find(
+                "kept: springs, dampers, walls (when the cube's bounding box reaches them), field "
+                "(uniform: a constant, no interpolation)"),
             std::string::npos)
       << sceneOf(w);
   w.field.setNode(7, {0, 0, std::nextafter(-9.8, 0.0)});
   EXPECT_EQ(fieldUse(w.field), FieldUse::Trilinear);
   EXPECT_NE(sceneOf(w).find("field (trilinear, 2^3 nodes)"), std::string::npos) << sceneOf(w);
   w.dElastic = 0;
-  EXPECT_NE(sceneOf(w).find("left out: dampers (zero damping), plane"), std::string::npos) << sceneOf(w);
+  EXPECT_NE(sceneOf(w).find("left out: dampers (zero damping), plane"), std::string::npos)
+      << sceneOf(w);
   w.dElastic = 0.1;
   w.hasPlane = true;
   w.plane = {0, 0, 1, 1};
-  EXPECT_NE(sceneOf(w).find("kept: springs, dampers, walls (when the cube's bounding box reaches them), plane (when "
-                            "the bounding box reaches it), field (trilinear"),
-            std::string::npos)
+  EXPECT_NE(
+      sceneOf(w).find(
+          "kept: springs, dampers, walls (when the cube's bounding box reaches them), plane (when "
+          "the bounding box reaches it), field (trilinear"),
+      std::string::npos)
       << sceneOf(w);
   EXPECT_NE(sceneOf(w).find("left out: nothing"), std::string::npos) << sceneOf(w);
 }
@@ -232,8 +248,9 @@ TEST(Scene, RotateKeepsItsField) {
 TEST(Scene, TheGeneralKernelFromTheCommandLineGivesTheSameResult) {
   std::string dir = test::makeTempDir();
   for (const char* kernel : {"specialised", "general"}) {
-    test::CommandResult r = test::runJello("--headless --steps 300 --kernel " + std::string(kernel) + " --dump '" + dir +
-                                           "/" + kernel + ".w' '" + test::dataPath("moveLeft.w") + "'");
+    test::CommandResult r =
+        test::runJello("--headless --steps 300 --kernel " + std::string(kernel) + " --dump '" +
+                       dir + "/" + kernel + ".w' '" + test::dataPath("moveLeft.w") + "'");
     EXPECT_EQ(r.status, 0) << r.err;
   }
   EXPECT_EQ(test::readText(dir + "/specialised.w"), test::readText(dir + "/general.w"));

@@ -18,10 +18,12 @@ namespace {
 namespace fs = std::filesystem;
 
 std::optional<int> layerOf(const std::string& path) {
-  static const std::map<std::string, int> folders = {{"core", 0}, {"forces", 1}, {"solver", 2}, {"app", 3}, {"graphics", 4}};
+  static const std::map<std::string, int> folders = {
+      {"core", 0}, {"forces", 1}, {"solver", 2}, {"app", 3}, {"graphics", 4}};
   static const std::map<std::string, int> rootFiles = {
-      {"world.h", 1},    {"vec3.h", 1},     {"input.cpp", 1}, {"physics.h", 1},      {"physics.cpp", 1},
-      {"showCube.h", 4}, {"showCube.cpp", 4}, {"jello.cpp", 5}, {"createWorld.cpp", 5}};
+      {"world.h", 1},      {"vec3.h", 1},      {"input.cpp", 1},
+      {"physics.h", 1},    {"physics.cpp", 1}, {"showCube.h", 4},
+      {"showCube.cpp", 4}, {"jello.cpp", 5},   {"createWorld.cpp", 5}};
   const std::size_t slash = path.find('/');
   if (slash != std::string::npos) {
     auto folder = folders.find(path.substr(0, slash));
@@ -36,9 +38,11 @@ std::vector<std::string> projectSources() {
   const fs::path root = JELLO_SOURCE_DIR;
   std::vector<std::string> out;
   for (const char* folder : {"core", "forces", "solver", "app", "graphics"})
-    for (const auto& entry : fs::directory_iterator(root / folder)) out.push_back(std::string(folder) + "/" + entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(root / folder))
+      out.push_back(std::string(folder) + "/" + entry.path().filename().string());
   for (const auto& entry : fs::directory_iterator(root))
-    if (entry.is_regular_file() && layerOf(entry.path().filename().string())) out.push_back(entry.path().filename().string());
+    if (entry.is_regular_file() && layerOf(entry.path().filename().string()))
+      out.push_back(entry.path().filename().string());
   return out;
 }
 
@@ -49,7 +53,8 @@ std::vector<std::string> breaches(const std::string& path) {
   const std::regex include(R"(\s*#include\s+[<"]([^>"]+)[>"].*)");
   const int own = *layerOf(path);
   const bool eigenAllowed = (path.rfind("solver/", 0) == 0 || path.rfind("app/", 0) == 0) &&
-                            ((path.size() > 4 && path.compare(path.size() - 4, 4, ".cpp") == 0) || path == "solver/jacobian.h");
+                            ((path.size() > 4 && path.compare(path.size() - 4, 4, ".cpp") == 0) ||
+                             path == "solver/jacobian.h");
   const bool glAllowed = path.rfind("graphics/", 0) == 0 || path == "showCube.cpp";
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -57,9 +62,11 @@ std::vector<std::string> breaches(const std::string& path) {
     if (!std::regex_match(line, match, include)) continue;
     const std::string target = match[1];
     const std::string where = path + ":" + std::to_string(number) + ": ";
-    if (std::optional<int> theirs = layerOf(target); theirs && *theirs > own) out.push_back(where + "includes " + target + ", a layer above");
+    if (std::optional<int> theirs = layerOf(target); theirs && *theirs > own)
+      out.push_back(where + "includes " + target + ", a layer above");
     if (target.rfind("Eigen/", 0) == 0 && !eigenAllowed) out.push_back(where + "includes Eigen");
-    if ((target.rfind("GL/", 0) == 0 || target.rfind("GLUT/", 0) == 0) && !glAllowed) out.push_back(where + "includes GL");
+    if ((target.rfind("GL/", 0) == 0 || target.rfind("GLUT/", 0) == 0) && !glAllowed)
+      out.push_back(where + "includes GL");
   }
   return out;
 }

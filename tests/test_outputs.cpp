@@ -1,8 +1,7 @@
 // What jello writes, and what it never does: hostile file names, full disks, signals, two runs
 // at once, files it was not told to replace (issue 12; README "Reliability").
-#include <gtest/gtest.h>
-
 #include <dirent.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -18,9 +17,9 @@
 #include <vector>
 
 #include "app/commandline.h"
+#include "app/stability.h"
 #include "core/output.h"
 #include "core/plot.h"
-#include "app/stability.h"
 #include "test_support.h"
 
 namespace jello {
@@ -30,14 +29,17 @@ std::vector<std::string> entries(const std::string& dir) {
   std::vector<std::string> names;
   if (DIR* d = ::opendir(dir.c_str())) {
     while (dirent* e = ::readdir(d))
-      if (std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.push_back(e->d_name);
+      if (std::string(e->d_name) != "." && std::string(e->d_name) != "..")
+        names.push_back(e->d_name);
     ::closedir(d);
   }
   std::sort(names.begin(), names.end());
   return names;
 }
 
-int lines(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
 off_t sizeOf(const std::string& path) {
   struct stat info {};
@@ -46,9 +48,9 @@ off_t sizeOf(const std::string& path) {
 
 // ---- Item 1: no name reaches a script -----------------------------------------------------
 
-const std::vector<std::string> kHostileNames = {"x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w",
-                                                "$(touch PWNED).w", "new\nline'\n system 'touch PWNED.w",
-                                                "\xff\xfe not utf-8 \\ '.w"};
+const std::vector<std::string> kHostileNames = {
+    "x'; system 'touch PWNED'; print '.w", "a`touch PWNED`b.w", "$(touch PWNED).w",
+    "new\nline'\n system 'touch PWNED.w", "\xff\xfe not utf-8 \\ '.w"};
 
 // The whole path once (one report is seconds of work, more under the sanitizers), with every
 // hostile kind of character in one name.
@@ -57,8 +59,8 @@ TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
   const std::string name = "x'; system 'touch PWNED'; print '`touch PWNED`$(touch PWNED)\n\xff.w";
   std::string dir = test::makeTempDir();
   test::writeText(dir + "/" + name, test::readText(test::dataPath("rotate.w")));
-  test::CommandResult r =
-      test::runJelloArgs({"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, {dir});
+  test::CommandResult r = test::runJelloArgs(
+      {"--report", "rep", "--time", "0.001", "--integrators", "EULER", name}, {dir});
   EXPECT_EQ(r.status, 0) << r.err;
   std::vector<std::string> expected = {name, "rep"};
   std::sort(expected.begin(), expected.end());
@@ -66,7 +68,8 @@ TEST(HostileNames, AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing) {
   EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000);
   // The script stays valid gnuplot and draws the same picture again, running nothing.
   EXPECT_EQ(test::runShell("cd '" + dir + "/rep' && gnuplot report.gp 2>&1").out, "");
-  EXPECT_EQ(entries(dir + "/rep"), (std::vector<std::string>{"report.csv", "report.gp", "report.md", "report.png"}));
+  EXPECT_EQ(entries(dir + "/rep"),
+            (std::vector<std::string>{"report.csv", "report.gp", "report.md", "report.png"}));
   test::removeTree(dir);
 }
 
@@ -75,10 +78,13 @@ TEST(HostileNames, EachHostileTitleIsDrawnAndRunsNothing) {
   if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   for (const std::string& name : kHostileNames) {
     std::string dir = test::makeTempDir();
-    test::writeText(dir + "/t.gp", "set terminal pngcairo size 200,100\nif (!exists(\"png\")) png = 't.png'\n"
-                                   "set output png\nset title " + gnuplotString(name) + "\nplot x\n");
+    test::writeText(dir + "/t.gp",
+                    "set terminal pngcairo size 200,100\nif (!exists(\"png\")) png = 't.png'\n"
+                    "set output png\nset title " +
+                        gnuplotString(name) + "\nplot x\n");
     EXPECT_EQ(drawWithGnuplot(dir, "t.gp", "t.png", Existing::Refuse), "") << name;
-    EXPECT_EQ(entries(dir), (std::vector<std::string>{"t.gp", "t.png"})) << "something ran: " << name;
+    EXPECT_EQ(entries(dir), (std::vector<std::string>{"t.gp", "t.png"}))
+        << "something ran: " << name;
     test::removeTree(dir);
   }
 }
@@ -97,13 +103,15 @@ TEST(HostileNames, CheckJsonOfANameThatIsNotUtf8IsValidJsonNotAnException) {
   World world;
   std::string json;
   ASSERT_NO_THROW(json = stabilityJson("bad\xff\xfename.w", world, report));
-  EXPECT_NE(json.find("\"world\": \"bad\xEF\xBF\xBD\xEF\xBF\xBDname.w\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"world\": \"bad\xEF\xBF\xBD\xEF\xBF\xBDname.w\""), std::string::npos)
+      << json;
 }
 
 TEST(HostileNames, PrintableEscapesControlsAndBrokenUtf8ButKeepsRealText) {
   EXPECT_EQ(printable("caf\xC3\xA9 \xE2\x82\xAC ok"), "caf\xC3\xA9 \xE2\x82\xAC ok");
   EXPECT_EQ(printable("a\nb\tc\x7F"), "a\\x0Ab\\x09c\\x7F");
-  EXPECT_EQ(printable("\xC3(\xED\xA0\x80\xF5"), "\\xC3(\\xED\\xA0\\x80\\xF5");  // cut, surrogate, past U+10FFFF
+  EXPECT_EQ(printable("\xC3(\xED\xA0\x80\xF5"),
+            "\\xC3(\\xED\\xA0\\x80\\xF5");  // cut, surrogate, past U+10FFFF
   EXPECT_EQ(printable("back\\slash"), "back\\\\slash");
 }
 
@@ -127,12 +135,13 @@ TEST(DumpRule, NeverReplacesADeviceALinkAFolderAReadOnlyFileOrTheWorldItself) {
   // stands alone for what is not a regular file.
   const std::string device = dir + "/full";
   const bool haveDevice = ::mknod(device.c_str(), S_IFCHR | 0666, ::makedev(1, 7)) == 0;
-  std::vector<std::pair<std::string, std::string>> cases = {{dir + "/link.w", "symbolic link"},
-                                                       {dir + "/fifo.w", "not a regular file"},
-                                                       {dir, "is a directory"},
-                                                       {readOnly, "read-only"},
-                                                       {world, "the world being run"},
-                                                       {dir + "/./w.w", "the world being run"}};
+  std::vector<std::pair<std::string, std::string>> cases = {
+      {dir + "/link.w", "symbolic link"},
+      {dir + "/fifo.w", "not a regular file"},
+      {dir, "is a directory"},
+      {readOnly, "read-only"},
+      {world, "the world being run"},
+      {dir + "/./w.w", "the world being run"}};
   if (haveDevice) cases.push_back({device, "not a regular file"});
   for (const auto& [target, says] : cases) {
     test::CommandResult r = dump(target, world);
@@ -177,15 +186,17 @@ TEST(DumpRule, ALongValidNameIsWrittenAndATooLongOneIsRefusedBeforeTheRun) {
   r = dump(dir + "/" + tooLong, test::dataPath("still.w"));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "") << "refused before the run";
-  EXPECT_NE(r.err.find("bytes long, more than the 255 its folder's file system allows"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bytes long, more than the 255 its folder's file system allows"),
+            std::string::npos)
+      << r.err;
   test::removeTree(dir);
 }
 
 // ---- Item 3: no exception escapes -----------------------------------------------------------
 
 TEST(NoCrash, BenchReadsAWorldFromAPipeOnce) {
-  test::CommandResult r = test::runShell("cat '" + test::dataPath("still.w") + "' | " + test::jelloCommand() +
-                                         " --bench --steps 1 /dev/stdin");
+  test::CommandResult r = test::runShell("cat '" + test::dataPath("still.w") + "' | " +
+                                         test::jelloCommand() + " --bench --steps 1 /dev/stdin");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("world parsing"), std::string::npos);
 }
@@ -201,7 +212,8 @@ void smallFiles() {
 TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs(
-      {"--headless", "--steps", "1", "--dump", dir + "/out.w", test::dataPath("still.w")}, {"", 0, smallFiles});
+      {"--headless", "--steps", "1", "--dump", dir + "/out.w", test::dataPath("still.w")},
+      {"", 0, smallFiles});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
@@ -212,16 +224,17 @@ TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
 TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) {
   if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   std::string dir = test::makeTempDir();
-  test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002", "--integrators", "EULER",
-                                              test::dataPath("rotate.w")},
+  test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002",
+                                              "--integrators", "EULER", test::dataPath("rotate.w")},
                                              {"", 0, smallFiles});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("report.png was not drawn"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("report.png"), std::string::npos) << "named as drawn: " << r.out;
-  EXPECT_EQ(entries(dir + "/rep"), (std::vector<std::string>{"report.csv", "report.gp", "report.md"}));
+  EXPECT_EQ(entries(dir + "/rep"),
+            (std::vector<std::string>{"report.csv", "report.gp", "report.md"}));
   // The next run, with room, is not blocked by leftovers.
-  r = test::runJelloArgs({"--report", dir + "/rep", "--overwrite", "--time", "0.002", "--integrators", "EULER",
-                          test::dataPath("rotate.w")});
+  r = test::runJelloArgs({"--report", dir + "/rep", "--overwrite", "--time", "0.002",
+                          "--integrators", "EULER", test::dataPath("rotate.w")});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_GT(sizeOf(dir + "/rep/report.png"), 1000);
   test::removeTree(dir);
@@ -247,7 +260,8 @@ TEST(Signals, TheTemporaryFileOfAWriteUnderWayGoesWithTheSignal) {
     }
     int status = 0;
     ASSERT_EQ(::waitpid(child, &status, 0), child);
-    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "the signal still ends the program";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal)
+        << "the signal still ends the program";
     EXPECT_EQ(entries(dir), std::vector<std::string>{}) << "signal " << signal;
     test::removeTree(dir);
   }
@@ -288,8 +302,8 @@ TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceed) {
   // The first run is long (200 frames of 1000 steps); the second starts once it has begun.
   pid_t first = ::fork();
   if (first == 0) {
-    ::execl(JELLO_BINARY, JELLO_BINARY, "--headless", "--steps", "200000", "--n", "1000", "--frames", frames.c_str(),
-            world.c_str(), static_cast<char*>(nullptr));
+    ::execl(JELLO_BINARY, JELLO_BINARY, "--headless", "--steps", "200000", "--n", "1000",
+            "--frames", frames.c_str(), world.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
   for (int i = 0; i < 400 && sizeOf(frames + "/0000.jpg") < 0; ++i)
@@ -323,7 +337,8 @@ TEST(ReportFiles, AHandEditedScriptOrPictureIsNeverReplacedWithoutOverwrite) {
     test::removeTree(dir);
     ::mkdir(dir.c_str(), 0777);
     test::writeText(dir + "/" + name, "my edits");
-    test::CommandResult r = test::runJelloArgs({"--check", "--map", dir, test::dataPath("rotate.w")});
+    test::CommandResult r =
+        test::runJelloArgs({"--check", "--map", dir, test::dataPath("rotate.w")});
     EXPECT_EQ(r.status, 2) << name;
     EXPECT_EQ(test::readText(dir + "/" + name), "my edits");
   }
@@ -355,7 +370,8 @@ TEST(CommandLineNumbers, FollowTheWorldFilesGrammar) {
   EXPECT_EQ(*c.run.dt, fromFile) << "the same double as a world file's 0.1, not strtold's rounding";
   // A decimal whose long-double rounding then double rounding differs from one rounding.
   ASSERT_EQ(parse({"--dt", "1.00000000000000011102230246251565404236316680908203125"}, &c), kGoOn);
-  ASSERT_TRUE(parseWorldNumber("1.00000000000000011102230246251565404236316680908203125", &fromFile, &why));
+  ASSERT_TRUE(
+      parseWorldNumber("1.00000000000000011102230246251565404236316680908203125", &fromFile, &why));
   EXPECT_EQ(*c.run.dt, fromFile);
 }
 
@@ -369,7 +385,8 @@ TEST(CommandLineNumbers, StepsBeyondTheLargestWholeNumberAreRefusedNotClamped) {
 
 TEST(CommandLineNames, AnEmptyFramesDumpReportOrMapFolderIsRefusedNotIgnored) {
   JelloCommand c;
-  for (const char* option : {"--frames", "--dump", "--report"}) EXPECT_EQ(parse({option, ""}, &c), kExitBadInput);
+  for (const char* option : {"--frames", "--dump", "--report"})
+    EXPECT_EQ(parse({option, ""}, &c), kExitBadInput);
   EXPECT_EQ(parse({"--check", "--map", ""}, &c), kExitBadInput);
 }
 
@@ -384,24 +401,31 @@ TEST(CommandLine, OptionsThatNeedAnotherAreRefusedAlone) {
 }
 
 TEST(DefaultRun, AWorldWhoseNMakesTheDefaultRunEndlessIsRefusedWithWhatToDo) {
-  test::CommandResult r = test::runJelloArgs({"--headless", "--n", "2147483647", test::dataPath("still.w")});
+  test::CommandResult r =
+      test::runJelloArgs({"--headless", "--n", "2147483647", test::dataPath("still.w")});
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("644245094100 steps long; say how long with --steps N or --time T"), std::string::npos) << r.err;
-  r = test::runJelloArgs({"--headless", "--n", "2147483647", "--steps", "3", test::dataPath("still.w")});
+  EXPECT_NE(r.err.find("644245094100 steps long; say how long with --steps N or --time T"),
+            std::string::npos)
+      << r.err;
+  r = test::runJelloArgs(
+      {"--headless", "--n", "2147483647", "--steps", "3", test::dataPath("still.w")});
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST(NoCrash, AWorldLargerThanMaxMemoryIsRefusedBeforeItIsRead) {
-  test::CommandResult r = test::runJelloArgs({"--headless", "--max-memory", "0.05", test::dataPath("rotate.w")});
+  test::CommandResult r =
+      test::runJelloArgs({"--headless", "--max-memory", "0.05", test::dataPath("rotate.w")});
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find(":7: not enough memory for this world: needs 0.136 GB, 0.05 GB available (resolution)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find(
+          ":7: not enough memory for this world: needs 0.136 GB, 0.05 GB available (resolution)"),
+      std::string::npos)
       << r.err;
 }
 
 TEST(StandardOutput, AResultThatCannotBeWrittenIsAFailure) {
-  test::CommandResult r =
-      test::runShell(test::jelloCommand() + " --headless --steps 1 '" + test::dataPath("still.w") + "' >/dev/full");
+  test::CommandResult r = test::runShell(test::jelloCommand() + " --headless --steps 1 '" +
+                                         test::dataPath("still.w") + "' >/dev/full");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("cannot write to standard output"), std::string::npos) << r.err;
 }

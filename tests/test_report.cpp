@@ -35,8 +35,8 @@ std::vector<CsvRow> parseRows(const std::string& text) {
     EXPECT_EQ(f.size(), 9u) << line;
     if (f.size() != 9) continue;
     auto value = [](const std::string& s) { return s.empty() ? NAN : std::stod(s); };
-    rows.push_back({f[0], f[8], value(f[1]), value(f[2]), value(f[5]), value(f[6]), value(f[7]), std::stoll(f[3]),
-                    std::stoll(f[4])});
+    rows.push_back({f[0], f[8], value(f[1]), value(f[2]), value(f[5]), value(f[6]), value(f[7]),
+                    std::stoll(f[3]), std::stoll(f[4])});
   }
   return rows;
 }
@@ -46,8 +46,10 @@ std::vector<CsvRow> parseRows(const std::string& text) {
 // this step: EULER at 2 ms.
 TEST(Report, CsvPlotSummaryAndRecommendations) {
   const std::string dir = test::makeTempDir(), out = dir + "/out";
-  test::CommandResult result = test::runJello("--report '" + out + "' --time 0.02 --integrator euler --dt 0.002 "
-                                              "--integrators EULER,RK4,RK45 '" + test::dataPath("jello.w") + "'");
+  test::CommandResult result = test::runJello("--report '" + out +
+                                              "' --time 0.02 --integrator euler --dt 0.002 "
+                                              "--integrators EULER,RK4,RK45 '" +
+                                              test::dataPath("jello.w") + "'");
   ASSERT_EQ(result.status, 0) << result.err;
 
   // The three files, and where they are.
@@ -63,11 +65,13 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
 
   // A well-formed CSV.
   const std::string csv = test::readText(out + "/report.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status");
   std::vector<CsvRow> all = parseRows(csv);
   ASSERT_EQ(all.size(), 3u * 6 + 1) << "six runs an integrator and the world's own";
   for (const CsvRow& r : all) {
-    EXPECT_TRUE(r.integrator == "EULER" || r.integrator == "RK4" || r.integrator == "RK45") << r.integrator;
+    EXPECT_TRUE(r.integrator == "EULER" || r.integrator == "RK4" || r.integrator == "RK45")
+        << r.integrator;
     EXPECT_TRUE(r.status == "ok" || r.status == "diverged") << r.status;
     EXPECT_GT(r.dt, 0);
     EXPECT_GT(r.steps, 0);
@@ -84,7 +88,8 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
 
   // Errors shrink with the step (and with RK45's tolerance), EULER's in proportion.
   std::map<std::string, std::vector<CsvRow>> sweep;
-  for (std::size_t i = 0; i + 1 < all.size(); ++i) sweep[all[i].integrator].push_back(all[i]);  // the last is the world's own
+  for (std::size_t i = 0; i + 1 < all.size(); ++i)
+    sweep[all[i].integrator].push_back(all[i]);  // the last is the world's own
   for (auto& [name, list] : sweep) {
     ASSERT_EQ(list.size(), 6u) << name;
     for (std::size_t i = 1; i < list.size(); ++i) {
@@ -99,7 +104,8 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
     }
   }
   // The three smallest steps are in the asymptotic range.
-  EXPECT_NEAR(std::log2(sweep["EULER"][3].rms / sweep["EULER"][5].rms) / 2, 1, 0.3) << "EULER is first order";
+  EXPECT_NEAR(std::log2(sweep["EULER"][3].rms / sweep["EULER"][5].rms) / 2, 1, 0.3)
+      << "EULER is first order";
 
   // The world's own row, and a recommendation that agrees with the table.
   EXPECT_EQ(all.back().integrator, "EULER");
@@ -115,8 +121,8 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
   EXPECT_NE(line.find(setting.str()), std::string::npos) << line << "\nexpected " << setting.str();
 
   // A second report into the same folder is refused.
-  test::CommandResult again =
-      test::runJello("--report '" + out + "' --time 0.001 --integrators RK4 '" + test::dataPath("jello.w") + "'");
+  test::CommandResult again = test::runJello(
+      "--report '" + out + "' --time 0.001 --integrators RK4 '" + test::dataPath("jello.w") + "'");
   EXPECT_EQ(again.status, 2);
   EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
   EXPECT_EQ(test::readText(out + "/report.csv"), csv);

@@ -11,9 +11,9 @@
 #include <cstring>
 #include <functional>
 
-#include "solver/integrators.h"
 #include "core/memory.h"
 #include "physics.h"
+#include "solver/integrators.h"
 #include "test_support.h"
 
 namespace jello {
@@ -49,13 +49,15 @@ TEST(SpecialFiles, AFifoIsReadAndAFifoWithoutWriterDoesNotHang) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
   expectRefused(runOn(fifo), "a FIFO nothing was written to within 5 s");
   // With a writer it is read like a file, whether the writer comes first or second.
-  test::CommandResult r = test::runShell(std::string(kHangGuard) + " " + test::jelloCommand() + " --headless --steps 2 '" +
-                                         fifo + "' & reader=$!; sleep 0.2; cat '" + test::dataPath("jello.w") + "' > '" +
-                                         fifo + "'; wait $reader");
+  test::CommandResult r =
+      test::runShell(std::string(kHangGuard) + " " + test::jelloCommand() +
+                     " --headless --steps 2 '" + fifo + "' & reader=$!; sleep 0.2; cat '" +
+                     test::dataPath("jello.w") + "' > '" + fifo + "'; wait $reader");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("steps=2 "), std::string::npos) << r.out;
-  r = test::runShell("cat '" + test::dataPath("jello.w") + "' > '" + fifo + "' & sleep 0.2; " + kHangGuard + " " +
-                     test::jelloCommand() + " --headless --steps 2 '" + fifo + "'");
+  r = test::runShell("cat '" + test::dataPath("jello.w") + "' > '" + fifo + "' & sleep 0.2; " +
+                     kHangGuard + " " + test::jelloCommand() + " --headless --steps 2 '" + fifo +
+                     "'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("steps=2 "), std::string::npos) << r.out;
   test::removeTree(dir);
@@ -131,7 +133,9 @@ TEST(SpecialFiles, ATwoGigabyteFileIsRefusedAtOnce) {
   ASSERT_EQ(::truncate(tail.c_str(), kTwoGigabytes), 0) << std::strerror(errno);
   expectRefused(runOn(zeros), ":1: byte 0x00 in column 1");
   // A whole world, then zeros: refused at the first line after the velocities.
-  expectRefused(runOn(tail), ":28032: byte 0x00 in column 1: not a text file, not a world file (trailing garbage)");
+  expectRefused(
+      runOn(tail),
+      ":28032: byte 0x00 in column 1: not a text file, not a world file (trailing garbage)");
   test::removeTree(dir);
 }
 
@@ -150,7 +154,8 @@ TEST(SpecialFiles, PathsWithSpacesAndPipesWork) {
   test::CommandResult r = runOn(path, "--dump '" + dir + "/after two steps.w'");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NO_THROW(readWorldFile(dir + "/after two steps.w"));
-  r = test::runShell("cat '" + path + "' | " + kHangGuard + " " + test::jelloCommand() + " --headless --steps 2 /dev/stdin");
+  r = test::runShell("cat '" + path + "' | " + kHangGuard + " " + test::jelloCommand() +
+                     " --headless --steps 2 /dev/stdin");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("/dev/stdin: RK4"), std::string::npos) << r.out;
   test::removeTree(dir);
@@ -276,10 +281,12 @@ TEST(MemoryLimits, ARunThatFitsItsLimitCanDumpItsWorld) {
 TEST(Tolerances, RK45WithToleranceBeyondDoublesStopsAtOnceNamingThem) {
   // Before: the error control switched off, the run diverged at step 2 and its diagnosis took
   // minutes; now the first step is given up after 22 rejections.
-  test::CommandResult r = runOn(test::dataPath("rotate.w"), "--integrator RK45 --rtol 1e-300 --atol 1e-300 --dt 0.01");
+  test::CommandResult r =
+      runOn(test::dataPath("rotate.w"), "--integrator RK45 --rtol 1e-300 --atol 1e-300 --dt 0.01");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find("RK45 cannot meet --rtol 1e-300 --atol 1e-300: at step 1 (t=0.01 s)"), std::string::npos)
+  EXPECT_NE(r.err.find("RK45 cannot meet --rtol 1e-300 --atol 1e-300: at step 1 (t=0.01 s)"),
+            std::string::npos)
       << r.err;
 }
 
@@ -287,8 +294,9 @@ TEST(Tolerances, RK45WithToleranceBeyondDoublesStopsAtOnceNamingThem) {
 // steppers) and in two processes (the dumps of two runs).
 TEST(Determinism, SameInputsGiveBitIdenticalResults) {
   WorldFile f = readWorldFile(test::dataPath("rotate.w"));
-  for (Integrator integrator : {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
-                                Integrator::Verlet, Integrator::RK45, Integrator::Implicit}) {
+  for (Integrator integrator :
+       {Integrator::Euler, Integrator::Midpoint, Integrator::RK4, Integrator::Symplectic,
+        Integrator::Verlet, Integrator::RK45, Integrator::Implicit}) {
     const int steps = integrator == Integrator::Implicit ? 5 : 200;
     const double dt = 2e-4;
     State a = f.state, b = f.state;
@@ -296,17 +304,20 @@ TEST(Determinism, SameInputsGiveBitIdenticalResults) {
     Stepper first(integrator), second(integrator);
     for (int s = 0; s < steps; ++s) first.step(model, a, dt);
     for (int s = 0; s < steps; ++s) second.step(model, b, dt);
-    EXPECT_EQ(std::memcmp(a.y.data(), b.y.data(), a.y.size() * sizeof(double)), 0) << integratorName(integrator);
+    EXPECT_EQ(std::memcmp(a.y.data(), b.y.data(), a.y.size() * sizeof(double)), 0)
+        << integratorName(integrator);
   }
   std::string dir = test::makeTempDir();
   for (const char* integrator : {"RK4", "RK45", "IMPLICIT"}) {
     for (const char* run : {"1", "2"}) {
-      test::CommandResult r = test::runJello(std::string("--headless --steps 5 --dt 2e-4 --integrator ") + integrator +
-                                             " --dump '" + dir + "/" + integrator + run + ".w' '" +
-                                             test::dataPath("rotate.w") + "'");
+      test::CommandResult r = test::runJello(
+          std::string("--headless --steps 5 --dt 2e-4 --integrator ") + integrator + " --dump '" +
+          dir + "/" + integrator + run + ".w' '" + test::dataPath("rotate.w") + "'");
       EXPECT_EQ(r.status, 0) << r.err;
     }
-    EXPECT_EQ(test::readText(dir + "/" + integrator + "1.w"), test::readText(dir + "/" + integrator + "2.w")) << integrator;
+    EXPECT_EQ(test::readText(dir + "/" + integrator + "1.w"),
+              test::readText(dir + "/" + integrator + "2.w"))
+        << integrator;
   }
   test::removeTree(dir);
 }

@@ -6,17 +6,19 @@
 #include <limits>
 #include <random>
 
-#include "solver/guard.h"
 #include "app/headless.h"
-#include "solver/integrators.h"
 #include "physics.h"
+#include "solver/guard.h"
+#include "solver/integrators.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
 namespace jello {
 namespace {
 
-std::string sourcePath(const std::string& name) { return std::string(JELLO_SOURCE_DIR) + "/" + name; }
+std::string sourcePath(const std::string& name) {
+  return std::string(JELLO_SOURCE_DIR) + "/" + name;
+}
 
 bool sameBits(const State& a, const State& b) {
   return std::memcmp(a.y.data(), b.y.data(), a.y.size() * sizeof(double)) == 0;
@@ -40,8 +42,8 @@ TEST(Simulation, ADivergingRunReportsTheStepTimeAndReasonTheHeadlessRunReported)
       {"world/stress/stiff-1e5.w", Integrator::RK4, 1e-4, 100, 0.01,
        "its energy, 9.6e+03 J, is beyond what the world's forces can supply (2.21e+03 J)", true},
       // the cheap test, on a step that is no multiple of max(n, 8)
-      {"world/rotate.w", Integrator::Euler, 0.01, 7, 0.07, "point p[0][3][3] is more than 100 m from the origin",
-       false},
+      {"world/rotate.w", Integrator::Euler, 0.01, 7, 0.07,
+       "point p[0][3][3] is more than 100 m from the origin", false},
   };
   for (const DivergingCase& c : cases) {
     WorldFile f = readWorldFile(sourcePath(c.world));
@@ -57,10 +59,11 @@ TEST(Simulation, ADivergingRunReportsTheStepTimeAndReasonTheHeadlessRunReported)
     if (!c.runJello) continue;
 
     char expected[300];
-    std::snprintf(expected, sizeof expected, "diverged at step %lld (t=%g s): %s;", c.step, c.time, c.reason);
+    std::snprintf(expected, sizeof expected, "diverged at step %lld (t=%g s): %s;", c.step, c.time,
+                  c.reason);
     test::CommandResult run = test::runJelloArgs({"--headless", "--steps", "2000", "--integrator",
-                                                  integratorName(c.integrator), "--dt", std::to_string(c.dt),
-                                                  sourcePath(c.world)});
+                                                  integratorName(c.integrator), "--dt",
+                                                  std::to_string(c.dt), sourcePath(c.world)});
     EXPECT_EQ(run.status, kExitDiverged) << run.err;
     EXPECT_NE(run.err.find(expected), std::string::npos) << run.err;
   }
@@ -72,8 +75,8 @@ TEST(Simulation, StopsAtTheSameStepHoweverItsStepsAreGrouped) {
   WorldFile f = readWorldFile(sourcePath("world/stress/stiff-1e5.w"));
   f.world.n = 1;  // the energy every 8 steps, which advancing by 7 does not line up with
   Model model = makeModel(f.world, f.state);
-  Simulation whole(model, f.state, Integrator::RK4, 1e-4), single(model, f.state, Integrator::RK4, 1e-4),
-      sevens(model, f.state, Integrator::RK4, 1e-4);
+  Simulation whole(model, f.state, Integrator::RK4, 1e-4),
+      single(model, f.state, Integrator::RK4, 1e-4), sevens(model, f.state, Integrator::RK4, 1e-4);
   const RunOutcome once = whole.advance(300);
   RunOutcome bySingle, bySevens;
   for (int i = 0; i < 300 && bySingle.ran(); ++i) bySingle = single.advance(1);
@@ -121,7 +124,8 @@ TEST(Simulation, APullSkipsTheEnergyBoundAndLettingGoRestartsIt) {
   ASSERT_TRUE(simulation.advance(400, &pull).ran());
   // The pulled state holds far more energy than the start's bound allows...
   DivergenceGuard fromTheStart(model, f.state);
-  ASSERT_NE(fromTheStart.check(simulation.state(), simulation.time()), "") << "the pull added too little energy";
+  ASSERT_NE(fromTheStart.check(simulation.state(), simulation.time()), "")
+      << "the pull added too little energy";
   // ...and the run goes on without a pull, checked against a bound that starts there.
   EXPECT_TRUE(simulation.advance(400).ran());
   EXPECT_EQ(simulation.step(), 800);
@@ -199,14 +203,16 @@ TEST(Simulation, RestartRepeatsTheRunAndRestoreGoesBack) {
 // The loop's cheap test is findDivergedPoint's, on states sane and not.
 TEST(Simulation, TheCheapTestIsFindDivergedPointsTest) {
   const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
-  const double odd[] = {nan, inf, -inf, 100.0, -100.0, 100.0000001, 57.73, 57.74, 1e200, -1e-310, -0.0, 1e155};
+  const double odd[] = {nan,   inf,   -inf,  100.0,   -100.0, 100.0000001,
+                        57.73, 57.74, 1e200, -1e-310, -0.0,   1e155};
   std::mt19937_64 random(7);
   std::uniform_int_distribution<int> anyCoordinate(0, 2 * kNumCoords - 1);
   std::uniform_int_distribution<int> anyOdd(0, static_cast<int>(std::size(odd)) - 1);
   int bad = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     State state = test::restLattice();
-    for (int changes = trial % 4; changes > 0; --changes) state.y[anyCoordinate(random)] = odd[anyOdd(random)];
+    for (int changes = trial % 4; changes > 0; --changes)
+      state.y[anyCoordinate(random)] = odd[anyOdd(random)];
     if (trial % 7 == 0) {  // three coordinates of one point, near the radius together
       const int q = trial % kNumPoints;
       for (int axis = 0; axis < 3; ++axis) state.p()[coordIndex(q, axis)] = odd[6 + trial % 2];

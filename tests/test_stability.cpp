@@ -5,14 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "app/stability.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
-#include "app/stability.h"
 #include "test_support.h"
-#include <nlohmann/json.hpp>
 
 namespace jello {
 namespace {
@@ -37,22 +37,25 @@ TEST_P(Prediction, WithinThreeQuartersAndElevenTenthsOfTheObservedLimit) {
   for (Integrator integrator : {Integrator::Euler, Integrator::RK4}) {
     double predicted = criticalStep(integrator, rest.modes);  // --check's headline limit
     double observed = observedLimit(model, f.state, integrator, c.time, predicted);
-    std::printf("%s %s: predicted %.4g s, observed %.4g s, ratio %.3f\n", c.world, integratorName(integrator), predicted,
-                observed, predicted / observed);
-    ASSERT_TRUE(std::isfinite(observed)) << "no limit between a third and three times the prediction";
+    std::printf("%s %s: predicted %.4g s, observed %.4g s, ratio %.3f\n", c.world,
+                integratorName(integrator), predicted, observed, predicted / observed);
+    ASSERT_TRUE(std::isfinite(observed))
+        << "no limit between a third and three times the prediction";
     EXPECT_GE(predicted / observed, 0.75) << integratorName(integrator);
     EXPECT_LE(predicted / observed, 1.1) << integratorName(integrator);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Worlds, Prediction,
-                         ::testing::Values(PredictionCase{"rotate.w", 0.2}, PredictionCase{"jello.w", 0.05},
+                         ::testing::Values(PredictionCase{"rotate.w", 0.2},
+                                           PredictionCase{"jello.w", 0.05},
                                            PredictionCase{"world/stress/stiff-2e4.w", 0.05},
                                            PredictionCase{"world/stress/damped-5.w", 0.02}),
                          [](const auto& testInfo) {
                            std::string name = testInfo.param.world;
                            name = name.substr(name.rfind('/') + 1);
-                           for (char& ch : name) if (ch == '.' || ch == '-') ch = '_';
+                           for (char& ch : name)
+                             if (ch == '.' || ch == '-') ch = '_';
                            return name;
                          });
 
@@ -64,12 +67,14 @@ TEST(Stability, ModesOfTheRestLatticeScaleWithStiffnessAndDamping) {
   Linearisation modes = linearise(model, restState());
   EXPECT_EQ(modes.growing, 0);
   EXPECT_GT(modes.modes.size(), 1500u);  // 1536 less the 6 rigid motions
-  for (const Mode& m : modes.modes) ASSERT_NEAR(m.damping, m.omegaSquared * w.dElastic / w.kElastic, 1e-6 * m.damping);
+  for (const Mode& m : modes.modes)
+    ASSERT_NEAR(m.damping, m.omegaSquared * w.dElastic / w.kElastic, 1e-6 * m.damping);
   // The fast path, from the scaled unit lattice, gives the same modes.
   Linearisation fast = lineariseAtRest(w);
   ASSERT_EQ(fast.modes.size(), modes.modes.size());
   EXPECT_NEAR(fast.highestFrequency, modes.highestFrequency, 1e-9 * modes.highestFrequency);
-  EXPECT_NEAR(criticalStep(Integrator::RK4, fast.modes), criticalStep(Integrator::RK4, modes.modes), 1e-9);
+  EXPECT_NEAR(criticalStep(Integrator::RK4, fast.modes), criticalStep(Integrator::RK4, modes.modes),
+              1e-9);
   EXPECT_NEAR(criticalStep(Integrator::Euler, modes.modes), w.dElastic / w.kElastic, 1e-6);
   EXPECT_TRUE(std::isinf(criticalStep(Integrator::Implicit, modes.modes)));
   // Symplectic Euler on an undamped mode: stable exactly while omega dt <= 2.
@@ -272,8 +277,8 @@ TEST(Degenerate, GeometryGivesNoNaN) {
   store(s.p(), pointIndex(7, 7, 7), load(s.p(), pointIndex(6, 7, 7)));  // a zero-length spring
   store(s.p(), pointIndex(0, 0, 0), {-2, 0.5, 0.5});                    // exactly on a wall
   store(s.p(), pointIndex(0, 0, 1), {1.0 / 3, 1.0 / 3, 1.0 / 3});       // on the plane
-  store(s.p(), pointIndex(0, 0, 2), {2.5, -2.5, 2});                    // beyond two walls, on a third
-  store(s.p(), pointIndex(0, 0, 3), {2, 2, 2});                         // the box's corner
+  store(s.p(), pointIndex(0, 0, 2), {2.5, -2.5, 2});  // beyond two walls, on a third
+  store(s.p(), pointIndex(0, 0, 3), {2, 2, 2});       // the box's corner
   for (int c = 0; c < kNumCoords; ++c) s.v()[c] = 0.1 * ((c % 7) - 3);
   std::vector<double> force(kNumCoords);
   computeForces(model, s.p(), s.v(), force.data());
@@ -284,7 +289,8 @@ TEST(Degenerate, GeometryGivesNoNaN) {
     ASSERT_TRUE(std::isfinite(jacobian.dAdp.valuePtr()[i]));
     ASSERT_TRUE(std::isfinite(jacobian.dAdv.valuePtr()[i]));
   }
-  for (Integrator integrator : {Integrator::Euler, Integrator::RK4, Integrator::RK45, Integrator::Implicit}) {
+  for (Integrator integrator :
+       {Integrator::Euler, Integrator::RK4, Integrator::RK45, Integrator::Implicit}) {
     State t = s;
     Stepper stepper(integrator);
     for (int i = 0; i < 20; ++i) stepper.step(model, t, 1e-4);
@@ -340,10 +346,12 @@ TEST(CheckCommand, AnswersAtOnceOnAWorldBeyondDoubles) {
 TEST(CheckCommand, TextJsonAndMap) {
   test::CommandResult text = test::runJello("--check '" + test::dataPath("rotate.w") + "'");
   ASSERT_EQ(text.status, 0) << text.err;
-  for (const char* part : {"highest frequency", "EULER ", "RK4 ", "IMPLICIT     unbounded", "the world's dt 0.001 with RK4: stable"})
+  for (const char* part : {"highest frequency", "EULER ", "RK4 ", "IMPLICIT     unbounded",
+                           "the world's dt 0.001 with RK4: stable"})
     EXPECT_NE(text.out.find(part), std::string::npos) << part << "\n" << text.out;
 
-  test::CommandResult json = test::runJello("--check --json --dt 0.002 '" + test::dataPath("rotate.w") + "'");
+  test::CommandResult json =
+      test::runJello("--check --json --dt 0.002 '" + test::dataPath("rotate.w") + "'");
   ASSERT_EQ(json.status, 0) << json.err;
   nlohmann::json j = nlohmann::json::parse(json.out);
   EXPECT_EQ(j["dt"].get<double>(), 0.002);
@@ -356,7 +364,8 @@ TEST(CheckCommand, TextJsonAndMap) {
     EXPECT_GT(j["integrators"][name]["critical_dt"].get<double>(), 0) << name;
 
   std::string dir = test::makeTempDir();
-  test::CommandResult map = test::runJello("--check --map '" + dir + "/map' --time 0.02 '" + test::dataPath("rotate.w") + "'");
+  test::CommandResult map = test::runJello("--check --map '" + dir + "/map' --time 0.02 '" +
+                                           test::dataPath("rotate.w") + "'");
   ASSERT_EQ(map.status, 0) << map.err;
   std::string csv = test::readText(dir + "/map/stability-map.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "kElastic,integrator,predicted_dt,observed_dt");

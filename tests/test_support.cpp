@@ -24,9 +24,11 @@ std::vector<double> readExpectedPositions(const std::string& name) {
   std::vector<double> xyz;  // the file lists the points' x y z in turn
   double value;
   while (in >> value) xyz.push_back(value);
-  if (xyz.size() != static_cast<std::size_t>(kNumCoords)) throw std::runtime_error("bad expected file " + name);
+  if (xyz.size() != static_cast<std::size_t>(kNumCoords))
+    throw std::runtime_error("bad expected file " + name);
   std::vector<double> p(kNumCoords);
-  for (int q = 0; q < kNumPoints; ++q) store(p.data(), q, {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
+  for (int q = 0; q < kNumPoints; ++q)
+    store(p.data(), q, {xyz[3 * q], xyz[3 * q + 1], xyz[3 * q + 2]});
   return p;
 }
 
@@ -80,7 +82,8 @@ void removeTree(const std::string& dir) {
 }
 
 CommandResult runJello(const std::string& args, const std::string& cwd, const std::string& env) {
-  return runShell((cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " " + jelloCommand() + " " + args + " </dev/null");
+  return runShell((cwd.empty() ? "" : "cd '" + cwd + "' && ") + env + " " + jelloCommand() + " " +
+                  args + " </dev/null");
 }
 
 std::string jelloCommand() { return std::string("'") + JELLO_BINARY + "'"; }
@@ -108,9 +111,11 @@ CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetu
   pid_t child = ::fork();
   if (child == 0) {
     // Only async-signal-safe calls between fork and exec (and the caller's `before`).
-    int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600),
+    int in = ::open("/dev/null", O_RDONLY),
+        o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600),
         e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    if (in < 0 || o < 0 || e < 0 || ::dup2(in, 0) < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0) ::_exit(126);
+    if (in < 0 || o < 0 || e < 0 || ::dup2(in, 0) < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+      ::_exit(126);
     if (!setup.cwd.empty() && ::chdir(setup.cwd.c_str()) != 0) ::_exit(126);
     if (setup.addressSpace > 0) {
       rlimit limit{setup.addressSpace, setup.addressSpace};
@@ -123,7 +128,8 @@ CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetu
   }
   CommandResult result;
   int raw = 0;
-  if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw)) result.status = WEXITSTATUS(raw);
+  if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw))
+    result.status = WEXITSTATUS(raw);
   result.out = readText(out);
   result.err = readText(err);
   removeTree(dir);

@@ -36,7 +36,8 @@ struct CommandResult {
 };
 // Runs the jello binary under test with `args` (a shell-quoted string), in the working
 // directory `cwd` when one is given, with `env` (e.g. "env -u DISPLAY") before it.
-CommandResult runJello(const std::string& args, const std::string& cwd = "", const std::string& env = "");
+CommandResult runJello(const std::string& args, const std::string& cwd = "",
+                       const std::string& env = "");
 // The jello binary under test, quoted for a shell.
 std::string jelloCommand();
 // Runs a shell script (e.g. a pipeline around jelloCommand()), capturing its output.

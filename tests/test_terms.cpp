@@ -38,7 +38,9 @@ State contactState() {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-1, 1);
   for (int q = 0; q < kNumPoints; ++q) {
-    store(s.p(), q, load(s.p(), q) + Vec3{1.45 + jitter(random), -0.4 + jitter(random), -0.75 + jitter(random)});
+    store(s.p(), q,
+          load(s.p(), q) +
+              Vec3{1.45 + jitter(random), -0.4 + jitter(random), -0.75 + jitter(random)});
     store(s.v(), q, Vec3{speed(random), speed(random), speed(random)});
   }
   return s;
@@ -52,16 +54,23 @@ class DenseSink final : public JacobianSink {
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
     auto [a, b] = pairs_[next_++];
     const Block3& block = velocity_ ? dFdw : dFdL;
-    for (auto [row, column, sign] : {std::tuple{a, a, 1.0}, {a, b, -1.0}, {b, a, -1.0}, {b, b, 1.0}}) add(row, column, block, sign);
+    for (auto [row, column, sign] :
+         {std::tuple{a, a, 1.0}, {a, b, -1.0}, {b, a, -1.0}, {b, b, 1.0}})
+      add(row, column, block, sign);
   }
-  void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override { add(q, q, velocity_ ? dFdv : dFdp, 1.0); }
-  double at(int row, int column) const { return m_[static_cast<std::size_t>(row) * kNumCoords + column]; }
+  void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
+    add(q, q, velocity_ ? dFdv : dFdp, 1.0);
+  }
+  double at(int row, int column) const {
+    return m_[static_cast<std::size_t>(row) * kNumCoords + column];
+  }
 
  private:
   void add(int row, int column, const Block3& block, double sign) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        m_[static_cast<std::size_t>(coordIndex(row, i)) * kNumCoords + coordIndex(column, j)] += sign * block.m[3 * i + j];
+        m_[static_cast<std::size_t>(coordIndex(row, i)) * kNumCoords + coordIndex(column, j)] +=
+            sign * block.m[3 * i + j];
   }
   std::vector<std::pair<int, int>> pairs_;
   bool velocity_;
@@ -69,7 +78,8 @@ class DenseSink final : public JacobianSink {
   std::vector<double> m_;
 };
 
-std::vector<double> termForce(const ForceTerm& term, const std::vector<double>& p, const std::vector<double>& v) {
+std::vector<double> termForce(const ForceTerm& term, const std::vector<double>& p,
+                              const std::vector<double>& v) {
   std::vector<double> f(kNumCoords, 0.0);
   term.addForces(p.data(), v.data(), nullptr, f.data());
   return f;
@@ -105,7 +115,8 @@ TEST(ForceTerms, EachJacobianMatchesFiniteDifferencesOfItsForce) {
           scale = std::max(scale, std::fabs(analytic));
         }
       }
-      EXPECT_LE(worst, 1e-5 * std::max(scale, 1.0)) << term->describe(p.data())[0].label << (velocity ? " dF/dv" : " dF/dp");
+      EXPECT_LE(worst, 1e-5 * std::max(scale, 1.0))
+          << term->describe(p.data())[0].label << (velocity ? " dF/dv" : " dF/dp");
     }
   }
 }
@@ -129,7 +140,8 @@ TEST(ForceTerms, EachStoredEnergyIsThePotentialOfItsForce) {
     std::partial_sort(coords.begin(), coords.begin() + 30, coords.end(),
                       [&](int a, int b) { return std::fabs(force[a]) > std::fabs(force[b]); });
     coords.resize(30);
-    for (int extra = 0; extra < 30; ++extra) coords.push_back(std::uniform_int_distribution<int>(0, kNumCoords - 1)(random));
+    for (int extra = 0; extra < 30; ++extra)
+      coords.push_back(std::uniform_int_distribution<int>(0, kNumCoords - 1)(random));
     double worst = 0, scale = 0;
     for (int c : coords) {
       const double h = 1e-6, saved = p[c];

@@ -23,10 +23,10 @@ bool bitIdentical(const std::vector<double>& a, const std::vector<double>& b) {
 void expectSameWorld(const WorldFile& a, const WorldFile& b) {
   const World &x = a.world, &y = b.world;
   EXPECT_EQ(x.integrator, y.integrator);
-  EXPECT_TRUE(bitIdentical({x.dt, x.kElastic, x.dElastic, x.kCollision, x.dCollision, x.mass, x.plane.a,
-                            x.plane.b, x.plane.c, x.plane.d},
-                           {y.dt, y.kElastic, y.dElastic, y.kCollision, y.dCollision, y.mass, y.plane.a,
-                            y.plane.b, y.plane.c, y.plane.d}));
+  EXPECT_TRUE(bitIdentical({x.dt, x.kElastic, x.dElastic, x.kCollision, x.dCollision, x.mass,
+                            x.plane.a, x.plane.b, x.plane.c, x.plane.d},
+                           {y.dt, y.kElastic, y.dElastic, y.kCollision, y.dCollision, y.mass,
+                            y.plane.a, y.plane.b, y.plane.c, y.plane.d}));
   EXPECT_EQ(x.n, y.n);
   EXPECT_EQ(x.hasPlane, y.hasPlane);
   EXPECT_EQ(x.field.resolution, y.field.resolution);
@@ -44,11 +44,51 @@ struct CourseWorld {
 
 // The values of ../shared/reference-worlds/README.md, as written (six decimals).
 const CourseWorld kCourseWorlds[] = {
-    {"jello.w", 0.0005, 200, 0.25, 400, 0.25, true, {-1, 1, 1, 2}, {0, 0, 0}, {1.142857, 1.142857, 1.142857}, {10, -10, 20}},
-    {"rotate.w", 0.001, 500, 0.25, 1000, 0.25, true, {1, -1, -1, 4}, {0.019531, -0.019531, 0}, {1, 1, 1}, {0, 0, 0}},
+    {"jello.w",
+     0.0005,
+     200,
+     0.25,
+     400,
+     0.25,
+     true,
+     {-1, 1, 1, 2},
+     {0, 0, 0},
+     {1.142857, 1.142857, 1.142857},
+     {10, -10, 20}},
+    {"rotate.w",
+     0.001,
+     500,
+     0.25,
+     1000,
+     0.25,
+     true,
+     {1, -1, -1, 4},
+     {0.019531, -0.019531, 0},
+     {1, 1, 1},
+     {0, 0, 0}},
     {"moveLeft.w", 0.0005, 500, 0.25, 1000, 0.25, false, {}, {0, 0, 0}, {1, 1, 1}, {-50, 0, 0}},
-    {"skewedCorner.w", 0.00001, 500, 0.25, 1000, 0.25, false, {}, {0, 0, 0}, {1.142857, 1.142857, 1.142857}, {0, 0, 0}},
-    {"gravity.w", 0.0001, 500, 0.25, 1000, 0.25, true, {-1, 1, 2, 6}, {0, 0, -0.06}, {1, 1, 1}, {10, -10, 0}},
+    {"skewedCorner.w",
+     0.00001,
+     500,
+     0.25,
+     1000,
+     0.25,
+     false,
+     {},
+     {0, 0, 0},
+     {1.142857, 1.142857, 1.142857},
+     {0, 0, 0}},
+    {"gravity.w",
+     0.0001,
+     500,
+     0.25,
+     1000,
+     0.25,
+     true,
+     {-1, 1, 2, 6},
+     {0, 0, -0.06},
+     {1, 1, 1},
+     {10, -10, 0}},
 };
 
 TEST(WorldReader, CourseWorldsLoadWithTheirExactValues) {
@@ -167,8 +207,9 @@ TEST(WorldReader, ACrOnlyFileIsToldToConvertItsLineEnds) {
 TEST(WorldReader, IntegratorNamesAreCaseInsensitive) {
   std::string text = test::readText(dataPath("moveLeft.w"));
   const std::pair<const char*, Integrator> names[] = {
-      {"euler", Integrator::Euler},   {"Rk4", Integrator::RK4},         {"midpoint", Integrator::Midpoint},
-      {"Symplectic", Integrator::Symplectic}, {"VERLET", Integrator::Verlet}, {"rk45", Integrator::RK45},
+      {"euler", Integrator::Euler},       {"Rk4", Integrator::RK4},
+      {"midpoint", Integrator::Midpoint}, {"Symplectic", Integrator::Symplectic},
+      {"VERLET", Integrator::Verlet},     {"rk45", Integrator::RK45},
       {"implicit", Integrator::Implicit}};
   for (auto [name, integrator] : names) {
     std::string renamed = name + text.substr(text.find('\n'));
@@ -221,7 +262,8 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   std::string path = dir + "/out.w";
   writeWorldFile(path, f.world, f.state);
   expectSameWorld(f, readWorldFile(path));
-  EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0) << "temporary file left behind";
+  EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0)
+      << "temporary file left behind";
   EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
   test::removeTree(dir);
 }
