@@ -46,10 +46,11 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
       std::make_unique<SpringTerm>(world.kElastic, world.dElastic, general || world.dElastic != 0);
   scene.springs = springs.get();
   scene.terms.push_back(std::move(springs));
-  scene.terms.push_back(std::make_unique<WallsTerm>(world.kCollision, world.dCollision));
+  const ContactSpring contact{world.kCollision, world.dCollision};
+  scene.terms.push_back(std::make_unique<WallsTerm>(contact));
   if (world.hasPlane) {
-    auto plane = std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()),
-                                             world.kCollision, world.dCollision);
+    auto plane =
+        std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()), contact);
     scene.plane = plane.get();
     scene.terms.push_back(std::move(plane));
   } else {

@@ -46,19 +46,12 @@ std::string planeEquation(const Plane& p) {
   return out + " = 0";
 }
 
-void planeJacobian(const Plane& plane, double side, Vec3 p, double k, double d, Block3* dFdp,
-                   Block3* dFdv) {
+void planeJacobian(const Plane& plane, double side, Vec3 p, const ContactSpring& spring,
+                   Block3* dFdp, Block3* dFdv) {
   *dFdp = Block3{};
   *dFdv = Block3{};
-  if (!(planeValue(plane, p) * side < 0)) return;
-  const double n[3] = {plane.a, plane.b, plane.c};
-  const double norm2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double nn = n[i] * n[j] / norm2;
-      dFdp->m[3 * i + j] = -k * nn;
-      dFdv->m[3 * i + j] = -d * nn;
-    }
+  if (planeValue(plane, p) * side < 0)
+    addContactJacobian(spring, {plane.a, plane.b, plane.c}, dFdp, dFdv);
 }
 
 // The margin covers the rounding by which a point's own value may differ from the corner's.
@@ -76,8 +69,8 @@ bool mayCrossPlane(const Plane& plane, double side, const Bounds& b) {
   return !(smallest > kRelativeMargin * scale);
 }
 
-PlaneTerm::PlaneTerm(const Plane& given, double side, double k, double d)
-    : given_(given), plane_(normalisedPlane(given)), side_(side), k_(k), d_(d) {}
+PlaneTerm::PlaneTerm(const Plane& given, double side, const ContactSpring& spring)
+    : given_(given), plane_(normalisedPlane(given)), side_(side), spring_(spring) {}
 
 int PlaneTerm::pointsAcross(const double* p) const {
   int across = 0;
@@ -88,13 +81,13 @@ int PlaneTerm::pointsAcross(const double* p) const {
 
 void PlaneTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
   for (int q = 0; q < kNumPoints; ++q)
-    store(force, q, load(force, q) + planeForce(plane_, side_, load(p, q), load(v, q), k_, d_));
+    store(force, q, load(force, q) + planeForce(plane_, side_, load(p, q), load(v, q), spring_));
 }
 
 void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
   for (int q = 0; q < kNumPoints; ++q) {
-    planeJacobian(plane_, side_, load(p, q), k_, d_, &dFdp, &dFdv);
+    planeJacobian(plane_, side_, load(p, q), spring_, &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
@@ -103,7 +96,7 @@ void PlaneTerm::addEnergy(const double* p, double* energy) const {
   const double norm2 = plane_.a * plane_.a + plane_.b * plane_.b + plane_.c * plane_.c;
   for (int q = 0; q < kNumPoints; ++q) {
     double s = planeValue(plane_, load(p, q));
-    if (s * side_ < 0) *energy += 0.5 * k_ * s * s / norm2;
+    if (s * side_ < 0) *energy += 0.5 * spring_.k * s * s / norm2;
   }
 }
 

@@ -37,11 +37,12 @@ std::string planeEquation(const Plane& plane);
 // Collision spring to the projection on the plane when the point is strictly on the side of
 // sign -side. Computed for every point and selected, so that the kernel's contact loop has no
 // branch. Takes the normalised plane, whose |n|^2 neither overflows nor underflows.
-inline Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v, double k, double d) {
+inline Vec3 planeForce(const Plane& plane, double side, Vec3 p, Vec3 v,
+                       const ContactSpring& spring) {
   Vec3 normal{plane.a, plane.b, plane.c};
   double s = planeValue(plane, p);
   Vec3 L = (s / dot(normal, normal)) * normal;  // p minus its projection p - (s/|n|^2) n
-  Vec3 f = collisionForce(L, v, k, d);
+  Vec3 f = contactForce(spring, L, v);
   const bool across = s * side < 0;
   return {across ? f.x : 0.0, across ? f.y : 0.0, across ? f.z : 0.0};
 }
@@ -55,7 +56,7 @@ bool mayCrossPlane(const Plane& plane, double side, const Bounds& box);
 class PlaneTerm final : public ForceTerm {
  public:
   // `given` as the world file has it; the term works with normalisedPlane(given).
-  PlaneTerm(const Plane& given, double side, double k, double d);
+  PlaneTerm(const Plane& given, double side, const ContactSpring& spring);
   const Plane& plane() const { return plane_; }  // normalised
   double side() const { return side_; }
   // How many of the points p are strictly on the far side.
@@ -70,7 +71,8 @@ class PlaneTerm final : public ForceTerm {
 
  private:
   Plane given_, plane_;
-  double side_, k_, d_;
+  double side_;
+  ContactSpring spring_;
 };
 
 }  // namespace jello

@@ -7,21 +7,21 @@
 
 namespace jello {
 
-Vec3 wallForce(Vec3 p, Vec3 v, double k, double d) {
+Vec3 wallForce(Vec3 p, Vec3 v, const ContactSpring& spring) {
   Vec3 force;
-  for (int axis = 0; axis < 3; ++axis) force += wallForceAlong(axis, p, v, k, d);
+  for (int axis = 0; axis < 3; ++axis) force += wallForceAlong(axis, p, v, spring);
   return force;
 }
 
-void wallJacobian(Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv) {
+void wallJacobian(Vec3 p, const ContactSpring& spring, Block3* dFdp, Block3* dFdv) {
   *dFdp = Block3{};
   *dFdv = Block3{};
   const double coord[3] = {p.x, p.y, p.z};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::fabs(coord[axis]) <= kBoxHalfSize) continue;
-    dFdp->m[4 * axis] -= k;
-    dFdv->m[4 * axis] -= d;
-  }
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::fabs(coord[axis]) > kBoxHalfSize)
+      addContactJacobian(spring,
+                         {axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0},
+                         dFdp, dFdv);
 }
 
 namespace {
@@ -52,7 +52,7 @@ void WallsTerm::addForces(const double* p, const double* v, const Bounds* box,
     const Vec3 pq = load(p, q), vq = load(v, q);
     Vec3 f;
     for (int axis = 0; axis < 3; ++axis)
-      if (reached[axis]) f += wallForceAlong(axis, pq, vq, k_, d_);
+      if (reached[axis]) f += wallForceAlong(axis, pq, vq, spring_);
     store(force, q, load(force, q) + f);
   }
 }
@@ -60,7 +60,7 @@ void WallsTerm::addForces(const double* p, const double* v, const Bounds* box,
 void WallsTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
   for (int q = 0; q < kNumPoints; ++q) {
-    wallJacobian(load(p, q), k_, d_, &dFdp, &dFdv);
+    wallJacobian(load(p, q), spring_, &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
@@ -68,7 +68,7 @@ void WallsTerm::addJacobian(const double* p, const double*, JacobianSink* sink) 
 void WallsTerm::addEnergy(const double* p, double* energy) const {
   for (int c = 0; c < kNumCoords; ++c) {
     double beyond = std::max(0.0, std::fabs(p[c]) - kBoxHalfSize);
-    *energy += 0.5 * k_ * beyond * beyond;
+    *energy += 0.5 * spring_.k * beyond * beyond;
   }
 }
 
@@ -79,8 +79,9 @@ void WallsTerm::summarise(std::vector<std::string>* kept, std::vector<std::strin
 std::vector<TermLine> WallsTerm::describe(const double* p) const {
   int outside = 0;
   for (int q = 0; q < kNumPoints; ++q) outside += !insideBox(load(p, q));
-  std::string text = textf(
-      "the box [-2,2]^3, collision springs kCollision %.9g N/m, dCollision %.9g N s/m", k_, d_);
+  std::string text =
+      textf("the box [-2,2]^3, collision springs kCollision %.9g N/m, dCollision %.9g N s/m",
+            spring_.k, spring_.d);
   if (outside) text += textf("; %d points start outside it", outside);
   return {{"walls", text}};
 }

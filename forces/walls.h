@@ -12,18 +12,18 @@ namespace jello {
 // The collision spring of the wall perpendicular to `axis` (0 x, 1 y, 2 z) that the point is
 // strictly beyond, from the point's projection on it; zero when it is beyond neither. Selects,
 // not branches, so that the kernel's loop over the points vectorises.
-inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, double k, double d) {
+inline Vec3 wallForceAlong(int axis, Vec3 p, Vec3 v, const ContactSpring& spring) {
   const double c = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
   const double beyond = c > kBoxHalfSize    ? c - kBoxHalfSize
                         : c < -kBoxHalfSize ? c + kBoxHalfSize
                                             : 0.0;
   const Vec3 L{axis == 0 ? beyond : 0.0, axis == 1 ? beyond : 0.0, axis == 2 ? beyond : 0.0};
-  return collisionForce(L, v, k, d);
+  return contactForce(spring, L, v);
 }
 // Sum of the collision springs of the walls of [-2,2]^3 the point is strictly beyond.
-Vec3 wallForce(Vec3 p, Vec3 v, double k, double d);
+Vec3 wallForce(Vec3 p, Vec3 v, const ContactSpring& spring);
 // Derivatives of wallForce: -k e e^T and -d e e^T for each wall the point is beyond.
-void wallJacobian(Vec3 p, double k, double d, Block3* dFdp, Block3* dFdv);
+void wallJacobian(Vec3 p, const ContactSpring& spring, Block3* dFdp, Block3* dFdv);
 
 // Inside the box, walls included; false for a non-finite point.
 inline bool insideBox(Vec3 p) {
@@ -33,7 +33,7 @@ inline bool insideBox(Vec3 p) {
 
 class WallsTerm final : public ForceTerm {
  public:
-  WallsTerm(double k, double d) : k_(k), d_(d) {}
+  explicit WallsTerm(const ContactSpring& spring) : spring_(spring) {}
   // Some point of the box is beyond a wall.
   bool mayReach(const Bounds& box) const override;
   void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
@@ -43,7 +43,7 @@ class WallsTerm final : public ForceTerm {
   std::vector<TermLine> describe(const double* p) const override;
 
  private:
-  double k_, d_;  // the collision springs' stiffness (N/m) and damping (N s/m)
+  ContactSpring spring_;
 };
 
 }  // namespace jello

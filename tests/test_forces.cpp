@@ -128,18 +128,18 @@ TEST(Springs, HandComputedStretchedAndDampedSpring) {
 
 TEST(Walls, PointBeyondOneWall) {
   // x = 2.5 is 0.5 past x = 2: F = -1000*0.5 - 0.25*(v.u)u with u = +x, v.u = 1.
-  Vec3 f = wallForce({2.5, 0.3, -1}, {1, 2, 3}, 1000, 0.25);
+  Vec3 f = wallForce({2.5, 0.3, -1}, {1, 2, 3}, {1000, 0.25});
   EXPECT_DOUBLE_EQ(f.x, -500.25);
   EXPECT_EQ(f.y, 0);
   EXPECT_EQ(f.z, 0);
   // Beyond the floor z = -2 by 0.1, moving down at 3 m/s: u = -z, v.u = 3, F = +100 + 0.75.
-  Vec3 floor = wallForce({0, 0, -2.1}, {0, 0, -3}, 1000, 0.25);
+  Vec3 floor = wallForce({0, 0, -2.1}, {0, 0, -3}, {1000, 0.25});
   EXPECT_NEAR(floor.z, 100.0 + 0.75, 1e-12);  // -2.1 + 2 is -0.1 only to rounding
 }
 
 TEST(Walls, PointBeyondTwoWallsGetsTwoSprings) {
   // 0.5 past x = -2 and 1 past y = 2: u_x = -x, u_y = +y.
-  Vec3 f = wallForce({-2.5, 3, 0.5}, {1, -2, 9}, 1000, 0.25);
+  Vec3 f = wallForce({-2.5, 3, 0.5}, {1, -2, 9}, {1000, 0.25});
   EXPECT_DOUBLE_EQ(f.x, 500 - 0.25 * 1);  // -k(-0.5) - d (v.u)(u_x) = 500 - 0.25*(-1)*(-1)
   EXPECT_DOUBLE_EQ(f.y, -1000 + 0.5);     // -k(1) - d(-2)(1)
   EXPECT_EQ(f.z, 0);
@@ -147,7 +147,7 @@ TEST(Walls, PointBeyondTwoWallsGetsTwoSprings) {
 
 TEST(Walls, PointOnAWallOrInsideFeelsNothing) {
   for (Vec3 p : {Vec3{2, 0, 0}, Vec3{-2, -2, 2}, Vec3{1.999, 0, -1.999}, Vec3{0, 0, 0}}) {
-    Vec3 f = wallForce(p, {5, 5, 5}, 1000, 0.25);
+    Vec3 f = wallForce(p, {5, 5, 5}, {1000, 0.25});
     EXPECT_EQ(f.x, 0);
     EXPECT_EQ(f.y, 0);
     EXPECT_EQ(f.z, 0);
@@ -159,23 +159,23 @@ TEST(Plane, HandComputedCollisionSpring) {
   // L = (s/3)(1,1,1), u = -(1,1,1)/sqrt3. With v = (0,0,-1): v.u = 1/sqrt3,
   // F = -k L - d (v.u) u = (k/3 + d/3)(1,1,1).
   Plane plane{1, 1, 1, -1};
-  Vec3 f = planeForce(plane, +1, {0, 0, 0}, {0, 0, -1}, 1000, 0.25);
+  Vec3 f = planeForce(plane, +1, {0, 0, 0}, {0, 0, -1}, {1000, 0.25});
   EXPECT_NEAR(f.x, 1000.25 / 3, 1e-12);
   EXPECT_NEAR(f.y, 1000.25 / 3, 1e-12);
   EXPECT_NEAR(f.z, 1000.25 / 3, 1e-12);
   // Scaling the plane's equation changes nothing.
-  Vec3 g = planeForce({2, 2, 2, -2}, +1, {0, 0, 0}, {0, 0, -1}, 1000, 0.25);
+  Vec3 g = planeForce({2, 2, 2, -2}, +1, {0, 0, 0}, {0, 0, -1}, {1000, 0.25});
   EXPECT_NEAR(g.x, f.x, 1e-12);
   // On the allowed side, or on the plane: nothing.
   for (Vec3 p : {Vec3{1, 1, 1}, Vec3{1, 0, 0}}) {
-    Vec3 none = planeForce(plane, +1, p, {1, 1, 1}, 1000, 0.25);
+    Vec3 none = planeForce(plane, +1, p, {1, 1, 1}, {1000, 0.25});
     EXPECT_EQ(none.x, 0);
     EXPECT_EQ(none.z, 0);
   }
   // With the negative side allowed, the roles swap: (1,1,1) has s = 2, L = (2/3)(1,1,1).
-  Vec3 h = planeForce(plane, -1, {1, 1, 1}, {0, 0, 0}, 1000, 0.25);
+  Vec3 h = planeForce(plane, -1, {1, 1, 1}, {0, 0, 0}, {1000, 0.25});
   EXPECT_NEAR(h.x, -2000.0 / 3, 1e-12);
-  Vec3 none = planeForce(plane, -1, {0, 0, 0}, {0, 0, 0}, 1000, 0.25);
+  Vec3 none = planeForce(plane, -1, {0, 0, 0}, {0, 0, 0}, {1000, 0.25});
   EXPECT_EQ(none.x, 0);
 }
 
@@ -397,9 +397,9 @@ TEST(Forces, TotalForceSumsEveryTermOnEveryPoint) {
   std::vector<double> force(kNumCoords);
   computeForces(model, state.p(), state.v(), force.data());
   const World& w = f.world;
-  Vec3 expected = wallForce(load(state.p(), q), load(state.v(), q), w.kCollision, w.dCollision) +
+  Vec3 expected = wallForce(load(state.p(), q), load(state.v(), q), {w.kCollision, w.dCollision}) +
                   planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q),
-                             w.kCollision, w.dCollision) +
+                             {w.kCollision, w.dCollision}) +
                   fieldForce(w.field, load(state.p(), q));
   for (const Spring& s : model.springs()) {
     if (s.a != q && s.b != q) continue;
@@ -408,8 +408,8 @@ TEST(Forces, TotalForceSumsEveryTermOnEveryPoint) {
                     load(state.v(), s.a) - load(state.v(), s.b), w.kElastic, w.dElastic, s.rest);
     expected += s.a == q ? fs : -fs;
   }
-  EXPECT_NE(planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q), 1, 0).x,
-            0)
+  EXPECT_NE(
+      planeForce(w.plane, model.planeSide(), load(state.p(), q), load(state.v(), q), {1, 0}).x, 0)
       << "plane not hit";
   Vec3 got = load(force.data(), q);
   EXPECT_NEAR(got.x, expected.x, 1e-9);
