@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/assert.h"
 #include "forces/walls.h"
 
 namespace jello {
@@ -131,6 +132,10 @@ Block3 fieldJacobian(const ForceField& field, Vec3 p) {
 }
 
 FieldTerm::FieldTerm(const ForceField& field, Method method) : field_(field), method_(method) {
+  // The node array is the world's whole field: what trilinear() and gradientAt() index.
+  JELLO_ASSERT(field.forces.size() == 3 * field_.nodes());
+  // A padded field is interpolated between nodes: one node is a uniform field.
+  JELLO_ASSERT(method != Method::Padded || field.resolution >= 2);
   const std::size_t nodes = field.forces.size() / 3;
   for (std::size_t n = 0; n < nodes; ++n)
     largestNode_ = std::max(largestNode_, length(field.node(n)));

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/assert.h"
+
 namespace jello {
 
 Mat3 toMatrix(const Block3& block) {
@@ -72,6 +74,7 @@ class Assembly final : public JacobianSink {
  public:
   Assembly(AccelerationJacobian* out, double perMass) : out_(out), perMass_(perMass) {}
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
+    JELLO_ASSERT(slot_ + 4 + kNumPoints <= out_->blockSlots.size());
     for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
       addBlock(out_->dAdp.valuePtr(), out_->blockSlots[slot_], dFdL, sign * perMass_);
       addBlock(out_->dAdv.valuePtr(), out_->blockSlots[slot_], dFdw, sign * perMass_);
@@ -84,6 +87,8 @@ class Assembly final : public JacobianSink {
   }
   // The diagonal blocks, with the user's pull (a spring to a fixed target: -stiffness I).
   void finish(const Pull* pull) {
+    // Every pair term gave as many pairs as it listed when the pattern was built.
+    JELLO_ASSERT(slot_ + kNumPoints == out_->blockSlots.size());
     for (int q = 0; q < kNumPoints; ++q, ++slot_) {
       Block3& blockP = out_->pointP[q];
       if (pull && pull->point == q)
