@@ -1,14 +1,13 @@
 # The README's two commands: `make run` and `make test`. CMake does the building, into build/.
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
-UBSAN_DIR ?= build-ubsan
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
 CLANG_FORMAT ?= clang-format-14
 
-.PHONY: all deps run test test-sanitize test-ubsan format-check fuzz vec-report animation clean
+.PHONY: all deps run test test-sanitize format-check fuzz vec-report animation clean
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -41,27 +40,22 @@ animation: all
 test: deps all
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# The whole suite once more under AddressSanitizer and UndefinedBehaviorSanitizer.
+# The whole suite once more, built by clang with AddressSanitizer and UndefinedBehaviorSanitizer,
+# float-cast-overflow included (a NaN or too large a double converted to an integer: GCC's UBSan
+# does not check it), invariants checked (JELLO_ASSERT) and warnings as errors (JELLO_WERROR).
+# Every UBSan report, in the tests or in the programs they start, is written to
+# $(SANITIZE_DIR)/ubsan-reports/ and fails the target.
 test-sanitize: deps
-	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_SANITIZE=ON
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+		-DJELLO_SANITIZE=ON -DJELLO_WERROR=ON
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
-	cd $(SANITIZE_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
-		ctest --output-on-failure -j $(JOBS)
-
-# The whole suite once more, built by clang with UndefinedBehaviorSanitizer and float-cast-overflow
-# (a NaN or too large a double converted to an integer: GCC's UBSan does not check it) and with
-# warnings as errors (JELLO_WERROR). Every report, in the tests or in the programs they start,
-# is written to $(UBSAN_DIR)/ubsan-reports/ and fails the target.
-test-ubsan: deps
-	cmake -S . -B $(UBSAN_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-		-DJELLO_SANITIZE_CLANG_UB=ON -DJELLO_WERROR=ON
-	cmake --build $(UBSAN_DIR) -j $(JOBS)
-	rm -rf $(UBSAN_DIR)/ubsan-reports && mkdir -p $(UBSAN_DIR)/ubsan-reports
-	@status=0; cd $(UBSAN_DIR) && \
+	rm -rf $(SANITIZE_DIR)/ubsan-reports && mkdir -p $(SANITIZE_DIR)/ubsan-reports
+	@status=0; cd $(SANITIZE_DIR) && \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:log_path=$$PWD/ubsan-reports/report \
 		ctest --output-on-failure -j $(JOBS) || status=1; \
 	if [ -n "$$(ls ubsan-reports)" ]; then \
-	  echo "test-ubsan: UndefinedBehaviorSanitizer reports:"; cat ubsan-reports/*; status=1; fi; \
+	  echo "test-sanitize: UndefinedBehaviorSanitizer reports:"; cat ubsan-reports/*; status=1; fi; \
 	exit $$status
 
 # Fails, naming each file and line, where a .cpp or .h file of the project differs from what the

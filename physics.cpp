@@ -64,23 +64,22 @@ constexpr int kMaxTerms = 16;
 
 }  // namespace
 
-std::vector<std::string> leftOutOf(const Scene& scene) {
-  std::vector<std::string> kept, left;
-  for (const auto& term : scene.terms) term->summarise(&kept, &left);
-  left.insert(left.end(), scene.leftOut.begin(), scene.leftOut.end());
-  return left;
+SceneSummary summarise(const Scene& scene) {
+  SceneSummary summary;
+  for (const auto& term : scene.terms) term->summarise(&summary.kept, &summary.leftOut);
+  summary.leftOut.insert(summary.leftOut.end(), scene.leftOut.begin(), scene.leftOut.end());
+  return summary;
+}
+
+std::string listText(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const std::string& part : parts) out += (out.empty() ? "" : ", ") + part;
+  return out.empty() ? std::string("nothing") : out;
 }
 
 std::string sceneLine(const Scene& scene) {
-  std::vector<std::string> kept, left;
-  for (const auto& term : scene.terms) term->summarise(&kept, &left);
-  left.insert(left.end(), scene.leftOut.begin(), scene.leftOut.end());
-  auto join = [](const std::vector<std::string>& parts) {
-    std::string out;
-    for (const std::string& part : parts) out += (out.empty() ? "" : ", ") + part;
-    return out.empty() ? std::string("nothing") : out;
-  };
-  return "scene: kept: " + join(kept) + "; left out: " + join(left);
+  const SceneSummary summary = summarise(scene);
+  return "scene: kept: " + listText(summary.kept) + "; left out: " + listText(summary.leftOut);
 }
 
 Model makeModel(const World& world, const State& initial, KernelChoice choice) {

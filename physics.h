@@ -37,10 +37,16 @@ struct Scene {
   const SpringTerm* springs = nullptr;  // in terms, always there
   const PlaneTerm* plane = nullptr;     // in terms, or null without a plane
 };
+// What a scene computes ("springs", "plane (when the bounding box reaches it)", ...) and what it
+// leaves out, and why: its terms' parts, then the terms it does not have.
+struct SceneSummary {
+  std::vector<std::string> kept, leftOut;
+};
+SceneSummary summarise(const Scene& scene);
+// "a, b, c", or "nothing" for no parts.
+std::string listText(const std::vector<std::string>& parts);
 // "scene: kept: ...; left out: ...", naming every term of the force.
 std::string sceneLine(const Scene& scene);
-// What the scene leaves out, and why: its terms' parts left out, then the terms.
-std::vector<std::string> leftOutOf(const Scene& scene);
 
 // A world ready to simulate: its parameters and what is derived from them once. Moved, never
 // copied: its terms point into its world's field.

@@ -39,10 +39,8 @@ std::string termLines(const World& w, const State& state) {
   for (const auto& term : general.scene.terms)
     for (const TermLine& line : term->describe(state.p()))
       out += textf("%-11s %s\n", line.label.c_str(), line.text.c_str());
-  const std::vector<std::string> left = leftOutOf(general.scene);
-  std::string joined;
-  for (const std::string& part : left) joined += (joined.empty() ? "" : ", ") + part;
-  if (!joined.empty()) out += "left out    " + joined + "\n";
+  const std::vector<std::string> left = summarise(general.scene).leftOut;
+  if (!left.empty()) out += "left out    " + listText(left) + "\n";
   return out;
 }
 }  // namespace
