@@ -165,8 +165,12 @@ void FieldTerm::addForces(const double* p, const double*, const Bounds* box, dou
   const bool inside = allInside(box);
   switch (method_) {
     case Method::Uniform:
+      if (inside) {  // the common case, without the per-point test
+        for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + uniform_);
+        return;
+      }
       for (int q = 0; q < kNumPoints; ++q)
-        store(force, q, load(force, q) + (inside || insideBox(load(p, q)) ? uniform_ : Vec3{}));
+        store(force, q, load(force, q) + (insideBox(load(p, q)) ? uniform_ : Vec3{}));
       return;
     case Method::Padded:
       if (inside) {  // the common case, without the per-point test
