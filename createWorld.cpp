@@ -253,36 +253,25 @@ void addStateOptions(CLI::App& app, Options& o) {
           ->type_name("L")
           ->transform(kPositive)
           ->group("Initial state");
-  o.centerOption = app.add_option("--center", o.center,
-                                  "centre of the cube X Y Z, m (default: corner at the origin)")
-                       ->type_name("X Y Z")
-                       ->expected(3)
-                       ->transform(kFinite)
-                       ->group("Initial state");
+  // The five vector options of the initial state: three finite numbers each.
+  auto vector = [&app](const char* name, std::vector<double>& target, const char* help,
+                       const char* names) {
+    return app.add_option(name, target, help)
+        ->type_name(names)
+        ->expected(3)
+        ->transform(kFinite)
+        ->group("Initial state");
+  };
+  o.centerOption = vector("--center", o.center,
+                          "centre of the cube X Y Z, m (default: corner at the origin)", "X Y Z");
   o.rotateOption =
-      app.add_option("--rotate", o.rotation, "turn the cube about x, then y, then z, degrees")
-          ->type_name("AX AY AZ")
-          ->expected(3)
-          ->transform(kFinite)
-          ->group("Initial state");
+      vector("--rotate", o.rotation, "turn the cube about x, then y, then z, degrees", "AX AY AZ");
   o.velocityOption =
-      app.add_option("--velocity", o.velocity, "velocity of every point VX VY VZ, m/s")
-          ->type_name("VX VY VZ")
-          ->expected(3)
-          ->transform(kFinite)
-          ->group("Initial state");
-  o.spinOption =
-      app.add_option("--spin", o.spin, "rigid angular velocity WX WY WZ about the centre, rad/s")
-          ->type_name("WX WY WZ")
-          ->expected(3)
-          ->transform(kFinite)
-          ->group("Initial state");
+      vector("--velocity", o.velocity, "velocity of every point VX VY VZ, m/s", "VX VY VZ");
+  o.spinOption = vector("--spin", o.spin, "rigid angular velocity WX WY WZ about the centre, rad/s",
+                        "WX WY WZ");
   o.skewOption =
-      app.add_option("--skew-corner", o.skew, "displace corner p[7][7][7] by DX DY DZ, m")
-          ->type_name("DX DY DZ")
-          ->expected(3)
-          ->transform(kFinite)
-          ->group("Initial state");
+      vector("--skew-corner", o.skew, "displace corner p[7][7][7] by DX DY DZ, m", "DX DY DZ");
   app.add_flag("--inside-out", o.insideOut,
                "reflect the cube through its centre: every face faces in")
       ->group("Initial state");
