@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <functional>
+#include <iterator>
 #include <random>
 
 #include "test_support.h"
@@ -262,8 +264,9 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   std::string path = dir + "/out.w";
   writeWorldFile(path, f.world, f.state);
   expectSameWorld(f, readWorldFile(path));
-  EXPECT_EQ(std::system(("test $(ls -A '" + dir + "' | wc -l) -eq 1").c_str()), 0)
-      << "temporary file left behind";
+  const auto entries = std::distance(std::filesystem::directory_iterator(dir),
+                                     std::filesystem::directory_iterator());
+  EXPECT_EQ(entries, 1) << "temporary file left behind";
   EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
   test::removeTree(dir);
 }
