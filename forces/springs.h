@@ -73,6 +73,7 @@ class SpringTerm final : public ForceTerm {
 
   bool isPairTerm() const override { return true; }
   std::vector<std::pair<int, int>> pairs() const override;
+  std::size_t pairCount() const override { return springs_.size(); }
   bool mayReach(const Bounds&) const override { return true; }
   void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;

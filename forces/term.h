@@ -64,6 +64,8 @@ class ForceTerm {
   virtual bool isPairTerm() const { return false; }
   // The pairs (a, b) a pair term joins, in the order of its Jacobian blocks; none for a point term.
   virtual std::vector<std::pair<int, int>> pairs() const { return {}; }
+  // pairs().size(), without making the list (the Jacobian checks its pattern with it each time).
+  virtual std::size_t pairCount() const { return 0; }
 
   // Whether the term may act on some point inside `box`. Conservative: true when unsure.
   virtual bool mayReach(const Bounds& box) const = 0;

@@ -108,8 +108,10 @@ class Assembly final : public JacobianSink {
 
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out) {
-  std::vector<std::pair<int, int>> blocks = patternBlocks(model);
-  if (out->blockSlots.size() != blocks.size()) buildPattern(blocks, out);
+  // The pattern is made once per model shape; later calls only check that it still fits.
+  std::size_t blocks = kNumPoints;
+  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
+  if (out->blockSlots.size() != blocks) buildPattern(patternBlocks(model), out);
   std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
   std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
   out->pointP.assign(kNumPoints, Block3{});
