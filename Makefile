@@ -11,7 +11,7 @@ CLANG_FORMAT ?= clang-format-14
 
 all: $(BUILD_DIR)/Makefile
 	cmake --build $(BUILD_DIR) -j $(JOBS)
-	cp -f $(BUILD_DIR)/jello $(BUILD_DIR)/createWorld .
+	cp -f $(BUILD_DIR)/jello $(BUILD_DIR)/createWorld $(BUILD_DIR)/grade .
 
 $(BUILD_DIR)/Makefile: CMakeLists.txt tests/CMakeLists.txt
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
@@ -77,4 +77,4 @@ fuzz: deps
 	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) jello createWorld
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) jello createWorld grade

@@ -124,7 +124,8 @@ CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetu
       if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
     }
     if (setup.before) setup.before();
-    ::alarm(kHangGuardSeconds);  // survives exec: a hang ends as a failed test, not a stuck suite
+    ::alarm(
+        setup.hangGuardSeconds);  // survives exec: a hang ends as a failed test, not a stuck suite
     ::execv(args[0], args.data());
     ::_exit(127);
   }

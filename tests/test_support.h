@@ -47,12 +47,13 @@ CommandResult runShell(const std::string& script);
 bool haveGnuplot();
 // How runProgram starts a program.
 struct ProgramSetup {
-  std::string cwd;                 // working directory; "" for the test's own
-  std::uint64_t addressSpace = 0;  // RLIMIT_AS, bytes; 0 for none
-  void (*before)() = nullptr;      // run in the child just before exec (a setrlimit, say)
+  std::string cwd;                  // working directory; "" for the test's own
+  std::uint64_t addressSpace = 0;   // RLIMIT_AS, bytes; 0 for none
+  void (*before)() = nullptr;       // run in the child just before exec (a setrlimit, say)
+  unsigned hangGuardSeconds = 120;  // stopped after this long (status -1)
 };
-// A program still running after this long is stopped (status -1): a hang fails, never sticks.
-constexpr unsigned kHangGuardSeconds = 120;
+// A program still running after setup.hangGuardSeconds (120 s unless a test says otherwise) is
+// stopped (status -1): a hang fails, never sticks.
 // Runs argv[0] (a path) with arguments argv[1..] directly (no shell), stdin from /dev/null,
 // output captured. status is -1 when it was killed by a signal (e.g. SIGABRT from an uncaught
 // std::bad_alloc, or the hang guard).

@@ -1,0 +1,182 @@
+// checkagreement.cpp: whole runs against this project's. Some worlds amplify rounding (two
+// correct programs, 1e-14 m apart at step 120, can be a metre apart at step 2000), so the
+// tolerance is the world's own: the spread of this project's run when its start is nudged by one
+// ulp, and a world is judged at the last checkpoint where that spread is still small.
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <random>
+
+#include "grader/checkkit.h"
+#include "physics.h"
+#include "solver/simulation.h"
+
+namespace jello::grader {
+namespace {
+
+constexpr int kCheckpoints = 20;
+constexpr long kCheckpointSteps = 100;  // 2000 steps in all
+// Tolerance: this many times the nudged spread, and never below kFloor.
+constexpr double kSpreadFactor = 100;
+constexpr double kFloor = 1e-9;       // m RMS
+constexpr double kJudgedUpTo = 1e-6;  // m: a checkpoint whose tolerance is larger is not judged
+constexpr double kNear = 1e-2;        // m RMS: beyond the tolerance but below this, near
+
+struct Reference {
+  std::vector<State> checkpoints;  // after 100, 200, ... steps
+  std::vector<double> tolerance;   // m RMS, per checkpoint
+  std::string diverged;            // when this project's own run diverged
+};
+
+double rms(const State& a, const State& b) {
+  double sum = 0;
+  for (int n = 0; n < kNumCoords; ++n) sum += std::pow(a.p()[n] - b.p()[n], 2);
+  return std::sqrt(sum / kNumPoints);
+}
+
+std::vector<State> runCheckpoints(const WorldFile& file, std::string* diverged) {
+  Model model = makeModel(file.world, file.state);
+  Simulation run(model, file.state, file.world.integrator, file.world.dt);
+  std::vector<State> states;
+  for (int c = 0; c < kCheckpoints; ++c) {
+    RunOutcome outcome = run.advance(kCheckpointSteps);
+    if (!outcome.ran()) {
+      *diverged = outcome.reason;
+      break;
+    }
+    states.push_back(run.state());
+  }
+  return states;
+}
+
+Reference makeReference(const WorldFile& file) {
+  Reference ref;
+  ref.checkpoints = runCheckpoints(file, &ref.diverged);
+  ref.tolerance.assign(ref.checkpoints.size(), kFloor);
+  for (double toward : {INFINITY, -INFINITY}) {
+    WorldFile nudged = file;
+    for (int n = 0; n < kNumCoords; ++n)
+      nudged.state.p()[n] = std::nextafter(file.state.p()[n], toward);
+    std::string ignored;
+    std::vector<State> states = runCheckpoints(nudged, &ignored);
+    for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
+      double spread = c < states.size() ? rms(states[c], ref.checkpoints[c]) : INFINITY;
+      ref.tolerance[c] = std::fmax(ref.tolerance[c], kSpreadFactor * spread);
+    }
+  }
+  return ref;
+}
+
+// Worlds the submission has never seen, from the seed: springs, damping, a field, a plane under
+// the cube (its positive side up, as in the course's worlds), a turned, moving, spinning cube.
+WorldFile unseenWorld(std::uint64_t seed, int which) {
+  std::mt19937_64 random(seed * 2 + static_cast<unsigned>(which));
+  auto uniform = [&](double a, double b) {
+    return std::uniform_real_distribution<double>(a, b)(random);
+  };
+  WorldFile file;
+  World& w = file.world;
+  w.integrator = which == 0 ? Integrator::RK4 : Integrator::Euler;
+  w.dt = which == 0 ? 0.0005 : 0.0001;
+  w.kElastic = uniform(200, 500), w.dElastic = uniform(0.1, 0.5);
+  w.kCollision = uniform(400, 1000), w.dCollision = uniform(0.1, 0.5);
+  w.mass = kProbeMass;
+  w.field.resolution = 6;
+  for (int n = 0; n < 3 * 216; ++n)
+    w.field.forces.push_back(uniform(-0.05, 0.05) - (n % 3 == 2 ? 0.05 : 0));
+  file.state =
+      restLattice({uniform(-1.2, 0.2), uniform(-1.2, 0.2), uniform(-1.2, 0.2)}, uniform(0, 3));
+  Vec3 spin = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)},
+       drift = {uniform(-3, 3), uniform(-3, 3), uniform(-3, 3)};
+  Vec3 normal = {uniform(-0.5, 0.5), uniform(-0.5, 0.5), 1};
+  double lowest = INFINITY;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 p = load(file.state.p(), q);
+    store(file.state.v(), q, drift + cross(spin, p));
+    lowest = std::fmin(lowest, dot(normal, p));
+  }
+  double scale = uniform(0.5, 2);
+  w.hasPlane = true;
+  w.plane = {scale * normal.x, scale * normal.y, scale * normal.z,
+             -scale * (lowest - uniform(0.1, 0.4))};
+  return file;
+}
+
+struct Judged {
+  Grade grade = Grade::Pass;
+  std::string line;
+};
+
+Judged judgeWorld(const std::string& name, const Reference& ref, const ProbeRun& run,
+                  std::size_t first) {
+  if (!ref.diverged.empty())
+    return {Grade::Info, name + ": this project's run diverged (" + ref.diverged + "); not judged"};
+  std::size_t judged = 0;
+  for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
+    if (ref.tolerance[c] <= kJudgedUpTo) judged = c;
+  }
+  long step = static_cast<long>(judged + 1) * kCheckpointSteps;
+  if (run.answers.size() < first + 2 * (judged + 1)) {
+    return {Grade::Fail, name + ": " + (run.failure.empty() ? "no answer" : run.failure) +
+                             " before step " + std::to_string(step)};
+  }
+  State theirs = run.state(first + 2 * judged + 1);
+  double distance = rms(theirs, ref.checkpoints[judged]);
+  std::string where = textf(
+      "%s: %.3g m RMS from this project at step %ld (tolerance %.2g m, from the "
+      "world's own sensitivity%s)",
+      name.c_str(), distance, step, ref.tolerance[judged],
+      judged + 1 < ref.checkpoints.size() ? "; later steps amplify rounding too much to judge"
+                                          : "");
+  if (distance <= ref.tolerance[judged]) return {Grade::Pass, where};
+  if (distance <= kNear) return {Grade::Near, where};
+  return {Grade::Fail,
+          std::isfinite(distance) ? where : name + ": NaN by step " + std::to_string(step)};
+}
+
+}  // namespace
+
+CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) {
+  std::vector<std::pair<std::string, WorldFile>> worlds;
+  for (const char* name : {"rotate.w", "jello.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
+    worlds.emplace_back(name, readWorldFile(setup.worldDir + "/" + name));
+  }
+  for (int which = 0; which < 2; ++which) {
+    worlds.emplace_back(textf("unseen %s world (seed %llu)", which == 0 ? "RK4" : "Euler",
+                              static_cast<unsigned long long>(setup.seed)),
+                        unseenWorld(setup.seed, which));
+  }
+  // The references: the same for every submission of a run.
+  static std::mutex lock;
+  static std::map<std::string, Reference> references;
+  CheckResult result = passed("agreement", "");
+  std::string passes;
+  for (const auto& [name, file] : worlds) {
+    Reference* ref;
+    {
+      std::lock_guard<std::mutex> hold(lock);
+      auto found = references.find(name);
+      if (found == references.end()) found = references.emplace(name, makeReference(file)).first;
+      ref = &found->second;
+    }
+    Script script;
+    script.world(file.world, file.state);
+    for (int c = 0; c < kCheckpoints; ++c) {
+      script.steps(file.world.integrator, kCheckpointSteps);
+      script.read();
+    }
+    ProbeRun run = runProbe(probe, script, {3});
+    Judged judged = judgeWorld(name, *ref, run, 0);
+    if (judged.grade == Grade::Fail ||
+        (judged.grade == Grade::Near && result.grade == Grade::Pass)) {
+      if (result.grade != Grade::Fail) result.diagnosis = judged.line;
+      result.grade = judged.grade;
+    }
+    result.notes.push_back(judged.line);
+  }
+  if (result.grade == Grade::Pass)
+    result.diagnosis = textf("%zu worlds within their tolerance", worlds.size());
+  return result;
+}
+
+}  // namespace jello::grader

@@ -1,0 +1,167 @@
+// checkcontacts.cpp: the walls, the plane and the field, each isolated by moving the cube
+// rigidly (its springs stay as they were, so only the contact changes) or by swapping the field.
+#include <cmath>
+
+#include "grader/checkkit.h"
+#include "physics.h"
+
+namespace jello::grader {
+namespace {
+
+constexpr double kExact = 1e-8;
+constexpr double kNoForce = 1e-7;  // N
+
+// A contact measured on the points across it: the cube moved across by depth1 and depth2 from a
+// place just inside, then at depth2 moving with `velocity`.
+struct ContactProbe {
+  State inside;
+  Vec3 inward;  // unit normal into the allowed region
+  double depth1 = 0.01, depth2 = 0.02;
+  Vec3 velocity;  // into the contact and along it
+};
+
+void scriptContact(Script& script, const ContactProbe& probe) {
+  auto moved = [&](double depth, Vec3 v) {
+    State s = probe.inside;
+    for (int q = 0; q < kNumPoints; ++q) {
+      store(s.p(), q, load(s.p(), q) - (depth + 0.01) * probe.inward);
+      store(s.v(), q, v);
+    }
+    return s;
+  };
+  for (State s : {probe.inside, moved(probe.depth1, {}), moved(probe.depth2, {}),
+                  moved(probe.depth2, probe.velocity)}) {
+    script.state(s);
+    script.accelerations();
+  }
+}
+
+// Judges the answers [first, first + 4) of a contact probe: `across` says which points are
+// across at both depths. "" when right.
+std::string judgeContact(const ProbeRun& run, std::size_t first, const ContactProbe& probe,
+                         const std::vector<bool>& across, const World& world,
+                         const std::string& name) {
+  const auto& a = run.answers;
+  for (int q = 0; q < kNumPoints; ++q) {
+    if (across[q]) continue;
+    for (int n = 1; n < 4; ++n) {
+      if (length(forceChange(a[first + n], a[first], q)) > kNoForce) {
+        return name + ": pushes " + pointName(q) + ", which is not across it";
+      }
+    }
+  }
+  int count = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    if (!across[q]) continue;
+    Vec3 f1 = forceChange(a[first + 1], a[first], q), f2 = forceChange(a[first + 2], a[first], q);
+    Vec3 damp = forceChange(a[first + 3], a[first + 2], q);
+    ++count;
+    double n1 = dot(f1, probe.inward), n2 = dot(f2, probe.inward);
+    if (std::fabs(n2) < kNoForce) return name + ": no force on points across it";
+    double k = (n2 - n1) / (probe.depth2 - probe.depth1), rest = probe.depth1 - n1 / k;
+    if (length(f2 - n2 * probe.inward) > kNoForce)
+      return name + ": the force is not along the normal";
+    if (std::fabs(k - world.kCollision) > kExact * world.kCollision) {
+      return name + textf(": stiffness %.6g N/m measured, kCollision = %g N/m expected%s", k,
+                          world.kCollision, k < 0 ? " (it pulls points further across)" : "");
+    }
+    if (std::fabs(rest) > 1e-9)
+      return name + textf(": rest length %.3g m measured, 0 expected", rest);
+    Vec3 into = dot(probe.velocity, probe.inward) * probe.inward;
+    Vec3 expected = -world.dCollision * into;  // -d (v . u) u, u out of the allowed side
+    if (length(damp - expected) > kExact * length(expected)) {
+      if (length(damp) < kNoForce) return name + ": no damping";
+      if (length(damp + expected) < kExact * length(expected))
+        return name + ": damping sign flipped";
+      if (length(damp - (-world.dCollision) * probe.velocity) < kExact * length(expected)) {
+        return name + ": damps the velocity along the contact too, not only into it";
+      }
+      return name +
+             textf(": damping force %.6g N, %.6g N expected", length(damp), length(expected));
+    }
+  }
+  return count == 0 ? name + ": nothing crossed it (grader error)" : "";
+}
+
+std::vector<bool> acrossWall(const State& s, int axis, double side) {
+  std::vector<bool> across(kNumPoints);
+  for (int q = 0; q < kNumPoints; ++q) across[q] = s.p()[coordIndex(q, axis)] * side > 1.98;
+  return across;
+}
+
+const char* const kWallNames[6] = {"wall x = -2", "wall x = +2", "wall y = -2",
+                                   "wall y = +2", "wall z = -2", "wall z = +2"};
+
+}  // namespace
+
+CheckResult checkWalls(const std::string& probe) {
+  World world = probeWorld();
+  Script script;
+  script.world(world, restLattice(kCentred));
+  std::vector<ContactProbe> probes;
+  for (int wall = 0; wall < 6; ++wall) {
+    int axis = wall / 2;
+    double side = wall % 2 ? 1 : -1;
+    Vec3 outward = {axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0};
+    Vec3 along = {axis == 1 ? 0.3 : 0, axis == 2 ? 0.3 : 0, axis == 0 ? 0.3 : 0};
+    // Its face 0.01 m inside the wall.
+    ContactProbe p{restLattice(kCentred + 1.49 * outward), -outward, 0.01, 0.02,
+                   0.4 * outward + along};
+    scriptContact(script, p);
+    probes.push_back(p);
+  }
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return crashed("walls", run, "with the cube against a wall");
+  for (int wall = 0; wall < 6; ++wall) {
+    std::vector<bool> across = acrossWall(probes[wall].inside, wall / 2, wall % 2 ? 1 : -1);
+    std::string why = judgeContact(run, 4 * wall, probes[wall], across, world, kWallNames[wall]);
+    if (!why.empty()) return failed("walls", why);
+  }
+  return passed("walls",
+                "all six: kCollision, rest length 0, only beyond the wall, damping into it");
+}
+
+CheckResult checkPlane(const std::string& probe) {
+  World world = probeWorld();
+  // The plane x + y + 2z + d = 0, not normalised as in the course's worlds, 0.01 m under the
+  // cube's corner p[0][0][0]: the cube is on its positive side (the course's convention).
+  Vec3 a = {1, 1, 2};
+  double norm = length(a);
+  State inside = restLattice(kCentred);
+  world.hasPlane = true;
+  world.plane = {a.x, a.y, a.z, -dot(a, load(inside.p(), 0)) + 0.01 * norm};
+  Vec3 inward = (1 / norm) * a;
+  Vec3 along = (1 / std::sqrt(2.0)) * Vec3{1, -1, 0};
+  ContactProbe p{inside, inward, 0.01, 0.02, -0.4 * inward + 0.3 * along};
+  Script script;
+  script.world(world, inside);
+  scriptContact(script, p);
+  // The same cube with the plane's coefficients negated: on the negative side (not graded).
+  World negated = world;
+  negated.plane = {-a.x, -a.y, -a.z, -world.plane.d};
+  script.world(negated, inside);
+  script.accelerations();
+  ProbeRun run = runProbe(probe, script);
+  if (run.answers.size() < 4) return crashed("plane", run, "with a corner across the plane");
+  std::vector<bool> across(kNumPoints, false);
+  across[0] = true;
+  std::string why = judgeContact(run, 0, p, across, world, "plane");
+  CheckResult result = why.empty() ? passed("plane",
+                                            "kCollision, rest length 0, the positive side, "
+                                            "damping into it")
+                                   : failed("plane", why);
+  if (why.find("which is not across it") != std::string::npos) {
+    result.diagnosis =
+        "plane: pushes points on its positive side, where the cube is: the allowed "
+        "side is the wrong one";
+  }
+  if (run.complete() && length(forceChange(run.answers[4], run.answers[0], 1)) > kNoForce) {
+    result.notes.push_back(
+        "with the plane's coefficients negated (the cube on its negative side) it pushes the whole "
+        "cube: it keeps the course's convention (every course world starts on the positive side); "
+        "this project keeps the side that holds the cube");
+  }
+  return result;
+}
+
+}  // namespace jello::grader

@@ -1,0 +1,144 @@
+// checkfield.cpp: the force field, isolated as the difference between the same positions in
+// the field and in a zero field of the same resolution; compared with this project's
+// interpolation (forces/field.h).
+#include <cmath>
+#include <random>
+
+#include "grader/checkkit.h"
+#include "physics.h"
+
+namespace jello::grader {
+namespace {
+
+constexpr int kFieldResolution = 7;
+
+// A field whose nodes all differ, so that a wrong node order or cell shows.
+ForceField unevenField(int resolution) {
+  ForceField field;
+  field.resolution = resolution;
+  std::mt19937_64 random(20261123);
+  std::uniform_real_distribution<double> value(-0.5, 0.5);
+  field.forces.resize(3 * static_cast<std::size_t>(resolution * resolution * resolution));
+  for (double& f : field.forces) f = value(random);
+  return field;
+}
+
+// The field with its node order turned around (k outer, i inner): what reading it that way gives.
+ForceField transposed(const ForceField& field) {
+  ForceField turned = field;
+  int R = field.resolution;
+  for (int i = 0; i < R; ++i)
+    for (int j = 0; j < R; ++j)
+      for (int k = 0; k < R; ++k)
+        turned.setNode((i * R + j) * R + k, field.node((k * R + j) * R + i));
+  return turned;
+}
+
+// Points spread through the box, or (onWalls) each with a coordinate on a wall.
+State scattered(bool onWalls) {
+  std::mt19937_64 random(onWalls ? 7 : 11);
+  std::uniform_real_distribution<double> inside(-1.97, 1.97);
+  State state;
+  for (int q = 0; q < kNumPoints; ++q) {
+    double c[3] = {inside(random), inside(random), inside(random)};
+    if (onWalls) {
+      c[q % 3] = q % 2 ? 2.0 : -2.0;
+      if (q % 5 == 0) c[(q + 1) % 3] = 2.0;
+    }
+    store(state.p(), q, {c[0], c[1], c[2]});
+  }
+  return state;
+}
+
+// This project's field forces (N) at the positions.
+std::vector<double> fieldForces(const ForceField& field, const State& state) {
+  World world;
+  world.field = field;
+  Model model = makeModel(world, state);
+  std::vector<double> force(kNumCoords);
+  computeForces(model, state.p(), state.v(), force.data());
+  return force;
+}
+
+// The largest difference (N) between the submission's field forces and `expected`, and where.
+double worstDifference(const std::vector<double>& with, const std::vector<double>& without,
+                       const std::vector<double>& expected, int* where) {
+  double worst = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    double miss = length(forceChange(with, without, q) - load(expected.data(), q));
+    if (!(miss <= worst)) {
+      worst = miss;
+      *where = q;
+    }
+  }
+  return worst;
+}
+
+// The field of `field` against a zero field at `state`: "" when right, else why.
+std::string probeField(const std::string& probe, const ForceField& field, const State& state,
+                       const std::string& where, bool tryTransposed) {
+  World world = probeWorld(), zero = probeWorld();
+  world.field = field;
+  zero.field.resolution = field.resolution;
+  zero.field.forces.assign(field.forces.size(), 0.0);
+  Script script;
+  script.world(world, state);
+  script.accelerations();
+  script.world(zero, state);
+  script.accelerations();
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return run.failure + " " + where;
+  std::vector<double> expected = fieldForces(field, state);
+  int q = 0;
+  double worst = worstDifference(run.answers[0], run.answers[1], expected, &q);
+  double scale = largest(field.forces);
+  if (worst <= 1e-9 * scale) return "";
+  if (tryTransposed) {
+    int ignored = 0;
+    if (worstDifference(run.answers[0], run.answers[1], fieldForces(transposed(field), state),
+                        &ignored) <= 1e-9 * scale) {
+      return "the field's nodes are read in the wrong order: node (i,j,k) is forceField[i*R*R + "
+             "j*R + k], i outer and k inner";
+    }
+  }
+  Vec3 e = load(expected.data(), q);
+  return textf(
+      "%s: the field force at %s is off by %.3g N (expected (%.6g, %.6g, %.6g) N, "
+      "trilinear in its cell)",
+      where.c_str(), pointName(q).c_str(), worst, e.x, e.y, e.z);
+}
+
+}  // namespace
+
+CheckResult checkField(const std::string& probe) {
+  ForceField field = unevenField(kFieldResolution);
+  std::string why = probeField(probe, field, scattered(false), "inside the box", true);
+  if (why.empty())
+    why = probeField(probe, field, scattered(true),
+                     "on the walls (a wall is inside; "
+                     "its cells are the last ones)",
+                     false);
+  ForceField uniform;
+  uniform.resolution = 1;
+  uniform.forces = {0.3, -0.2, 0.1};
+  if (why.empty())
+    why = probeField(probe, uniform, scattered(false), "with R = 1 (one uniform force)", false);
+  CheckResult result = why.empty() ? passed("field", "trilinear, node order, the wall cells, R = 1")
+                                   : failed("field", why);
+  // R = 0, a world without a field (createWorld's default): not a course world, so a note.
+  ForceField none;
+  Script script;
+  World world = probeWorld();
+  world.field = none;
+  script.world(world, scattered(false));
+  script.accelerations();
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete() || !allFinite(run.answers[0])) {
+    result.notes.push_back("a world without a field (R = 0) " +
+                           (run.complete() ? std::string("gives NaN") : run.failure) +
+                           ": worlds made without a field cannot run");
+  }
+  return result;
+}
+
+}  // namespace jello::grader

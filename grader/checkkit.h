@@ -1,0 +1,59 @@
+// checkkit.h: what the checks share: the worlds and states they probe with, and the
+// comparisons. Internal to the grader's checks.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "forces/term.h"
+#include "grader/checks.h"
+#include "grader/probe.h"
+#include "world.h"
+
+namespace jello::grader {
+
+// The world the term checks probe with: constants unlike each other and unlike the course's, so
+// that one used in another's place shows; no plane; a field of R = 30 zero nodes (the course's
+// resolution: a submission that assumes it still reads the field right).
+World probeWorld();
+constexpr double kProbeMass = 1.0 / kNumPoints;  // kg: exact in binary
+
+// The cube at rest, p[i][j][k] = (i,j,k)/7, turned by `angle` radians about (1,2,3) around its
+// centre, then moved by `offset`; velocities zero.
+State restLattice(Vec3 offset, double angle = 0);
+// The lattice's usual place for the term checks: centred on the origin.
+constexpr Vec3 kCentred = {-0.5, -0.5, -0.5};
+
+// "p[i][j][k]".
+std::string pointName(int q);
+// "(1,-1,0)".
+std::string offsetName(int di, int dj, int dk);
+
+// The forces (N) between two answers of accelerations: mass * (after - before) for point q.
+Vec3 forceChange(const std::vector<double>& after, const std::vector<double>& before, int q);
+
+// The largest |value| of per-point arrays, and whether every value is finite.
+double largest(const std::vector<double>& values);
+bool allFinite(const std::vector<double>& values);
+
+CheckResult passed(const std::string& check, std::string line = {});
+CheckResult near(const std::string& check, std::string line);
+CheckResult failed(const std::string& check, std::string line);
+CheckResult info(const std::string& check, std::string line);
+// A probe run that did not answer everything: Fail, saying what it was doing.
+CheckResult crashed(const std::string& check, const ProbeRun& run, const std::string& when);
+
+// The checks, one function each (checks.cpp dispatches by name).
+CheckResult checkRest(const std::string& probe);
+CheckResult checkSprings(const std::string& probe, const std::string& kind);
+CheckResult checkDampers(const std::string& probe);
+CheckResult checkWalls(const std::string& probe);
+CheckResult checkPlane(const std::string& probe);
+CheckResult checkField(const std::string& probe);
+CheckResult checkEuler(const std::string& probe);
+CheckResult checkRk4(const std::string& probe);
+CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup);
+CheckResult checkRobust(const std::string& probe);
+CheckResult checkSpeed(const std::string& probe, const GradingSetup& setup);
+
+}  // namespace jello::grader

@@ -1,0 +1,285 @@
+// checkmotion.cpp: the integrators (one step on the submission's own accelerations; RK4's
+// order) and the robustness and speed of whole runs.
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "grader/checkkit.h"
+#include "physics.h"
+#include "solver/simulation.h"
+
+namespace jello::grader {
+namespace {
+
+// A cube in motion, deformed, one face across the wall x = 2, in a field, over a plane: every
+// term at work.
+WorldFile busyWorld() {
+  WorldFile file{probeWorld(), restLattice({1.03, -0.4, -0.6}, 0.3)};
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-0.5, 0.5);
+  for (int n = 0; n < kNumCoords; ++n) {
+    file.state.p()[n] += jitter(random);
+    file.state.v()[n] = speed(random);
+  }
+  file.world.field.resolution = 3;
+  file.world.field.forces = std::vector<double>(81, 0.0);
+  for (std::size_t n = 0; n < file.world.field.forces.size(); ++n)
+    file.world.field.forces[n] = 0.01 * double(n % 7) - 0.03;
+  file.world.hasPlane = true;
+  file.world.plane = {0.2, 0.3, 1, 1.7};
+  return file;
+}
+
+// The largest difference between states a and b, positions over pScale, velocities over vScale.
+double relativeDifference(const State& a, const State& b, double pScale, double vScale) {
+  double worst = 0;
+  for (int n = 0; n < kNumCoords; ++n) {
+    worst = std::fmax(worst, std::fabs(a.p()[n] - b.p()[n]) / pScale);
+    worst = std::fmax(worst, std::fabs(a.v()[n] - b.v()[n]) / vScale);
+  }
+  return std::isnan(worst) ? INFINITY : worst;
+}
+
+// start + h * (velocities of k, accelerations of k): the state of an explicit stage.
+State stage(const State& start, double h, const State& k) {
+  State s = start;
+  for (std::size_t n = 0; n < s.y.size(); ++n) s.y[n] += h * k.y[n];
+  return s;
+}
+
+// The derivative (v, a) at `state` from an answer of accelerations.
+State derivativeOf(const State& state, const std::vector<double>& a) {
+  State k;
+  std::copy(state.v(), state.v() + kNumCoords, k.p());
+  std::copy(a.begin(), a.end(), k.v());
+  return k;
+}
+
+constexpr double kOneStepExact = 1e-9;  // relative to dt * (largest velocity or acceleration)
+
+// One RK4 of the variants below: stage j (2, 3, 4) evaluated at start + c[j] * dt * k[m[j]],
+// m = 0 meaning the start itself.
+struct Rk4Variant {
+  int m[5] = {0, 0, 1, 2, 3};
+  double c[5] = {0, 0, 0.5, 0.5, 1};
+  std::string name;  // "" for classic RK4
+};
+
+std::vector<Rk4Variant> rk4Variants() {
+  static const char* const stageNames[5] = {"", "", "second stage (k2)", "third stage (k3)",
+                                            "fourth stage (k4)"};
+  std::vector<Rk4Variant> variants(1);
+  for (int j = 2; j <= 4; ++j) {
+    for (int m = 0; m < j; ++m) {
+      for (double c : {0.5, 1.0}) {
+        Rk4Variant v;
+        if ((m == 0 && c == 1.0) || (m == v.m[j] && c == v.c[j])) continue;
+        v.m[j] = m;
+        v.c[j] = c;
+        v.name = "RK4's " + std::string(stageNames[j]) + " is evaluated at " +
+                 (m == 0 ? std::string("the start of the step")
+                         : textf("state + %s*k%d", c == 1 ? "dt" : "dt/2", m)) +
+                 textf("; classic RK4 takes state + %s*k%d", j == 4 ? "dt" : "dt/2", j - 1);
+        variants.push_back(v);
+      }
+    }
+  }
+  return variants;
+}
+
+// The accelerations at each of `states`, in one probe run; empty with `failure` set when not.
+std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const World& world,
+                                                 const std::vector<State>& states,
+                                                 std::string* failure) {
+  Script script;
+  script.world(world, states.front());
+  for (const State& s : states) {
+    script.state(s);
+    script.accelerations();
+  }
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) *failure = run.failure;
+  return run.complete() ? run.answers : std::vector<std::vector<double>>{};
+}
+
+// Observed order of the submission's RK4 on a smooth scene (no contact, no field): from the
+// differences between runs to one time at dt, dt/2, dt/4, dt/8.
+std::string rk4Order(const std::string& probe, double* order) {
+  World world = probeWorld();
+  world.dElastic = 0;  // undamped: a damping mistake is the dampers check's, not this one's
+  State start = restLattice(kCentred);
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 p = load(start.p(), q);
+    store(start.p(), q, p + 0.03 * Vec3{std::sin(3 * p.y), std::sin(2 * p.z), std::sin(4 * p.x)});
+    store(start.v(), q, 0.5 * Vec3{-p.y, p.x, 0.2});
+  }
+  Script script;
+  std::vector<State> ends;
+  for (int halvings = 0; halvings < 4; ++halvings) {
+    world.dt = 4e-4 / (1 << halvings);
+    script.world(world, start);
+    script.steps(Integrator::RK4, 25L << halvings);
+    script.read();
+  }
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return run.failure;
+  auto difference = [&](int a, int b) {
+    double sum = 0;
+    for (int n = 0; n < kNumCoords; ++n)
+      sum += std::pow(run.state(2 * a + 1).p()[n] - run.state(2 * b + 1).p()[n], 2);
+    return std::sqrt(sum);
+  };
+  *order = std::log2(difference(1, 2) / difference(2, 3));
+  return "";
+}
+
+}  // namespace
+
+CheckResult checkEuler(const std::string& probe) {
+  WorldFile busy = busyWorld();
+  Script script;
+  script.world(busy.world, busy.state);
+  script.accelerations();
+  script.steps(Integrator::Euler, 1);
+  script.read();
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return crashed("euler", run, "on one step of a cube in motion");
+  const State& s = busy.state;
+  State after = run.state(2), course = s, symplectic = s;
+  double dt = busy.world.dt;
+  for (int n = 0; n < kNumCoords; ++n) {
+    course.v()[n] = s.v()[n] + dt * run.answers[0][n];
+    course.p()[n] = s.p()[n] + dt * s.v()[n];
+    symplectic.v()[n] = course.v()[n];
+    symplectic.p()[n] = s.p()[n] + dt * course.v()[n];
+  }
+  double pScale = dt * largest(s.y), vScale = dt * largest(run.answers[0]);
+  double off = relativeDifference(after, course, pScale, vScale);
+  if (off <= kOneStepExact)
+    return passed("euler", "p += dt v; v += dt a, on its own accelerations");
+  if (relativeDifference(after, symplectic, pScale, vScale) <= kOneStepExact) {
+    return failed("euler",
+                  "Euler moves p with the new velocity (semi-implicit Euler); the course's "
+                  "Euler uses the velocity from before the step");
+  }
+  return failed("euler", textf("one Euler step differs from p += dt v, v += dt a(p, v) on its own "
+                               "accelerations by %.3g of a step",
+                               off));
+}
+
+CheckResult checkRk4(const std::string& probe) {
+  WorldFile busy = busyWorld();
+  const World& world = busy.world;
+  double dt = world.dt;
+  Script script;
+  script.world(world, busy.state);
+  script.accelerations();
+  script.steps(Integrator::RK4, 1);
+  script.read();
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return crashed("rk4", run, "on one step of a cube in motion");
+  State result = run.state(2);
+  std::vector<Rk4Variant> variants = rk4Variants();
+  // k[v][j]: stage j of variant v. Stages are asked for a round at a time, each state once.
+  std::vector<std::vector<State>> k(variants.size(), std::vector<State>(5));
+  for (auto& stages : k) stages[1] = derivativeOf(busy.state, run.answers[0]);
+  for (int j = 2; j <= 4; ++j) {
+    std::vector<State> states;
+    std::map<std::vector<double>, std::size_t> asked;
+    std::vector<std::size_t> which(variants.size());
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      const Rk4Variant& var = variants[v];
+      State s = var.m[j] == 0 ? busy.state : stage(busy.state, var.c[j] * dt, k[v][var.m[j]]);
+      auto found = asked.emplace(s.y, states.size());
+      if (found.second) states.push_back(s);
+      which[v] = found.first->second;
+    }
+    std::string failure;
+    auto answers = accelerationsAt(probe, world, states, &failure);
+    if (!failure.empty()) return failed("rk4", failure + " at a stage of RK4");
+    for (std::size_t v = 0; v < variants.size(); ++v)
+      k[v][j] = derivativeOf(states[which[v]], answers[which[v]]);
+  }
+  double pScale = dt * largest(busy.state.y), vScale = dt * largest(run.answers[0]);
+  std::string diagnosis;
+  for (std::size_t v = 0; v < variants.size() && diagnosis.empty(); ++v) {
+    State y = busy.state;
+    for (std::size_t n = 0; n < y.y.size(); ++n) {
+      y.y[n] += dt / 6 * (k[v][1].y[n] + 2 * k[v][2].y[n] + 2 * k[v][3].y[n] + k[v][4].y[n]);
+    }
+    if (relativeDifference(result, y, pScale, vScale) > kOneStepExact) continue;
+    if (v > 0) diagnosis = variants[v].name;
+    if (v == 0) diagnosis = "classic";
+  }
+  if (diagnosis.empty())
+    diagnosis =
+        "one RK4 step is not classic RK4 on its own accelerations, nor RK4 with one stage at a "
+        "usual wrong state";
+  double order = 0;
+  std::string orderFailure = rk4Order(probe, &order);
+  if (!orderFailure.empty()) return failed("rk4", orderFailure + " on a smooth scene");
+  std::string orderLine = textf("observed order %.2f on a smooth scene", order);
+  if (diagnosis != "classic") return failed("rk4", diagnosis + " (" + orderLine + ")");
+  if (std::fabs(order - 4) > 0.5) return failed("rk4", orderLine + ", 4 expected");
+  return passed("rk4", "classic RK4 on its own accelerations; " + orderLine);
+}
+
+CheckResult checkRobust(const std::string& probe) {
+  World world = probeWorld();
+  State thrown = restLattice(kCentred), point = thrown, flat = thrown;
+  for (int q = 0; q < kNumPoints; ++q) {
+    store(thrown.v(), q, {-30, -30, -30});
+    store(point.p(), q, {0.1, 0.2, 0.3});
+    Vec3 p = load(flat.p(), q);
+    store(flat.p(), q, {p.x, p.y, 0.1});
+  }
+  // The throw: its accelerations along this project's run into the corner, so that a mistake
+  // elsewhere in its physics (which may make its own run explode) does not count here.
+  Model model = makeModel(world, thrown);
+  Simulation reference(model, thrown, Integrator::RK4, world.dt);
+  std::vector<State> throw_;
+  for (int n = 0; n < 10; ++n) {
+    reference.advance(40);
+    throw_.push_back(reference.state());
+  }
+  std::string failure;
+  auto answers = accelerationsAt(probe, world, throw_, &failure);
+  if (!failure.empty())
+    return failed("robust", failure + " on a cube thrown hard into the corner (-2,-2,-2)");
+  for (const auto& a : answers) {
+    if (!allFinite(a))
+      return failed(
+          "robust",
+          "NaN or infinity in the accelerations of a cube thrown hard into the corner (-2,-2,-2)");
+  }
+  for (const auto& [what, state] :
+       {std::pair<const char*, const State&>{"a collapsed cube (all 512 points at one place)",
+                                             point},
+        {"a cube collapsed flat (its points in pairs at one place)", flat}}) {
+    Script script;
+    script.world(world, state);
+    script.accelerations();
+    script.steps(Integrator::RK4, 10);
+    script.read();
+    ProbeRun run = runProbe(probe, script);
+    if (!run.complete()) return crashed("robust", run, std::string("on ") + what);
+    if (!allFinite(run.answers[0]) || !allFinite(run.answers[2])) {
+      return failed("robust", std::string("NaN or infinity on ") + what +
+                                  ": a spring of zero length must exert no force");
+    }
+  }
+  return passed("robust", "finite through a hard corner throw and two collapses");
+}
+
+CheckResult checkSpeed(const std::string& probe, const GradingSetup& setup) {
+  WorldFile rotate = readWorldFile(setup.worldDir + "/rotate.w");
+  Script script;
+  script.world(rotate.world, rotate.state);
+  script.timing(500);
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return info("speed", "not measured: " + run.failure);
+  return info("speed", textf("%.0f us per RK4 step on rotate.w (500 steps, in the sandbox)",
+                             run.answers[0][0]));
+}
+
+}  // namespace jello::grader

@@ -1,0 +1,132 @@
+// checks.cpp: the check table, dispatch and what the checks share (checkkit.h).
+#include "grader/checks.h"
+
+#include <cmath>
+
+#include "grader/checkkit.h"
+
+namespace jello::grader {
+
+const char* gradeName(Grade grade) {
+  switch (grade) {
+    case Grade::Pass:
+      return "pass";
+    case Grade::Near:
+      return "near";
+    case Grade::Fail:
+      return "FAIL";
+    case Grade::Info:
+      return "info";
+  }
+  return "?";
+}
+
+const std::vector<CheckInfo>& checkTable() {
+  static const std::vector<CheckInfo> table = {
+      {"builds", "physics.cpp compiles and links with the course API"},
+      {"rest", "zero acceleration at the rest lattice, also moved and turned rigidly"},
+      {"structural", "structural springs: present, rest length 1/7, stiffness kElastic"},
+      {"shear", "shear springs (face and body diagonals): present, rest length, stiffness"},
+      {"bend", "bend springs: present, rest length 2/7, stiffness"},
+      {"dampers", "dampers along each spring, dElastic, the right sign"},
+      {"walls", "each of the six walls: rest length 0, kCollision, only beyond it, damping"},
+      {"plane", "the inclined plane: the positive side allowed, rest length 0, damping"},
+      {"field", "the force field: trilinear, node order, cells at the walls, R = 1"},
+      {"euler", "one Euler step is the course's Euler on its own accelerations"},
+      {"rk4", "one RK4 step is classic RK4 on its own accelerations; order 4"},
+      {"agreement", "2000 steps of the course worlds and of unseen worlds against this project"},
+      {"robust", "no NaN and no crash: thrown into a corner, collapsed"},
+      {"speed", "microseconds per RK4 step (reported, not graded)"},
+  };
+  return table;
+}
+
+bool isCheck(const std::string& name) {
+  for (const auto& check : checkTable()) {
+    if (name == check.name) return true;
+  }
+  return false;
+}
+
+CheckResult runCheck(const std::string& name, const std::string& probe, const GradingSetup& setup) {
+  if (name == "rest") return checkRest(probe);
+  if (name == "structural" || name == "shear" || name == "bend") return checkSprings(probe, name);
+  if (name == "dampers") return checkDampers(probe);
+  if (name == "walls") return checkWalls(probe);
+  if (name == "plane") return checkPlane(probe);
+  if (name == "field") return checkField(probe);
+  if (name == "euler") return checkEuler(probe);
+  if (name == "rk4") return checkRk4(probe);
+  if (name == "agreement") return checkAgreement(probe, setup);
+  if (name == "robust") return checkRobust(probe);
+  if (name == "speed") return checkSpeed(probe, setup);
+  return failed(name, "no such check");
+}
+
+World probeWorld() {
+  World world;
+  world.integrator = Integrator::RK4;
+  world.dt = 0.0005;
+  world.kElastic = 300;
+  world.dElastic = 0.7;
+  world.kCollision = 1100;
+  world.dCollision = 1.3;
+  world.mass = kProbeMass;
+  world.field.resolution = 30;
+  world.field.forces.assign(3 * 30 * 30 * 30, 0.0);
+  return world;
+}
+
+State restLattice(Vec3 offset, double angle) {
+  // Rotation about the unit axis n by angle (Rodrigues).
+  Vec3 n = (1 / std::sqrt(14.0)) * Vec3{1, 2, 3};
+  double c = std::cos(angle), s = std::sin(angle);
+  Vec3 centre = {0.5, 0.5, 0.5};
+  State state;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 r = kRestSpacing * Vec3{double(q / 64), double(q / 8 % 8), double(q % 8)} - centre;
+    Vec3 turned = c * r + s * cross(n, r) + (1 - c) * dot(n, r) * n;
+    store(state.p(), q, turned + centre + offset);
+  }
+  return state;
+}
+
+std::string pointName(int q) { return latticeLabel(q); }
+
+std::string offsetName(int di, int dj, int dk) { return textf("(%d,%d,%d)", di, dj, dk); }
+
+Vec3 forceChange(const std::vector<double>& after, const std::vector<double>& before, int q) {
+  return kProbeMass * (load(after.data(), q) - load(before.data(), q));
+}
+
+double largest(const std::vector<double>& values) {
+  double most = 0;
+  for (double value : values) most = std::fmax(most, std::fabs(value));
+  return most;
+}
+
+bool allFinite(const std::vector<double>& values) {
+  for (double value : values) {
+    if (!std::isfinite(value)) return false;
+  }
+  return true;
+}
+
+CheckResult passed(const std::string& check, std::string line) {
+  return {check, Grade::Pass, std::move(line), {}};
+}
+CheckResult near(const std::string& check, std::string line) {
+  return {check, Grade::Near, std::move(line), {}};
+}
+CheckResult failed(const std::string& check, std::string line) {
+  return {check, Grade::Fail, std::move(line), {}};
+}
+CheckResult info(const std::string& check, std::string line) {
+  return {check, Grade::Info, std::move(line), {}};
+}
+
+CheckResult crashed(const std::string& check, const ProbeRun& run, const std::string& when) {
+  return failed(check, run.failure + " " + when);
+}
+
+}  // namespace jello::grader

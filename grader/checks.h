@@ -1,0 +1,43 @@
+// checks.h: the grader's checks of a built submission, each isolating one part of the physics
+// (docs/grading.md says what each means). A check runs the submission's probe in the sandbox,
+// compares with the model of docs/physics.md (this project's code), and says in words what is
+// wrong.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace jello::grader {
+
+// Pass: right. Near: right but for rounding of a constant (a rest length written with six
+// digits), a drift a user can see only after thousands of steps. Fail: wrong, or it crashed.
+// Info: a figure, not graded.
+enum class Grade { Pass, Near, Fail, Info };
+const char* gradeName(Grade grade);  // "pass", "near", "FAIL", "info"
+
+struct CheckResult {
+  std::string check;
+  Grade grade = Grade::Fail;
+  std::string diagnosis;           // one line: what is wrong, or the figure (Info)
+  std::vector<std::string> notes;  // what is not graded but worth knowing
+};
+
+struct CheckInfo {
+  const char* name;  // in test names: SUBMISSION/NAME
+  const char* what;  // one line for reports
+};
+// Every check, in the order they run; "builds" first.
+const std::vector<CheckInfo>& checkTable();
+bool isCheck(const std::string& name);
+
+struct GradingSetup {
+  std::string worldDir;    // the course worlds (rotate.w, ...)
+  std::uint64_t seed = 1;  // the unseen worlds of "agreement"
+};
+
+// Runs check `name` (not "builds") on the probe at `probePath`.
+CheckResult runCheck(const std::string& name, const std::string& probePath,
+                     const GradingSetup& setup);
+
+}  // namespace jello::grader

@@ -1,0 +1,235 @@
+// grade: builds students' physics.cpp against the course API and grades them, each in a sandbox
+// (README, "Grading"). Only this file prints errors and picks the exit status: 0 when every check
+// of every submission ran, whatever the grades; 2 on bad usage or when no sandbox can be made.
+// With --one (the tests grade --ctest writes) the status is the check's: 0 pass, near or info;
+// 1 fail.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "core/output.h"
+#include "forces/term.h"
+#include "grader/checks.h"
+#include "grader/probe.h"
+#include "grader/report.h"
+#include "grader/sandbox.h"
+#include "grader/submission.h"
+
+namespace fs = std::filesystem;
+using namespace jello;
+using namespace jello::grader;
+
+namespace {
+
+std::string programPath() {
+  std::error_code error;
+  fs::path self = fs::read_symlink("/proc/self/exe", error);
+  return error ? std::string("grade") : self.string();
+}
+
+// The course worlds: beside the program (./grade at the project's root), or in the sources.
+std::string worldDir() {
+  fs::path beside = fs::path(programPath()).parent_path() / "world";
+  if (fs::exists(beside / "rotate.w")) return beside.string();
+  return std::string(JELLO_SOURCE_DIR) + "/world";
+}
+
+CheckResult buildCheck(const Submission& submission, const std::string& probePath, Graded& graded) {
+  BuildResult build = buildSubmission(submission, probePath);
+  graded.headers = build.headers;
+  graded.buildLog = build.log;
+  CheckResult result{"builds", build.built ? Grade::Pass : Grade::Fail,
+                     build.built ? "built with " + build.headers : build.diagnosis, build.notes};
+  return result;
+}
+
+// The checks graded for one submission, in order; the first is "builds".
+Graded gradeOne(const Submission& submission, const std::vector<std::string>& checks,
+                const GradingSetup& setup, const std::string& workDir) {
+  auto start = std::chrono::steady_clock::now();
+  resetProbeBudget();
+  Graded graded{submission, {}, {}, {}, 0};
+  std::string probePath = workDir + "/" + submission.name + ".probe";
+  graded.results.push_back(buildCheck(submission, probePath, graded));
+  for (std::size_t n = 1; n < checks.size(); ++n) {
+    const std::string& check = checks[n];
+    if (graded.results.front().grade == Grade::Fail) {
+      graded.results.push_back({check, Grade::Fail, "not built", {}});
+    } else if (probeHung()) {
+      graded.results.push_back(
+          {check, Grade::Fail, "not run: the submission did not return in an earlier check", {}});
+    } else {
+      graded.results.push_back(runCheck(check, probePath, setup));
+    }
+  }
+  fs::remove(probePath);
+  graded.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return graded;
+}
+
+int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::string>& checks,
+             const GradingSetup& setup, const std::string& dir, bool overwrite, int jobs) {
+  Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  FolderClaim claim = claimOutputs(dir, {"summary.md", "summary.csv", "junit.xml"}, existing);
+  for (const auto& file : reportFiles(submissions)) {
+    fs::create_directories(fs::path(dir + "/" + file).parent_path());
+    std::string why = whyNotWritable(dir + "/" + file, existing);
+    if (!why.empty()) throw std::runtime_error(why);
+  }
+  Scratch work;  // the built programs, trusted: never shown to a sandbox but by copy
+  std::cerr << textf("grading %zu submissions, %d at a time; unseen worlds from seed %llu\n",
+                     submissions.size(), jobs, static_cast<unsigned long long>(setup.seed));
+  std::vector<Graded> graded(submissions.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t n; (n = next++) < submissions.size();) {
+      graded[n] = gradeOne(submissions[n], checks, setup, work.path());
+      std::cerr << summaryLine(graded[n]) + "\n";
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
+  for (auto& thread : threads) thread.join();
+  writeReport(dir, graded, setup.seed, overwrite);
+  std::cout << dir << "/summary.md, summary.csv, junit.xml; a report.md per submission\n";
+  return 0;
+}
+
+// One check of one submission, as a CTest test: the build goes to dir/NAME/probe.
+int gradeOneCheck(const std::string& check, std::size_t item, const std::string& dir) {
+  GradingSetup setup{worldDir(), 0};
+  std::vector<Submission> submissions = nameSubmissions(readCTestList(dir, &setup.seed));
+  if (item >= submissions.size())
+    throw std::runtime_error("--item " + std::to_string(item) + ": no such submission");
+  const Submission& s = submissions[item];
+  fs::create_directories(dir + "/" + s.name);
+  std::string probePath = dir + "/" + s.name + "/probe";
+  CheckResult result;
+  if (check == "builds") {
+    Graded graded;
+    fs::remove(probePath);
+    result = buildCheck(s, probePath, graded);
+    writeFileWhole(dir + "/" + s.name + "/build.log", graded.buildLog, Existing::Replace);
+  } else if (!fs::exists(probePath)) {
+    result = {check, Grade::Fail, "not built", {}};
+  } else {
+    result = runCheck(check, probePath, setup);
+  }
+  std::cout << s.name << "/" << check << ": " << gradeName(result.grade) << ": " << result.diagnosis
+            << "\n";
+  for (const auto& note : result.notes) std::cout << "  note: " << note << "\n";
+  return result.grade == Grade::Fail ? 1 : 0;
+}
+
+// The checks asked for with --checks: "builds" and the named ones, in the table's order.
+std::vector<std::string> chosenChecks(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream words(list);
+  for (std::string name; std::getline(words, name, ',');) {
+    if (!isCheck(name)) throw std::invalid_argument("--checks: no check named '" + name + "'");
+    names.push_back(name);
+  }
+  std::vector<std::string> checks;
+  for (const auto& check : checkTable()) {
+    bool asked = std::find(names.begin(), names.end(), check.name) != names.end();
+    if (names.empty() || asked || std::string(check.name) == "builds") checks.push_back(check.name);
+  }
+  return checks;
+}
+
+struct Options {
+  std::vector<std::string> paths;
+  std::string checkList;  // --checks, comma-separated
+  std::string dir = "grading", one;
+  bool overwrite = false, ctest = false;
+  std::uint64_t seed = std::random_device{}();
+  std::size_t item = 0;
+  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+};
+
+// Parses the command line into `o`; an exit status when it is done (help, or a usage error).
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  CLI::App app{
+      "grade: builds students' jello physics.cpp (the course API) and grades each check,\n"
+      "every submission in a sandbox. README, \"Grading\"; docs/grading.md."};
+  app.add_option("SUBMISSION", o.paths, "a folder, .zip, .tar.gz or .tgz holding physics.cpp");
+  app.add_option("-o,--output", o.dir, "the report's folder (default grading/)");
+  app.add_flag("--overwrite", o.overwrite, "replace an earlier report in that folder");
+  app.add_option("--seed", o.seed, "the seed of the unseen worlds (default: a new one, printed)");
+  app.add_option("--checks", o.checkList, "only these checks (and builds), e.g. --checks rest,rk4");
+  app.add_option("-j,--jobs", o.jobs, "submissions graded at once (default: the cores)")
+      ->check(CLI::Range(1, 256));
+  app.add_flag("--ctest", o.ctest, "write a CTest file into the report folder instead of grading");
+  app.add_option("--one", o.one, "(for the CTest file) run one check")->group("");
+  app.add_option("--item", o.item, "(for the CTest file) of this submission")->group("");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  return std::nullopt;
+}
+
+void requireSandbox() {
+  std::string problem = sandboxProblem();
+  if (!problem.empty()) throw std::runtime_error(problem);
+}
+
+int writeCTest(const Options& o, const std::vector<std::string>& checks) {
+  std::vector<std::string> absolute;
+  for (const auto& p : o.paths) absolute.push_back(fs::absolute(p).string());
+  fs::create_directories(o.dir);
+  writeCTestFiles(fs::absolute(o.dir).string(), programPath(), nameSubmissions(absolute), checks,
+                  o.seed, o.overwrite);
+  std::cout << "cd " << o.dir << " && ctest -j" << o.jobs << "   # "
+            << o.paths.size() * checks.size()
+            << " tests; --output-junit junit.xml for a learning platform\n";
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  Options o;
+  if (auto status = parseOptions(argc, argv, o)) return *status;
+  if (!o.one.empty()) {
+    if (!isCheck(o.one) || o.paths.size() != 1)
+      throw std::invalid_argument("--one CHECK --item N DIR");
+    requireSandbox();
+    return gradeOneCheck(o.one, o.item, o.paths[0]);
+  }
+  if (o.paths.empty())
+    throw std::invalid_argument("no submission given: grade [-o DIR] SUBMISSION...");
+  if (o.dir.empty()) throw std::invalid_argument("-o: an empty folder name");
+  for (const auto& path : o.paths) {
+    std::string why = whyNotSubmission(path);
+    if (why.empty() && path.find('\n') != std::string::npos)
+      why = path + ": a name with a line break";
+    if (!why.empty()) throw std::invalid_argument(why);
+  }
+  std::vector<std::string> checks = chosenChecks(o.checkList);
+  if (o.ctest) return writeCTest(o, checks);
+  requireSandbox();
+  return gradeAll(nameSubmissions(o.paths), checks, {worldDir(), o.seed}, o.dir, o.overwrite,
+                  o.jobs);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  setProgramName("grade");
+  installSignalCleanup();
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,157 @@
+// probe.cpp: scripts for the probe and their answers (probe.h).
+#include "grader/probe.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include "grader/submission.h"
+
+namespace jello::grader {
+namespace {
+
+void appendPoints(std::string& text, const double* values) {
+  char line[96];
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 x = load(values, q);
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x.x, x.y, x.z);
+    text += line;
+  }
+}
+
+// Reads `count` numbers from `text` at `at`; false when the text ends or holds a non-number.
+bool readNumbers(const std::string& text, std::size_t& at, std::size_t count,
+                 std::vector<double>& out) {
+  const char* start = text.c_str();
+  for (std::size_t n = 0; n < count; ++n) {
+    char* end = nullptr;
+    double value = std::strtod(start + at, &end);
+    if (end == start + at) return false;
+    at = static_cast<std::size_t>(end - start);
+    out.push_back(value);
+  }
+  return true;
+}
+
+bool readWord(const std::string& text, std::size_t& at, const char* word) {
+  std::size_t begin = text.find_first_not_of(" \n\t", at);
+  if (begin == std::string::npos || text.compare(begin, std::strlen(word), word) != 0) return false;
+  at = begin + std::strlen(word);
+  return true;
+}
+
+// Lattice order "x y z" lines into per-point arrays.
+std::vector<double> toArrays(const std::vector<double>& lines, std::size_t points) {
+  std::vector<double> arrays(3 * points, 0.0);
+  for (std::size_t q = 0; q < points; ++q) {
+    for (int axis = 0; axis < 3; ++axis) {
+      arrays[axis * points + q] = lines[3 * q + axis];
+    }
+  }
+  return arrays;
+}
+
+thread_local double probeBudget = kProbeSeconds;
+thread_local bool hung = false;
+
+}  // namespace
+
+void resetProbeBudget() {
+  probeBudget = kProbeSeconds;
+  hung = false;
+}
+
+bool probeHung() { return hung; }
+
+void Script::world(const World& world, const State& state) {
+  text_ += "W\n" + formatWorld(world, state);
+}
+
+void Script::state(const State& state) {
+  text_ += "S\n";
+  appendPoints(text_, state.p());
+  appendPoints(text_, state.v());
+}
+
+void Script::accelerations() {
+  text_ += "A\n";
+  answering_.push_back('A');
+  doing_.push_back("computeAcceleration");
+}
+
+void Script::steps(Integrator integrator, long n) {
+  bool euler = integrator == Integrator::Euler;
+  text_ += (euler ? "E " : "R ") + std::to_string(n) + "\n";
+  answering_.push_back('E');
+  doing_.push_back(euler ? "Euler" : "RK4");
+}
+
+void Script::read() {
+  text_ += "P\n";
+  answering_.push_back('P');
+  doing_.push_back("reading the state");
+}
+
+void Script::timing(long n) {
+  text_ += "T " + std::to_string(n) + "\n";
+  answering_.push_back('T');
+  doing_.push_back("RK4");
+}
+
+State ProbeRun::state(std::size_t answer) const {
+  State state;
+  const std::vector<double>& values = answers.at(answer);
+  std::copy(values.begin(), values.end(), state.y.begin());
+  return state;
+}
+
+ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits) {
+  ProbeRun run;
+  Scratch scratch;
+  std::filesystem::copy_file(probePath, scratch.path() + "/probe");
+  std::filesystem::permissions(scratch.path() + "/probe", std::filesystem::perms(0755));
+  SandboxJob job;
+  job.argv = {"/work/probe"};
+  job.hostDir = scratch.path();
+  job.workingDir = "/tmp";
+  job.input = script.text();
+  job.limits.wallSeconds = limits.scale * probeBudget;
+  job.limits.cpuSeconds = limits.scale * probeBudget;
+  job.limits.memoryBytes = 1LL << 30;
+  job.limits.processes = 8;
+  job.limits.fileBytes = 16LL << 20;
+  run.sandbox = runSandboxed(job);
+  if (run.sandbox.timedOut || run.sandbox.signal == SIGXCPU) {
+    probeBudget = kProbeSecondsAfterHang;
+    hung = true;
+  }
+  std::size_t at = 0;
+  const auto& kinds = script.answering();
+  for (std::size_t n = 0; n < kinds.size(); ++n) {
+    std::vector<double> numbers;
+    bool read = kinds[n] == 'E' ? readWord(run.sandbox.output, at, "ok")
+                : kinds[n] == 'T'
+                    ? readNumbers(run.sandbox.output, at, 1, numbers)
+                    : readNumbers(run.sandbox.output, at,
+                                  kinds[n] == 'A' ? kNumCoords : 2 * kNumCoords, numbers);
+    if (!read) {
+      std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
+      if (run.sandbox.signal == 9 && !run.sandbox.timedOut) how = "was killed (out of memory?)";
+      run.failure = script.doing()[n] + " " + how;
+      break;
+    }
+    if (kinds[n] == 'A') numbers = toArrays(numbers, kNumPoints);
+    if (kinds[n] == 'P') {
+      std::vector<double> p(numbers.begin(), numbers.begin() + kNumCoords);
+      std::vector<double> v(numbers.begin() + kNumCoords, numbers.end());
+      numbers = toArrays(p, kNumPoints);
+      std::vector<double> va = toArrays(v, kNumPoints);
+      numbers.insert(numbers.end(), va.begin(), va.end());
+    }
+    run.answers.push_back(std::move(numbers));
+  }
+  return run;
+}
+
+}  // namespace jello::grader

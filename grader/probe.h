@@ -1,0 +1,68 @@
+// probe.h: talking to a built submission (grader/course/probe.cpp) through the sandbox.
+//
+// A Script is the commands of one probe run; each that answers gives one Answer, in order.
+// The run's answers are checked for count and form here, so that the checks see numbers or
+// the reason there are none (a crash, a hang, garbage), never half an answer.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grader/sandbox.h"
+#include "world.h"
+
+namespace jello::grader {
+
+class Script {
+ public:
+  // W: the world (its parameters, field and state) as the course's input code reads it.
+  void world(const World& world, const State& state);
+  // S: the state.
+  void state(const State& state);
+  // A: answers the accelerations (m/s^2) at the state, per-point arrays (coordIndex).
+  void accelerations();
+  // E n or R n: n steps of Euler (integrator Euler) or RK4 (any other); answers nothing.
+  void steps(Integrator integrator, long n);
+  // P: answers the state.
+  void read();
+  // T n: n RK4 steps; answers the microseconds a step took.
+  void timing(long n);
+
+  const std::string& text() const { return text_; }
+  // What each answering command is, in order: 'A', 'P' or 'T'; 'E'/'R' answer "ok".
+  const std::vector<char>& answering() const { return answering_; }
+  const std::vector<std::string>& doing() const { return doing_; }
+
+ private:
+  std::string text_;
+  std::vector<char> answering_;
+  std::vector<std::string> doing_;  // per answering command: "computeAcceleration", ...
+};
+
+struct ProbeRun {
+  std::vector<std::vector<double>> answers;  // per answering command, complete ones only
+  SandboxResult sandbox;
+  // "" when every command answered; otherwise what went wrong and in which function, e.g.
+  // "RK4 did not finish in time" or "computeAcceleration was killed by signal 11 (...)".
+  std::string failure;
+  bool complete() const { return failure.empty(); }
+  // An answer as a state (P) or as per-point values (A: the velocities half is unused).
+  State state(std::size_t answer) const;
+};
+
+// A probe run's time: `scale` times the budget of this thread, which is kProbeSeconds until a
+// run on the thread does not finish in time, and kProbeSecondsAfterHang after that, so that a
+// submission that never returns costs seconds a check, not minutes. resetProbeBudget() when a
+// thread starts on the next submission.
+constexpr double kProbeSeconds = 10;
+constexpr double kProbeSecondsAfterHang = 2;
+void resetProbeBudget();
+// Whether a probe run on this thread did not finish in time since resetProbeBudget().
+bool probeHung();
+struct ProbeLimits {
+  double scale = 1;
+};
+
+ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits = {});
+
+}  // namespace jello::grader

@@ -1,0 +1,221 @@
+// report.cpp: the grader's files (report.h). Every file is written whole by core/output's writer.
+#include "grader/report.h"
+
+#include <sys/stat.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/output.h"
+#include "forces/term.h"
+
+namespace jello::grader {
+namespace {
+
+std::string xmlEscape(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '"')
+      out += "&quot;";
+    else if (c < 0x20 && c != '\t')
+      out += ' ';
+    else
+      out += static_cast<char>(c);
+  }
+  return out;
+}
+
+// A CSV field: quoted, quotes doubled; a leading = + - @ is kept from spreadsheets' formulas.
+std::string csvField(const std::string& text) {
+  std::string out = "\"";
+  if (!text.empty() && std::string("=+-@").find(text[0]) != std::string::npos) out += '\'';
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return out + "\"";
+}
+
+// A markdown table cell: no pipe or line break breaks the table.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);
+  return out;
+}
+
+// A CMake bracket argument that holds `text` whatever it contains.
+std::string cmakeQuote(const std::string& text) {
+  std::string equals;
+  while (text.find("]" + equals + "]") != std::string::npos) equals += '=';
+  return "[" + equals + "[" + text + "]" + equals + "]";
+}
+
+std::string submissionReport(const Graded& g) {
+  std::ostringstream md;
+  md << "# " << g.submission.name << "\n\nSubmission: `" << g.submission.path << "`";
+  if (!g.headers.empty()) md << ", built with " << g.headers;
+  md << textf(". Graded in %.1f s.\n\n| check | grade | what it found |\n|---|---|---|\n",
+              g.seconds);
+  for (const auto& r : g.results)
+    md << "| " << r.check << " | " << gradeName(r.grade) << " | " << cell(r.diagnosis) << " |\n";
+  for (const auto& r : g.results) {
+    for (const auto& note : r.notes) md << "\n- " << r.check << ": " << note;
+  }
+  md << "\n\nThe compiler's output is in build.log.\n";
+  return md.str();
+}
+
+std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t seed) {
+  std::ostringstream md;
+  md << "# Grading summary\n\nUnseen worlds from seed " << seed << ". pass: right; near: right but "
+     << "for a rounded constant; FAIL: wrong (see the submission's report.md); info: not "
+        "graded.\n\n"
+     << "| submission |";
+  const std::vector<CheckResult>& columns = graded.front().results;
+  for (const auto& c : columns) md << " " << c.check << " |";
+  md << "\n|---|";
+  for (std::size_t n = 0; n < columns.size(); ++n) md << "---|";
+  for (const auto& g : graded) {
+    md << "\n| " << g.submission.name << " |";
+    for (const auto& r : g.results)
+      md << " "
+         << (r.check == "speed" && r.grade == Grade::Info
+                 ? r.diagnosis.substr(0, r.diagnosis.find(' ')) + " us"
+                 : gradeName(r.grade))
+         << " |";
+  }
+  md << "\n\n## What failed\n";
+  for (const auto& g : graded) {
+    for (const auto& r : g.results) {
+      if (r.grade == Grade::Fail || r.grade == Grade::Near)
+        md << "\n- " << g.submission.name << "/" << r.check << " (" << gradeName(r.grade)
+           << "): " << r.diagnosis;
+    }
+  }
+  return md.str() + "\n";
+}
+
+std::string summaryCsv(const std::vector<Graded>& graded) {
+  std::ostringstream csv;
+  csv << "submission";
+  for (const auto& c : graded.front().results) csv << "," << c.check;
+  for (const auto& g : graded) {
+    csv << "\n" << csvField(g.submission.name);
+    for (const auto& r : g.results) {
+      csv << ","
+          << (r.check == "speed" && r.grade == Grade::Info
+                  ? r.diagnosis.substr(0, r.diagnosis.find(' '))
+                  : gradeName(r.grade));
+    }
+  }
+  return csv.str() + "\n";
+}
+
+std::string junit(const std::vector<Graded>& graded) {
+  int tests = 0, failures = 0;
+  std::ostringstream cases;
+  for (const auto& g : graded) {
+    for (const auto& r : g.results) {
+      ++tests;
+      cases << "    <testcase classname=\"" << xmlEscape(g.submission.name) << "\" name=\""
+            << r.check << "\">";
+      if (r.grade == Grade::Fail) {
+        ++failures;
+        cases << "<failure message=\"" << xmlEscape(r.diagnosis) << "\"/>";
+      } else if (!r.diagnosis.empty()) {
+        cases << "<system-out>" << gradeName(r.grade) << ": " << xmlEscape(r.diagnosis)
+              << "</system-out>";
+      }
+      cases << "</testcase>\n";
+    }
+  }
+  return textf(
+             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n  <testsuite name=\"jello "
+             "grading\" "
+             "tests=\"%d\" failures=\"%d\">\n",
+             tests, failures) +
+         cases.str() + "  </testsuite>\n</testsuites>\n";
+}
+
+void makeFolder(const std::string& dir) {
+  if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
+    throw std::runtime_error(dir + ": cannot make the folder");
+}
+
+}  // namespace
+
+std::vector<std::string> reportFiles(const std::vector<Submission>& submissions) {
+  std::vector<std::string> files = {"summary.md", "summary.csv", "junit.xml"};
+  for (const auto& s : submissions) {
+    files.push_back(s.name + "/report.md");
+    files.push_back(s.name + "/build.log");
+  }
+  return files;
+}
+
+void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
+                 bool overwrite) {
+  Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  for (const auto& g : graded) {
+    makeFolder(dir + "/" + g.submission.name);
+    writeFileWhole(dir + "/" + g.submission.name + "/report.md", submissionReport(g), existing);
+    writeFileWhole(dir + "/" + g.submission.name + "/build.log", g.buildLog, existing);
+  }
+  writeFileWhole(dir + "/summary.md", summaryMarkdown(graded, seed), existing);
+  writeFileWhole(dir + "/summary.csv", summaryCsv(graded), existing);
+  writeFileWhole(dir + "/junit.xml", junit(graded), existing);
+}
+
+std::string summaryLine(const Graded& g) {
+  int counts[4] = {0, 0, 0, 0};
+  std::string failing;
+  for (const auto& r : g.results) {
+    ++counts[static_cast<int>(r.grade)];
+    if (r.grade == Grade::Fail) failing += (failing.empty() ? "" : ", ") + r.check;
+  }
+  return textf("%s: %d pass, %d near, %d FAIL%s in %.1f s", g.submission.name.c_str(), counts[0],
+               counts[1], counts[2], failing.empty() ? "" : (" (" + failing + ")").c_str(),
+               g.seconds);
+}
+
+void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
+                     const std::vector<Submission>& submissions,
+                     const std::vector<std::string>& checks, std::uint64_t seed, bool overwrite) {
+  Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  std::ostringstream list, tests;
+  list << "seed " << seed << "\n";
+  tests
+      << "# Made by grade --ctest: a test SUBMISSION/CHECK for every check of every submission.\n";
+  for (std::size_t n = 0; n < submissions.size(); ++n) {
+    const Submission& s = submissions[n];
+    list << s.path << "\n";
+    for (const auto& check : checks) {
+      std::string name = s.name + "/" + check;
+      tests << "add_test(" << cmakeQuote(name) << " " << cmakeQuote(gradeProgram) << " --one "
+            << check << " --item " << n << " " << cmakeQuote(dir) << ")\n"
+            << "set_tests_properties(" << cmakeQuote(name) << " PROPERTIES TIMEOUT 300 "
+            << (check == "builds" ? "FIXTURES_SETUP " : "FIXTURES_REQUIRED ") << cmakeQuote(s.name)
+            << ")\n";
+    }
+  }
+  writeFileWhole(dir + "/grading.txt", list.str(), existing);
+  writeFileWhole(dir + "/CTestTestfile.cmake", tests.str(), existing);
+}
+
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed) {
+  std::ifstream in(dir + "/grading.txt");
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("seed ", 0) != 0) {
+    throw std::runtime_error(dir + "/grading.txt: not made by grade --ctest");
+  }
+  *seed = std::stoull(line.substr(5));
+  std::vector<std::string> paths;
+  while (std::getline(in, line)) paths.push_back(line);
+  return paths;
+}
+
+}  // namespace jello::grader

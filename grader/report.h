@@ -1,0 +1,39 @@
+// report.h: what the grader writes: per submission report.md and build.log; for the class
+// summary.md, summary.csv and junit.xml; for CTest a CTestTestfile.cmake.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grader/checks.h"
+#include "grader/submission.h"
+
+namespace jello::grader {
+
+struct Graded {
+  Submission submission;
+  std::string headers;  // which headers served (builds)
+  std::string buildLog;
+  std::vector<CheckResult> results;  // the checks graded, in checkTable() order; "builds" first
+  double seconds = 0;
+};
+
+// The files a report folder will hold, for the check before grading starts.
+std::vector<std::string> reportFiles(const std::vector<Submission>& submissions);
+// Writes them all under `dir` (made), replacing earlier ones only with `overwrite`. Throws
+// std::runtime_error with a one-line message.
+void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
+                 bool overwrite);
+// One line a submission for the terminal: "alice: 12 pass, 1 near, 1 FAIL (rk4) in 9.8 s".
+std::string summaryLine(const Graded& graded);
+
+// dir/CTestTestfile.cmake and dir/grading.txt: a test SUBMISSION/CHECK for every check, each
+// running `grade --one CHECK --item N dir`; "builds" is the fixture the others need.
+void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
+                     const std::vector<Submission>& submissions,
+                     const std::vector<std::string>& checks, std::uint64_t seed, bool overwrite);
+// Reads dir/grading.txt back: the seed and the submissions' paths.
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed);
+
+}  // namespace jello::grader

@@ -1,0 +1,271 @@
+// sandbox.cpp: bubblewrap with kernel limits. See sandbox.h for what the program sees.
+#include "grader/sandbox.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace jello::grader {
+namespace {
+
+constexpr std::size_t kErrorsKept = 64 << 10;
+const char* const kBubblewrap = "/usr/bin/bwrap";
+
+// Sandboxes started by root run under user ids of their own, from this base: RLIMIT_NPROC counts
+// processes per user and does not bind root at all. Unique per process (pid) and per sandbox
+// within it (a counter), below 2^31.
+constexpr unsigned kSandboxUidBase = 100000000u;
+std::atomic<unsigned> sandboxCounter{0};
+
+unsigned sandboxUid() {
+  unsigned slot = sandboxCounter.fetch_add(1) % 64;
+  return kSandboxUidBase + (static_cast<unsigned>(getpid()) % 4000000u) * 64u + slot;
+}
+
+// Processes this user runs now: a user other than root shares RLIMIT_NPROC with them.
+int processesOfUser(uid_t uid) {
+  int count = 0;
+  DIR* proc = opendir("/proc");
+  if (!proc) return 0;
+  while (dirent* entry = readdir(proc)) {
+    if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
+    struct stat info;
+    std::string path = std::string("/proc/") + entry->d_name;
+    if (stat(path.c_str(), &info) == 0 && info.st_uid == uid) ++count;
+  }
+  closedir(proc);
+  return count;
+}
+
+std::vector<std::string> bubblewrapArguments(const SandboxJob& job) {
+  // Namespaces of its own (no network), gone with the grader; a new session (no terminal).
+  std::vector<std::string> args = {kBubblewrap, "--unshare-all", "--die-with-parent",
+                                   "--new-session"};
+  // The system's programs and libraries, read-only; nothing else of the host's /etc.
+  args.insert(args.end(), {"--ro-bind", "/usr", "/usr", "--symlink", "usr/bin", "/bin", "--symlink",
+                           "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64", "--ro-bind-try",
+                           "/etc/ld.so.cache", "/etc/ld.so.cache"});
+  args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size",
+                           std::to_string(kSandboxTmpBytes), "--tmpfs", "/tmp"});
+  args.insert(args.end(), {"--ro-bind", job.hostDir, "/work"});
+  if (!job.outputDir.empty()) args.insert(args.end(), {"--bind", job.outputDir, "/out"});
+  for (const auto& [host, inside] : job.readOnlyFiles) {
+    args.insert(args.end(), {"--ro-bind", host, inside});
+  }
+  args.insert(args.end(),
+              {"--chdir", job.workingDir, "--clearenv", "--setenv", "PATH", "/usr/bin:/bin",
+               "--setenv", "HOME", "/tmp", "--setenv", "LC_ALL", "C", "--"});
+  args.insert(args.end(), job.argv.begin(), job.argv.end());
+  return args;
+}
+
+void setLimit(int resource, rlim_t value) {
+  struct rlimit limit = {value, value};
+  setrlimit(resource, &limit);
+}
+
+// In the child, between fork and exec: only async-signal-safe calls.
+[[noreturn]] void startChild(char* const* argv, const SandboxLimits& limits, int in, int out,
+                             int err, bool switchUser, unsigned uid, rlim_t processLimit) {
+  setsid();
+  setLimit(RLIMIT_CPU, static_cast<rlim_t>(limits.cpuSeconds + 0.5));
+  setLimit(RLIMIT_AS, static_cast<rlim_t>(limits.memoryBytes));
+  setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.fileBytes));
+  setLimit(RLIMIT_CORE, 0);
+  if (switchUser) {
+    if (setgroups(0, nullptr) != 0 || setgid(uid) != 0 || setuid(uid) != 0) _exit(126);
+  }
+  setLimit(RLIMIT_NPROC, processLimit);
+  dup2(in, 0);
+  dup2(out, 1);
+  dup2(err, 2);
+  closefrom(3);
+  execv(argv[0], argv);
+  _exit(127);
+}
+
+void setNonBlocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
+
+struct Pipes {
+  int in[2] = {-1, -1}, out[2] = {-1, -1}, err[2] = {-1, -1};
+  bool open() {
+    return pipe2(in, O_CLOEXEC) == 0 && pipe2(out, O_CLOEXEC) == 0 && pipe2(err, O_CLOEXEC) == 0;
+  }
+};
+
+void closeFd(int& fd) {
+  if (fd >= 0) close(fd);
+  fd = -1;
+}
+
+// Feeds the input and collects the output until both output pipes close, or a limit is hit.
+void exchange(pid_t child, const SandboxJob& job, int in, int out, int err, SandboxResult& result) {
+  using Clock = std::chrono::steady_clock;
+  auto deadline = Clock::now() + std::chrono::duration<double>(job.limits.wallSeconds);
+  std::size_t written = 0;
+  char buffer[1 << 16];
+  while (out >= 0 || err >= 0) {
+    pollfd fds[3] = {{out, POLLIN, 0}, {err, POLLIN, 0}, {in, POLLOUT, 0}};
+    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) {
+      result.timedOut = true;
+      break;
+    }
+    if (poll(fds, in >= 0 ? 3 : 2, static_cast<int>(left.count())) < 0 && errno != EINTR) break;
+    if (in >= 0 && (fds[2].revents & (POLLOUT | POLLERR | POLLHUP))) {
+      ssize_t n = write(in, job.input.data() + written, job.input.size() - written);
+      if (n > 0) written += static_cast<std::size_t>(n);
+      if (n < 0 && errno != EAGAIN) written = job.input.size();
+      if (written == job.input.size()) closeFd(in);
+    }
+    for (int which = 0; which < 2; ++which) {
+      int& fd = which == 0 ? out : err;
+      if (fd < 0 || !(fds[which].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      ssize_t n = read(fd, buffer, sizeof buffer);
+      if (n <= 0) {
+        if (n == 0 || errno != EAGAIN) closeFd(fd);
+        continue;
+      }
+      std::string& kept = which == 0 ? result.output : result.errors;
+      std::size_t cap = which == 0 ? static_cast<std::size_t>(job.limits.outputBytes) : kErrorsKept;
+      kept.append(buffer, std::min(static_cast<std::size_t>(n), cap - std::min(cap, kept.size())));
+      if (which == 0 && kept.size() >= cap) {
+        result.outputCut = true;
+        closeFd(fd);
+        closeFd(err);
+      }
+    }
+  }
+  if (result.timedOut || result.outputCut) kill(-child, SIGKILL);
+  closeFd(in);
+  closeFd(out);
+  closeFd(err);
+}
+
+}  // namespace
+
+Scratch::Scratch() {
+  const char* base = std::getenv("TMPDIR");
+  std::string pattern = std::string(base && *base ? base : "/tmp") + "/jello-grade-XXXXXX";
+  if (!mkdtemp(pattern.data())) {
+    throw std::runtime_error(pattern + ": cannot make a scratch folder: " + std::strerror(errno));
+  }
+  path_ = pattern;
+  // Others may pass through (a sandbox's user reads what it is given) but not list it.
+  chmod(path_.c_str(), 0711);
+}
+
+Scratch::~Scratch() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+std::string Scratch::makeFolder(const std::string& name) const {
+  std::string folder = path_ + "/" + name;
+  std::filesystem::remove_all(folder);
+  if (mkdir(folder.c_str(), 0700) != 0) {
+    throw std::runtime_error(folder + ": cannot make: " + std::strerror(errno));
+  }
+  return folder;
+}
+
+SandboxResult runSandboxed(const SandboxJob& job) {
+  SandboxResult result;
+  std::vector<std::string> args = bubblewrapArguments(job);
+  std::vector<char*> argv;
+  for (auto& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  bool switchUser = geteuid() == 0;
+  unsigned uid = switchUser ? sandboxUid() : static_cast<unsigned>(getuid());
+  // The sandbox's processes: bubblewrap, its pid 1, and the program's own.
+  rlim_t processLimit = static_cast<rlim_t>(job.limits.processes + 2) +
+                        (switchUser ? 0 : static_cast<rlim_t>(processesOfUser(getuid())));
+  if (switchUser && !job.outputDir.empty() && chown(job.outputDir.c_str(), uid, uid) != 0) {
+    result.error = job.outputDir + ": cannot hand it to the sandbox: " + std::strerror(errno);
+    return result;
+  }
+  Pipes pipes;
+  if (!pipes.open()) {
+    result.error = std::string("cannot make pipes: ") + std::strerror(errno);
+    return result;
+  }
+  auto start = std::chrono::steady_clock::now();
+  pid_t child = fork();
+  if (child == 0) {
+    startChild(argv.data(), job.limits, pipes.in[0], pipes.out[1], pipes.err[1], switchUser, uid,
+               processLimit);
+  }
+  closeFd(pipes.in[0]);
+  closeFd(pipes.out[1]);
+  closeFd(pipes.err[1]);
+  if (child < 0) {
+    result.error = std::string("cannot start a process: ") + std::strerror(errno);
+    closeFd(pipes.in[1]);
+    closeFd(pipes.out[0]);
+    closeFd(pipes.err[0]);
+    return result;
+  }
+  result.started = true;
+  setNonBlocking(pipes.in[1]);
+  signal(SIGPIPE, SIG_IGN);
+  exchange(child, job, pipes.in[1], pipes.out[0], pipes.err[0], result);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  // bubblewrap reports its program's death by signal as exit status 128 + the signal.
+  if (result.exitCode > 128 && result.exitCode < 128 + 65) {
+    result.signal = result.exitCode - 128;
+    result.exitCode = -1;
+  }
+  return result;
+}
+
+std::string SandboxResult::describe() const {
+  if (!started) return "could not start: " + error;
+  if (timedOut) return "did not finish in time";
+  if (outputCut) return "wrote too much output";
+  if (signal == SIGXCPU) return "ran out of CPU time";
+  if (signal == SIGXFSZ) return "wrote a file larger than allowed";
+  if (signal != 0)
+    return std::string("was killed by signal ") + std::to_string(signal) + " (" +
+           strsignal(signal) + ")";
+  return "exited with status " + std::to_string(exitCode);
+}
+
+std::string sandboxProblem() {
+  if (access(kBubblewrap, X_OK) != 0) {
+    return "bubblewrap (/usr/bin/bwrap) is not installed: the grader runs submissions only in "
+           "its sandbox (Debian package bubblewrap)";
+  }
+  // A sandbox as the grader makes them: a scratch folder to read and one to write.
+  Scratch scratch;
+  SandboxJob job;
+  job.argv = {"/bin/sh", "-c", "touch /out/written"};
+  job.hostDir = scratch.path();
+  job.outputDir = scratch.makeFolder("out");
+  job.limits.wallSeconds = 20;
+  SandboxResult result = runSandboxed(job);
+  if (result.exitedWith(0)) return "";
+  std::string why = result.errors.substr(0, result.errors.find('\n'));
+  return "bubblewrap cannot make a sandbox here (" + (why.empty() ? result.describe() : why) +
+         "); the grader runs submissions only in its sandbox";
+}
+
+}  // namespace jello::grader

@@ -1,0 +1,79 @@
+// sandbox.h: runs an untrusted program (a submission's build or its probe) inside bubblewrap.
+//
+// What the program sees: /usr read-only (and /bin, /lib, /lib64 as links into it), a fresh
+// /proc and /dev, /etc/ld.so.cache, a private /tmp of kSandboxTmpBytes, and one folder of the
+// host, `hostDir`, read-only at /work, and when given a second, `outputDir`, writable at /out (an
+// empty folder the grader made for this sandbox, handed to the sandbox's user). No network, no
+// other process, no other file of the host: other submissions and the grader's report are not
+// there to read or write.
+//
+// Limits, each enforced by the kernel: CPU seconds and address space per process, processes
+// (RLIMIT_NPROC, counted per user: when the grader runs as root each sandbox gets a user id of its
+// own, so one submission's fork bomb cannot starve another's), size of any file it writes, and
+// the wall clock (the whole sandbox is killed). Standard output and error are read up to a cap;
+// a program that writes more is killed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace jello::grader {
+
+constexpr long long kSandboxTmpBytes = 256LL << 20;
+
+struct SandboxLimits {
+  double cpuSeconds = 10;
+  double wallSeconds = 15;
+  long long memoryBytes = 2LL << 30;   // address space of each process
+  int processes = 16;                  // at once, in the sandbox
+  long long fileBytes = 64LL << 20;    // the largest file it may write
+  long long outputBytes = 64LL << 20;  // standard output kept; more and it is killed
+};
+
+struct SandboxJob {
+  std::vector<std::string> argv;     // argv[0] an absolute path inside the sandbox
+  std::string hostDir;               // bound read-only at /work
+  std::string outputDir;             // when not empty: bound writable at /out
+  std::string workingDir = "/work";  // inside the sandbox
+  std::vector<std::pair<std::string, std::string>> readOnlyFiles;  // host path, sandbox path
+  std::string input;                                               // standard input
+  SandboxLimits limits;
+};
+
+struct SandboxResult {
+  bool started = false;    // false: bubblewrap itself could not run (see `error`)
+  int exitCode = -1;       // when it exited
+  int signal = 0;          // when a signal ended it (SIGKILL also for limits below)
+  bool timedOut = false;   // killed at the wall-clock limit
+  bool outputCut = false;  // killed for writing more than outputBytes
+  std::string output;      // standard output
+  std::string errors;      // standard error, at most 64 KB
+  std::string error;       // why it did not start
+  double seconds = 0;      // wall clock
+  bool exitedWith(int code) const { return signal == 0 && !timedOut && exitCode == code; }
+  // "killed by SIGSEGV (segmentation fault)", "did not finish within 15 s", "exited with 3".
+  std::string describe() const;
+};
+
+// A folder of its own under $TMPDIR (or /tmp), mode 0711 (a sandbox's user may pass through to
+// what it is given, but not list it), removed with everything in it with the object.
+class Scratch {
+ public:
+  Scratch();
+  ~Scratch();
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+  const std::string& path() const { return path_; }
+  // A new empty folder `name` inside, for a sandbox to write (mode 0700).
+  std::string makeFolder(const std::string& name) const;
+
+ private:
+  std::string path_;
+};
+
+SandboxResult runSandboxed(const SandboxJob& job);
+
+// "" when bubblewrap can make a sandbox here; otherwise why not, in one line.
+std::string sandboxProblem();
+
+}  // namespace jello::grader

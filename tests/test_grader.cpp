@@ -1,0 +1,283 @@
+// The grader (./grade): every mutant of the correct course-API solution gets exactly its
+// diagnosis, hostile submissions are contained, and CTest runs the checks one by one.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "grader/checks.h"
+#include "grader/coursefiles.h"
+#include "grader/sandbox.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace jello::test;
+
+namespace {
+
+const std::string kSubmissions = std::string(JELLO_TEST_DATA) + "/submissions";
+const std::string kSeed = "5";
+
+bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
+
+// summary.csv as submission -> check -> grade.
+std::map<std::string, std::map<std::string, std::string>> readSummary(const std::string& dir) {
+  std::istringstream csv(readText(dir + "/summary.csv"));
+  std::string line, field;
+  std::getline(csv, line);
+  std::vector<std::string> checks;
+  std::istringstream header(line);
+  while (std::getline(header, field, ',')) checks.push_back(field);
+  std::map<std::string, std::map<std::string, std::string>> grades;
+  while (std::getline(csv, line)) {
+    std::istringstream row(line);
+    std::string name;
+    std::getline(row, name, ',');
+    name = name.substr(1, name.size() - 2);
+    for (std::size_t n = 1; std::getline(row, field, ','); ++n) grades[name][checks[n]] = field;
+  }
+  return grades;
+}
+
+// mutants.txt's expectations: the checks each mutant must fail (or be near, marked ~).
+std::map<std::string, std::set<std::string>> expectedFailures() {
+  std::istringstream table(readText(std::string(JELLO_TEST_DATA) + "/mutants.txt"));
+  std::map<std::string, std::set<std::string>> expected;
+  for (std::string line; std::getline(table, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::string name = line.substr(0, line.find('|'));
+    std::string fails =
+        line.substr(name.size() + 1, line.find('|', name.size() + 1) - name.size() - 1);
+    std::istringstream words(fails);
+    for (std::string w; words >> w;) expected[name].insert(w[0] == '~' ? w.substr(1) : w);
+    expected[name];
+  }
+  return expected;
+}
+
+// Runs ./grade; a whole class of fixtures takes a minute on two cores, more under sanitizers.
+CommandResult grade(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {JELLO_GRADE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  ProgramSetup setup;
+  setup.hangGuardSeconds = 280;
+  return runProgram(argv, setup);
+}
+
+void expectGrades(const std::string& dir, const std::vector<std::string>& names) {
+  auto grades = readSummary(dir);
+  auto expected = expectedFailures();
+  for (const auto& name : names) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(grades.count(name));
+    for (const auto& check : jello::grader::checkTable()) {
+      std::string got = grades[name][check.name];
+      bool bad = got == "FAIL" || got == "near";
+      EXPECT_EQ(bad, expected[name].count(check.name) == 1) << check.name << ": " << got;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(Grader, MutantsAreTheCorrectSolutionWithTheTableReplacements) {
+  std::string out = makeTempDir();
+  CommandResult r = runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-mutants", out});
+  ASSERT_EQ(r.status, 0) << r.err;
+  int mutants = 0;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    SCOPED_TRACE(entry.path().filename().string());
+    EXPECT_EQ(readText(entry.path().string() + "/physics.cpp"),
+              readText(kSubmissions + "/" + entry.path().filename().string() + "/physics.cpp"));
+    EXPECT_NE(readText(entry.path().string() + "/physics.cpp"),
+              readText(kSubmissions + "/correct/physics.cpp"));
+    ++mutants;
+  }
+  EXPECT_EQ(mutants, static_cast<int>(expectedFailures().size()));
+  EXPECT_GE(mutants, 14);
+  removeTree(out);
+}
+
+// One run over every fixture: the slowest test of the suite (about a minute on two cores).
+TEST(Grader, PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWords) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string dir = makeTempDir() + "/report";
+  std::vector<std::string> args = {"-o", dir, "--seed", kSeed};
+  std::vector<std::string> names = {"correct"};
+  for (const auto& [name, fails] : expectedFailures()) names.push_back(name);
+  for (const auto& name : names) args.push_back(kSubmissions + "/" + name);
+  CommandResult r = grade(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expectGrades(dir, names);
+  // The words: the term, the stage, the measured value against the expected.
+  std::string summary = readText(dir + "/summary.md");
+  for (const char* line : {
+           "bend-rest/bend (FAIL): rest length 0.142857143 m measured on the bend spring",
+           "rk4-stage3/rk4 (FAIL): RK4's third stage (k3) is evaluated at state + dt/2*k1",
+           "field-order/field (FAIL): the field's nodes are read in the wrong order",
+           "plane-side/plane (FAIL): plane: pushes points on its positive side",
+           "walls-some/walls (FAIL): wall x = +2: no force on points across it",
+           "damping-sign/dampers (FAIL): damping sign flipped",
+           "damping-whole/dampers (FAIL): the dampers act on the whole relative velocity",
+           "euler-new-v/euler (FAIL): Euler moves p with the new velocity",
+           "shear-missing/shear (FAIL): no shear springs",
+           "rounded-rest/structural (near): rest length 0.142857 m measured",
+           "no-compile/builds (FAIL): physics.cpp:",
+           "segfault/rest (FAIL): computeAcceleration was killed by signal 11",
+           "never-returns/rest (FAIL): computeAcceleration did not finish in time",
+           "never-returns/structural (FAIL): not run",
+       }) {
+    EXPECT_NE(summary.find(line), std::string::npos) << line;
+  }
+  std::string junit = readText(dir + "/junit.xml");
+  EXPECT_NE(junit.find("<testcase classname=\"bend-rest\" name=\"bend\"><failure message=\"rest"),
+            std::string::npos);
+  EXPECT_NE(junit.find("<testcase classname=\"correct\" name=\"rk4\"><system-out>pass: classic"),
+            std::string::npos);
+  // An earlier report is never replaced without --overwrite.
+  CommandResult again = grade({"-o", dir, "--seed", kSeed, kSubmissions + "/bend-rest"});
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+  removeTree(fs::path(dir).parent_path().string());
+}
+
+// Each hostile submission is the correct solution with an attack at the top of
+// computeAcceleration; it is graded beside the correct one, whose grades must not change.
+TEST(Grader, ContainsHostileSubmissionsAndHarmsNothingElse) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir();
+  chmod(root.c_str(), 0755);  // readable by anyone: only the sandbox keeps them out
+  std::string victim = root + "/victim.txt", secret = root + "/secret.txt";
+  std::string report = root + "/report";
+  writeText(victim, "untouched\n");
+  chmod(victim.c_str(), 0666);
+  writeText(secret, "TOP-SECRET-ANSWERS\n");
+  std::string correct = readText(kSubmissions + "/correct/physics.cpp");
+  const std::string entry =
+      "void computeAcceleration(struct world* jello, struct point a[8][8][8]) {";
+  std::map<std::string, std::string> hostile = {
+      {"forks", "  for (;;) fork();"},
+      {"allocates",
+       "  char* big = (char*)malloc(100000000000ull); memset(big, 1, 100000000000ull);"},
+      {"writes", "  FILE* victim = fopen(\"" + victim +
+                     "\", \"w\");\n"
+                     "  if (victim) { fputs(\"PWNED\", victim); fclose(victim); }\n"
+                     "  FILE* summary = fopen(\"" +
+                     report +
+                     "/summary.md\", \"w\");\n"
+                     "  if (summary) fclose(summary);"},
+      {"reads", "  if (fopen(\"" + secret + "\", \"r\")) abort();"},
+  };
+  std::vector<std::string> args = {"-o", report, "--seed", kSeed, "--checks", "rest,robust"};
+  for (const auto& [name, code] : hostile) {
+    std::string text = correct;
+    text.replace(text.find(entry), entry.size(), entry + "\n" + code);
+    fs::create_directories(root + "/" + name);
+    writeText(root + "/" + name + "/physics.cpp", "#include <unistd.h>\n" + text);
+    args.push_back(root + "/" + name);
+  }
+  fs::create_directories(root + "/includes");
+  writeText(root + "/includes/physics.cpp", "#include \"" + secret + "\"\n");
+  args.push_back(root + "/includes");
+  args.push_back(kSubmissions + "/correct");
+  CommandResult r = grade(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readText(victim), "untouched\n");
+  auto grades = readSummary(report);
+  for (std::string check : {"builds", "rest", "robust"}) {
+    EXPECT_EQ(grades["correct"][check], "pass") << check;  // graded beside them, unharmed
+    EXPECT_EQ(grades["reads"][check], "pass") << check;    // it could not open the secret
+    EXPECT_EQ(grades["writes"][check], "pass") << check;   // nor the files, to write
+    if (check != "builds") {
+      EXPECT_EQ(grades["forks"][check], "FAIL") << check;
+      EXPECT_EQ(grades["allocates"][check], "FAIL") << check;
+    }
+  }
+  EXPECT_EQ(grades["includes"]["builds"], "FAIL");
+  for (const auto& file : fs::recursive_directory_iterator(report)) {
+    if (file.is_regular_file()) {
+      EXPECT_EQ(readText(file.path()).find("TOP-SECRET"), std::string::npos) << file.path();
+    }
+  }
+  removeTree(root);
+}
+
+TEST(Grader, MakesACTestTestForEveryCheck) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string dir = makeTempDir() + "/ctest";
+  CommandResult r = grade({"--ctest", "-o", dir, "--seed", kSeed, kSubmissions + "/correct",
+                           kSubmissions + "/walls-some"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  ProgramSetup inDir;
+  inDir.cwd = dir;
+  CommandResult list = runProgram({CTEST_COMMAND, "-N"}, inDir);
+  EXPECT_NE(list.out.find("Total Tests: " + std::to_string(2 * jello::grader::checkTable().size())),
+            std::string::npos)
+      << list.out;
+  // One student's one check: its build comes first, as a fixture.
+  CommandResult walls = runProgram({CTEST_COMMAND, "-R", "walls-some/walls", "--output-on-failure",
+                                    "--output-junit", "junit.xml"},
+                                   inDir);
+  EXPECT_NE(walls.status, 0);
+  EXPECT_NE(walls.out.find("walls-some/builds"), std::string::npos) << walls.out;
+  EXPECT_NE(walls.out.find("wall x = +2: no force on points across it"), std::string::npos)
+      << walls.out;
+  CommandResult rest = runProgram({CTEST_COMMAND, "-R", "correct/rest"}, inDir);
+  EXPECT_EQ(rest.status, 0) << rest.out;
+  EXPECT_NE(readText(dir + "/junit.xml").find("walls-some/walls"), std::string::npos);
+  removeTree(fs::path(dir).parent_path().string());
+}
+
+TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), report = root + "/report";
+  std::string physics = readText(kSubmissions + "/correct/physics.cpp");
+  // A student's jello.h as the course's: GL first, then the course's layout and macros.
+  for (const char* name : {"glut", "missing-pic"}) {
+    fs::create_directories(root + "/" + name);
+    writeText(root + "/" + name + "/physics.cpp", physics);
+    writeText(root + "/" + name + "/physics.h", jello::grader::kCoursePhysicsH);
+    std::string first =
+        std::string(name) == "glut" ? "#include <GL/glut.h>\n" : "#include \"pic.h\"\n";
+    writeText(root + "/" + name + "/jello.h", first + jello::grader::kCourseJelloH);
+  }
+  // The correct folder as a .tar.gz and a .zip, inside a folder of its own as students pack it.
+  fs::create_directories(root + "/pack/alice");
+  fs::copy_file(kSubmissions + "/correct/physics.cpp", root + "/pack/alice/physics.cpp");
+  ProgramSetup inPack;
+  inPack.cwd = root + "/pack";
+  ASSERT_EQ(runProgram({"/bin/tar", "-czf", root + "/alice.tar.gz", "alice"}, inPack).status, 0);
+  bool zip = fs::exists("/usr/bin/zip");
+  if (zip) {
+    ASSERT_EQ(runProgram({"/usr/bin/zip", "-qr", root + "/bob.zip", "alice"}, inPack).status, 0);
+  }
+  std::vector<std::string> args = {"-o",
+                                   report,
+                                   "--seed",
+                                   kSeed,
+                                   "--checks",
+                                   "rest",
+                                   root + "/glut",
+                                   root + "/missing-pic",
+                                   root + "/alice.tar.gz"};
+  if (zip) args.push_back(root + "/bob.zip");
+  CommandResult r = grade(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string courseJello = "built with its physics.h with the course API's jello.h";
+  bool gl = fs::exists("/usr/include/GL/glut.h");
+  EXPECT_NE(
+      readText(report + "/glut/report.md").find(gl ? "built with its own headers" : courseJello),
+      std::string::npos);
+  EXPECT_NE(readText(report + "/missing-pic/report.md").find(courseJello), std::string::npos);
+  auto grades = readSummary(report);
+  for (const char* name : {"glut", "missing-pic", "alice", "bob"}) {
+    if (std::string(name) == "bob" && !zip) continue;
+    EXPECT_EQ(grades[name]["builds"], "pass") << name;
+    EXPECT_EQ(grades[name]["rest"], "pass") << name;
+  }
+  removeTree(root);
+}
