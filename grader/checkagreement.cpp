@@ -120,6 +120,16 @@ Judged judgeWorld(const std::string& name, const Reference& ref, const ProbeRun&
     return {Grade::Fail, name + ": " + (run.failure.empty() ? "no answer" : run.failure) +
                              " before step " + std::to_string(step)};
   }
+  // Beyond the judged step only a crash or a NaN counts.
+  for (std::size_t c = judged + 1; c < ref.checkpoints.size(); ++c) {
+    long later = static_cast<long>(c + 1) * kCheckpointSteps;
+    if (run.answers.size() < first + 2 * (c + 1)) {
+      return {Grade::Fail, name + ": " + run.failure + " before step " + std::to_string(later)};
+    }
+    if (!allFinite(run.answers[first + 2 * c + 1])) {
+      return {Grade::Fail, name + ": NaN by step " + std::to_string(later)};
+    }
+  }
   State theirs = run.state(first + 2 * judged + 1);
   double distance = rms(theirs, ref.checkpoints[judged]);
   std::string where = textf(

@@ -74,10 +74,9 @@ void expectGrades(const std::string& dir, const std::vector<std::string>& names)
   for (const auto& name : names) {
     SCOPED_TRACE(name);
     ASSERT_TRUE(grades.count(name));
-    for (const auto& check : jello::grader::checkTable()) {
-      std::string got = grades[name][check.name];
+    for (const auto& [check, got] : grades[name]) {  // the checks graded
       bool bad = got == "FAIL" || got == "near";
-      EXPECT_EQ(bad, expected[name].count(check.name) == 1) << check.name << ": " << got;
+      EXPECT_EQ(bad, expected[name].count(check) == 1) << check << ": " << got;
     }
   }
 }
@@ -102,11 +101,14 @@ TEST(Grader, MutantsAreTheCorrectSolutionWithTheTableReplacements) {
   removeTree(out);
 }
 
-// One run over every fixture: the slowest test of the suite (about a minute on two cores).
+// Every fixture, every check but the agreement (the next test's, on a few: it is half the time).
 TEST(Grader, PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWords) {
   if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
   std::string dir = makeTempDir() + "/report";
-  std::vector<std::string> args = {"-o", dir, "--seed", kSeed};
+  std::vector<std::string> args = {
+      "-o",       dir,
+      "--seed",   kSeed,
+      "--checks", "rest,structural,shear,bend,dampers,walls,plane,field,euler,rk4,robust,speed"};
   std::vector<std::string> names = {"correct"};
   for (const auto& [name, fails] : expectedFailures()) names.push_back(name);
   for (const auto& name : names) args.push_back(kSubmissions + "/" + name);
@@ -142,6 +144,25 @@ TEST(Grader, PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWor
   CommandResult again = grade({"-o", dir, "--seed", kSeed, kSubmissions + "/bend-rest"});
   EXPECT_EQ(again.status, 2);
   EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+  removeTree(fs::path(dir).parent_path().string());
+}
+
+// The whole runs: right, near for rounded constants, wrong for a wrong stage; and the worlds'
+// tolerances as the report states them.
+TEST(Grader, AgreesWithTheCorrectSolutionWithinEachWorldsOwnTolerance) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string dir = makeTempDir() + "/report";
+  std::vector<std::string> names = {"correct", "rounded-rest", "rk4-stage3", "euler-new-v"};
+  std::vector<std::string> args = {"-o", dir, "--seed", kSeed, "--checks", "agreement"};
+  for (const auto& name : names) args.push_back(kSubmissions + "/" + name);
+  CommandResult r = grade(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expectGrades(dir, names);
+  std::string report = readText(dir + "/correct/report.md");
+  for (const char* world : {"rotate.w", "jello.w", "moveLeft.w", "skewedCorner.w", "gravity.w",
+                            "unseen RK4 world (seed 5)", "unseen Euler world (seed 5)"}) {
+    EXPECT_NE(report.find(std::string("agreement: ") + world + ": "), std::string::npos) << world;
+  }
   removeTree(fs::path(dir).parent_path().string());
 }
 

@@ -10,17 +10,22 @@
      P                     prints the 512 positions and the 512 velocities
      T N                   N steps of RK4, then prints the microseconds a step took
    It trusts nothing about the submission: output is flushed after every answer, so what was
-   answered before a crash stays answered. Exit status 3: a command it could not read. */
+   answered before a crash stays answered; and what the submission itself prints (a printf left
+   from debugging) goes to /dev/null, not into the answers. Exit status 3: a command it could
+   not read. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "jello.h"
 #include "physics.h"
 
 /* The course's jello.cpp defines the world; a submission may too. */
 __attribute__((weak)) struct world jello;
+
+static FILE* answers; /* the grader's end of standard output */
 
 static void refuse(const char* what) {
   fprintf(stderr, "probe: cannot read %s\n", what);
@@ -64,7 +69,8 @@ static void printPoints(struct point points[8][8][8]) {
   for (int i = 0; i < 8; i++)
     for (int j = 0; j < 8; j++)
       for (int k = 0; k < 8; k++)
-        printf("%.17g %.17g %.17g\n", points[i][j][k].x, points[i][j][k].y, points[i][j][k].z);
+        fprintf(answers, "%.17g %.17g %.17g\n", points[i][j][k].x, points[i][j][k].y,
+                points[i][j][k].z);
 }
 
 static long readCount(void) {
@@ -83,6 +89,8 @@ static struct point accelerations[8][8][8];
 
 int main(void) {
   char command[4];
+  answers = fdopen(dup(1), "w");
+  if (!answers || !freopen("/dev/null", "w", stdout)) return 4;
   while (scanf("%3s", command) == 1) {
     if (strcmp(command, "W") == 0) {
       readWorldCommand();
@@ -101,7 +109,7 @@ int main(void) {
         else
           RK4(&jello);
       }
-      printf("ok\n");
+      fprintf(answers, "ok\n");
     } else if (strcmp(command, "P") == 0) {
       printPoints(jello.p);
       printPoints(jello.v);
@@ -109,11 +117,11 @@ int main(void) {
       long steps = readCount();
       double start = secondsNow();
       for (long s = 0; s < steps; s++) RK4(&jello);
-      printf("%.17g\n", steps > 0 ? 1e6 * (secondsNow() - start) / (double)steps : 0.0);
+      fprintf(answers, "%.17g\n", steps > 0 ? 1e6 * (secondsNow() - start) / (double)steps : 0.0);
     } else {
       refuse("a command");
     }
-    fflush(stdout);
+    fflush(answers);
   }
   return 0;
 }
