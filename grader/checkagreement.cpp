@@ -15,18 +15,11 @@ namespace jello::grader {
 namespace {
 
 constexpr int kCheckpoints = 20;
-constexpr long kCheckpointSteps = 100;  // 2000 steps in all
 // Tolerance: this many times the nudged spread, and never below kFloor.
 constexpr double kSpreadFactor = 100;
 constexpr double kFloor = 1e-9;       // m RMS
 constexpr double kJudgedUpTo = 1e-6;  // m: a checkpoint whose tolerance is larger is not judged
 constexpr double kNear = 1e-2;        // m RMS: beyond the tolerance but below this, near
-
-struct Reference {
-  std::vector<State> checkpoints;  // after 100, 200, ... steps
-  std::vector<double> tolerance;   // m RMS, per checkpoint
-  std::string diverged;            // when this project's own run diverged
-};
 
 double rms(const State& a, const State& b) {
   double sum = 0;
@@ -47,24 +40,6 @@ std::vector<State> runCheckpoints(const WorldFile& file, std::string* diverged) 
     states.push_back(run.state());
   }
   return states;
-}
-
-Reference makeReference(const WorldFile& file) {
-  Reference ref;
-  ref.checkpoints = runCheckpoints(file, &ref.diverged);
-  ref.tolerance.assign(ref.checkpoints.size(), kFloor);
-  for (double toward : {INFINITY, -INFINITY}) {
-    WorldFile nudged = file;
-    for (int n = 0; n < kNumCoords; ++n)
-      nudged.state.p()[n] = std::nextafter(file.state.p()[n], toward);
-    std::string ignored;
-    std::vector<State> states = runCheckpoints(nudged, &ignored);
-    for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
-      double spread = c < states.size() ? rms(states[c], ref.checkpoints[c]) : INFINITY;
-      ref.tolerance[c] = std::fmax(ref.tolerance[c], kSpreadFactor * spread);
-    }
-  }
-  return ref;
 }
 
 // Worlds the submission has never seen, from the seed: springs, damping, a field, a plane under
@@ -107,14 +82,11 @@ struct Judged {
   std::string line;
 };
 
-Judged judgeWorld(const std::string& name, const Reference& ref, const ProbeRun& run,
+Judged judgeWorld(const std::string& name, const AgreementReference& ref, const ProbeRun& run,
                   std::size_t first) {
   if (!ref.diverged.empty())
     return {Grade::Info, name + ": this project's run diverged (" + ref.diverged + "); not judged"};
-  std::size_t judged = 0;
-  for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
-    if (ref.tolerance[c] <= kJudgedUpTo) judged = c;
-  }
+  std::size_t judged = ref.judged;
   long step = static_cast<long>(judged + 1) * kCheckpointSteps;
   if (run.answers.size() < first + 2 * (judged + 1)) {
     return {Grade::Fail, name + ": " + (run.failure.empty() ? "no answer" : run.failure) +
@@ -146,6 +118,27 @@ Judged judgeWorld(const std::string& name, const Reference& ref, const ProbeRun&
 
 }  // namespace
 
+AgreementReference agreementReference(const WorldFile& file) {
+  AgreementReference ref;
+  ref.checkpoints = runCheckpoints(file, &ref.diverged);
+  ref.tolerance.assign(ref.checkpoints.size(), kFloor);
+  for (double toward : {INFINITY, -INFINITY}) {
+    WorldFile nudged = file;
+    for (int n = 0; n < kNumCoords; ++n)
+      nudged.state.p()[n] = std::nextafter(file.state.p()[n], toward);
+    std::string ignored;
+    std::vector<State> states = runCheckpoints(nudged, &ignored);
+    for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
+      double spread = c < states.size() ? rms(states[c], ref.checkpoints[c]) : INFINITY;
+      ref.tolerance[c] = std::fmax(ref.tolerance[c], kSpreadFactor * spread);
+    }
+  }
+  for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
+    if (ref.tolerance[c] <= kJudgedUpTo) ref.judged = c;
+  }
+  return ref;
+}
+
 CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) {
   std::vector<std::pair<std::string, WorldFile>> worlds;
   for (const char* name : {"rotate.w", "jello.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
@@ -158,15 +151,16 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
   }
   // The references: the same for every submission of a run.
   static std::mutex lock;
-  static std::map<std::string, Reference> references;
+  static std::map<std::string, AgreementReference> references;
   CheckResult result = passed("agreement", "");
   std::string passes;
   for (const auto& [name, file] : worlds) {
-    Reference* ref;
+    AgreementReference* ref;
     {
       std::lock_guard<std::mutex> hold(lock);
       auto found = references.find(name);
-      if (found == references.end()) found = references.emplace(name, makeReference(file)).first;
+      if (found == references.end())
+        found = references.emplace(name, agreementReference(file)).first;
       ref = &found->second;
     }
     Script script;

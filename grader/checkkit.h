@@ -43,6 +43,19 @@ CheckResult info(const std::string& check, std::string line);
 // A probe run that did not answer everything: Fail, saying what it was doing.
 CheckResult crashed(const std::string& check, const ProbeRun& run, const std::string& when);
 
+// The agreement's reference for a world (checkagreement.cpp): this project's positions every
+// kCheckpointSteps steps, and at each the tolerance: 100 times the spread of the runs whose
+// initial positions are nudged one ulp up and down, at least 1e-9 m RMS. `judged`: the last
+// checkpoint whose tolerance is at most 1e-6 m (0 when none is), where the world is judged.
+struct AgreementReference {
+  std::vector<State> checkpoints;
+  std::vector<double> tolerance;  // m RMS
+  std::size_t judged = 0;
+  std::string diverged;  // when this project's own run diverged
+};
+constexpr long kCheckpointSteps = 100;
+AgreementReference agreementReference(const WorldFile& world);
+
 // The checks, one function each (checks.cpp dispatches by name).
 CheckResult checkRest(const std::string& probe);
 CheckResult checkSprings(const std::string& probe, const std::string& kind);

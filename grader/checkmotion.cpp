@@ -278,8 +278,11 @@ CheckResult checkSpeed(const std::string& probe, const GradingSetup& setup) {
   script.timing(500);
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return info("speed", "not measured: " + run.failure);
-  return info("speed", textf("%.0f us per RK4 step on rotate.w (500 steps, in the sandbox)",
-                             run.answers[0][0]));
+  CheckResult result = info(
+      "speed",
+      textf("%.0f us per RK4 step on rotate.w (500 steps, in the sandbox)", run.answers[0][0]));
+  result.figure = run.answers[0][0];
+  return result;
 }
 
 }  // namespace jello::grader

@@ -21,6 +21,7 @@ struct CheckResult {
   Grade grade = Grade::Fail;
   std::string diagnosis;           // one line: what is wrong, or the figure (Info)
   std::vector<std::string> notes;  // what is not graded but worth knowing
+  double figure = -1;              // speed: microseconds per RK4 step; -1 when none
 };
 
 struct CheckInfo {

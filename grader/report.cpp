@@ -54,6 +54,11 @@ std::string cmakeQuote(const std::string& text) {
   return "[" + equals + "[" + text + "]" + equals + "]";
 }
 
+// A check's cell in the summary: its grade, or the figure it measured (speed).
+std::string gradeCell(const CheckResult& r, const char* unit) {
+  return r.figure >= 0 ? textf("%.0f%s", r.figure, unit) : std::string(gradeName(r.grade));
+}
+
 std::string submissionReport(const Graded& g) {
   std::ostringstream md;
   md << "# " << g.submission.name << "\n\nSubmission: `" << g.submission.path << "`";
@@ -81,12 +86,7 @@ std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t see
   for (std::size_t n = 0; n < columns.size(); ++n) md << "---|";
   for (const auto& g : graded) {
     md << "\n| " << g.submission.name << " |";
-    for (const auto& r : g.results)
-      md << " "
-         << (r.check == "speed" && r.grade == Grade::Info
-                 ? r.diagnosis.substr(0, r.diagnosis.find(' ')) + " us"
-                 : gradeName(r.grade))
-         << " |";
+    for (const auto& r : g.results) md << " " << gradeCell(r, " us") << " |";
   }
   md << "\n\n## What failed\n";
   for (const auto& g : graded) {
@@ -105,12 +105,7 @@ std::string summaryCsv(const std::vector<Graded>& graded) {
   for (const auto& c : graded.front().results) csv << "," << c.check;
   for (const auto& g : graded) {
     csv << "\n" << csvField(g.submission.name);
-    for (const auto& r : g.results) {
-      csv << ","
-          << (r.check == "speed" && r.grade == Grade::Info
-                  ? r.diagnosis.substr(0, r.diagnosis.find(' '))
-                  : gradeName(r.grade));
-    }
+    for (const auto& r : g.results) csv << "," << gradeCell(r, "");
   }
   return csv.str() + "\n";
 }

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "grader/checkkit.h"
 #include "grader/checks.h"
 #include "grader/coursefiles.h"
 #include "grader/sandbox.h"
@@ -301,4 +302,29 @@ TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
     EXPECT_EQ(grades[name]["rest"], "pass") << name;
   }
   removeTree(root);
+}
+
+// The agreement's tolerance comes from the world: on rotate.w a one-ulp nudge stays below
+// 1e-11 m, so the floor (1e-9 m) holds to step 2000; thrown fast with little damping, the cube
+// of jello.w amplifies the nudge to about 1e-7 m by step 2000 (1e-5 m as a tolerance), so it is
+// judged at an earlier step, where the tolerance is still 1e-6 m or less.
+TEST(Grader, TakesEachWorldsToleranceFromItsOwnSensitivity) {
+  using jello::grader::agreementReference;
+  auto calm = agreementReference(jello::readWorldFile(JELLO_SOURCE_DIR "/world/rotate.w"));
+  ASSERT_EQ(calm.tolerance.size(), 20u);
+  EXPECT_EQ(calm.judged, 19u);
+  EXPECT_EQ(calm.tolerance.back(), 1e-9);
+  std::string dir = makeTempDir(), fast = dir + "/fast.w";
+  ASSERT_EQ(runProgram({JELLO_CREATE_WORLD, "--preset", "jello", "--velocity", "30", "-20", "25",
+                        "--d-elastic", "0.05", "--d-collision", "0.05", "-o", fast})
+                .status,
+            0);
+  auto wild = agreementReference(jello::readWorldFile(fast));
+  ASSERT_EQ(wild.tolerance.size(), 20u);
+  EXPECT_GT(wild.tolerance.back(), 1e-6);
+  EXPECT_LT(wild.judged, 19u);
+  EXPECT_GT(wild.judged, 3u);
+  EXPECT_LE(wild.tolerance[wild.judged], 1e-6);
+  EXPECT_GT(wild.tolerance[wild.judged + 1], 1e-6);
+  removeTree(dir);
 }
