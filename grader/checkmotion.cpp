@@ -133,6 +133,45 @@ std::string rk4Order(const std::string& probe, double* order) {
   return "";
 }
 
+// Which RK4 the submission's step `result` from busy.state is: "" for classic RK4 on its own
+// accelerations (k1's given), a variant's words when it is RK4 with one stage at a usual wrong
+// state, or a line saying neither; *failure when the probe could not answer. Every variant's
+// stages are asked for a round (a probe run) at a time, each state once.
+std::string whichRk4(const std::string& probe, const WorldFile& busy, const std::vector<double>& k1,
+                     const State& result, std::string* failure) {
+  double dt = busy.world.dt;
+  std::vector<Rk4Variant> variants = rk4Variants();
+  std::vector<std::vector<State>> k(variants.size(), std::vector<State>(5));  // k[v][stage]
+  for (auto& stages : k) stages[1] = derivativeOf(busy.state, k1);
+  for (int j = 2; j <= 4; ++j) {
+    std::vector<State> states;
+    std::map<std::vector<double>, std::size_t> asked;
+    std::vector<std::size_t> which(variants.size());
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      const Rk4Variant& var = variants[v];
+      State s = var.m[j] == 0 ? busy.state : stage(busy.state, var.c[j] * dt, k[v][var.m[j]]);
+      auto found = asked.emplace(s.y, states.size());
+      if (found.second) states.push_back(s);
+      which[v] = found.first->second;
+    }
+    auto answers = accelerationsAt(probe, busy.world, states, failure);
+    if (!failure->empty()) return "";
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      k[v][j] = derivativeOf(states[which[v]], answers[which[v]]);
+    }
+  }
+  double pScale = dt * largest(busy.state.y), vScale = dt * largest(k1);
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    State y = busy.state;
+    for (std::size_t n = 0; n < y.y.size(); ++n) {
+      y.y[n] += dt / 6 * (k[v][1].y[n] + 2 * k[v][2].y[n] + 2 * k[v][3].y[n] + k[v][4].y[n]);
+    }
+    if (relativeDifference(result, y, pScale, vScale) <= kOneStepExact) return variants[v].name;
+  }
+  return "one RK4 step is not classic RK4 on its own accelerations, nor RK4 with one stage at a "
+         "usual wrong state";
+}
+
 }  // namespace
 
 CheckResult checkEuler(const std::string& probe) {
@@ -169,57 +208,21 @@ CheckResult checkEuler(const std::string& probe) {
 
 CheckResult checkRk4(const std::string& probe) {
   WorldFile busy = busyWorld();
-  const World& world = busy.world;
-  double dt = world.dt;
   Script script;
-  script.world(world, busy.state);
+  script.world(busy.world, busy.state);
   script.accelerations();
   script.steps(Integrator::RK4, 1);
   script.read();
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return crashed("rk4", run, "on one step of a cube in motion");
-  State result = run.state(2);
-  std::vector<Rk4Variant> variants = rk4Variants();
-  // k[v][j]: stage j of variant v. Stages are asked for a round at a time, each state once.
-  std::vector<std::vector<State>> k(variants.size(), std::vector<State>(5));
-  for (auto& stages : k) stages[1] = derivativeOf(busy.state, run.answers[0]);
-  for (int j = 2; j <= 4; ++j) {
-    std::vector<State> states;
-    std::map<std::vector<double>, std::size_t> asked;
-    std::vector<std::size_t> which(variants.size());
-    for (std::size_t v = 0; v < variants.size(); ++v) {
-      const Rk4Variant& var = variants[v];
-      State s = var.m[j] == 0 ? busy.state : stage(busy.state, var.c[j] * dt, k[v][var.m[j]]);
-      auto found = asked.emplace(s.y, states.size());
-      if (found.second) states.push_back(s);
-      which[v] = found.first->second;
-    }
-    std::string failure;
-    auto answers = accelerationsAt(probe, world, states, &failure);
-    if (!failure.empty()) return failed("rk4", failure + " at a stage of RK4");
-    for (std::size_t v = 0; v < variants.size(); ++v)
-      k[v][j] = derivativeOf(states[which[v]], answers[which[v]]);
-  }
-  double pScale = dt * largest(busy.state.y), vScale = dt * largest(run.answers[0]);
-  std::string diagnosis;
-  for (std::size_t v = 0; v < variants.size() && diagnosis.empty(); ++v) {
-    State y = busy.state;
-    for (std::size_t n = 0; n < y.y.size(); ++n) {
-      y.y[n] += dt / 6 * (k[v][1].y[n] + 2 * k[v][2].y[n] + 2 * k[v][3].y[n] + k[v][4].y[n]);
-    }
-    if (relativeDifference(result, y, pScale, vScale) > kOneStepExact) continue;
-    if (v > 0) diagnosis = variants[v].name;
-    if (v == 0) diagnosis = "classic";
-  }
-  if (diagnosis.empty())
-    diagnosis =
-        "one RK4 step is not classic RK4 on its own accelerations, nor RK4 with one stage at a "
-        "usual wrong state";
+  std::string failure;
+  std::string wrong = whichRk4(probe, busy, run.answers[0], run.state(2), &failure);
+  if (!failure.empty()) return failed("rk4", failure + " at a stage of RK4");
   double order = 0;
-  std::string orderFailure = rk4Order(probe, &order);
-  if (!orderFailure.empty()) return failed("rk4", orderFailure + " on a smooth scene");
+  failure = rk4Order(probe, &order);
+  if (!failure.empty()) return failed("rk4", failure + " on a smooth scene");
   std::string orderLine = textf("observed order %.2f on a smooth scene", order);
-  if (diagnosis != "classic") return failed("rk4", diagnosis + " (" + orderLine + ")");
+  if (!wrong.empty()) return failed("rk4", wrong + " (" + orderLine + ")");
   if (std::fabs(order - 4) > 0.5) return failed("rk4", orderLine + ", 4 expected");
   return passed("rk4", "classic RK4 on its own accelerations; " + orderLine);
 }

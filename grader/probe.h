@@ -54,7 +54,7 @@ struct ProbeRun {
 // run on the thread does not finish in time, and kProbeSecondsAfterHang after that, so that a
 // submission that never returns costs seconds a check, not minutes. resetProbeBudget() when a
 // thread starts on the next submission.
-constexpr double kProbeSeconds = 10;
+constexpr double kProbeSeconds = 5;
 constexpr double kProbeSecondsAfterHang = 2;
 void resetProbeBudget();
 // Whether a probe run on this thread did not finish in time since resetProbeBudget().

@@ -40,10 +40,12 @@ std::string csvField(const std::string& text) {
   return out + "\"";
 }
 
-// A markdown table cell: no pipe or line break breaks the table.
+// A markdown table cell: no pipe or line break breaks the table; bytes that are not UTF-8 (a
+// compiler's message quoting a student's file) show as \xNN.
 std::string cell(const std::string& text) {
   std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);
+  for (char c : printable(text))
+    out += c == '|' ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);
   return out;
 }
 
@@ -120,9 +122,9 @@ std::string junit(const std::vector<Graded>& graded) {
             << r.check << "\">";
       if (r.grade == Grade::Fail) {
         ++failures;
-        cases << "<failure message=\"" << xmlEscape(r.diagnosis) << "\"/>";
+        cases << "<failure message=\"" << xmlEscape(printable(r.diagnosis)) << "\"/>";
       } else if (!r.diagnosis.empty()) {
-        cases << "<system-out>" << gradeName(r.grade) << ": " << xmlEscape(r.diagnosis)
+        cases << "<system-out>" << gradeName(r.grade) << ": " << xmlEscape(printable(r.diagnosis))
               << "</system-out>";
       }
       cases << "</testcase>\n";

@@ -229,6 +229,11 @@ std::vector<Submission> nameSubmissions(const std::vector<std::string>& paths) {
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '_';
     }
     if (name.empty() || name[0] == '.') name = "submission" + name;
+    // The names of the report's own files are not a submission's folder.
+    for (const char* reserved :
+         {"summary.md", "summary.csv", "junit.xml", "grading.txt", "CTestTestfile.cmake"}) {
+      if (name == reserved) name += "-submission";
+    }
     std::string unique = name;
     for (int n = 2; taken.count(unique); ++n) unique = name + "-" + std::to_string(n);
     taken.insert(unique);
