@@ -205,6 +205,7 @@ int run(int argc, char** argv) {
     requireSandbox();
     return gradeOneCheck(o.one, o.item, o.paths[0]);
   }
+  std::vector<std::string> checks = chosenChecks(o.checkList);
   if (o.paths.empty())
     throw std::invalid_argument("no submission given: grade [-o DIR] SUBMISSION...");
   if (o.dir.empty()) throw std::invalid_argument("-o: an empty folder name");
@@ -214,7 +215,6 @@ int run(int argc, char** argv) {
       why = path + ": a name with a line break";
     if (!why.empty()) throw std::invalid_argument(why);
   }
-  std::vector<std::string> checks = chosenChecks(o.checkList);
   if (o.ctest) return writeCTest(o, checks);
   requireSandbox();
   return gradeAll(nameSubmissions(o.paths), checks, {worldDir(), o.seed}, o.dir, o.overwrite,
