@@ -40,6 +40,15 @@ CheckResult passed(const std::string& check, std::string line = {});
 CheckResult near(const std::string& check, std::string line);
 CheckResult failed(const std::string& check, std::string line);
 CheckResult info(const std::string& check, std::string line);
+// The accelerations at each of `states` in `world`, in one probe run; empty, with *failure saying
+// what went wrong, when it did not answer them all.
+std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const World& world,
+                                                 const std::vector<State>& states,
+                                                 std::string* failure);
+// One step of `integrator` from `start`: its answers are the accelerations at the start, the
+// step's "ok", and the state after.
+ProbeRun oneStep(const std::string& probe, const WorldFile& start, Integrator integrator);
+
 // A probe run that did not answer everything: Fail, saying what it was doing.
 CheckResult crashed(const std::string& check, const ProbeRun& run, const std::string& when);
 

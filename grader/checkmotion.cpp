@@ -87,21 +87,6 @@ std::vector<Rk4Variant> rk4Variants() {
   return variants;
 }
 
-// The accelerations at each of `states`, in one probe run; empty with `failure` set when not.
-std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const World& world,
-                                                 const std::vector<State>& states,
-                                                 std::string* failure) {
-  Script script;
-  script.world(world, states.front());
-  for (const State& s : states) {
-    script.state(s);
-    script.accelerations();
-  }
-  ProbeRun run = runProbe(probe, script);
-  if (!run.complete()) *failure = run.failure;
-  return run.complete() ? run.answers : std::vector<std::vector<double>>{};
-}
-
 // Observed order of the submission's RK4 on a smooth scene (no contact, no field): from the
 // differences between runs to one time at dt, dt/2, dt/4, dt/8.
 std::string rk4Order(const std::string& probe, double* order) {
@@ -176,12 +161,7 @@ std::string whichRk4(const std::string& probe, const WorldFile& busy, const std:
 
 CheckResult checkEuler(const std::string& probe) {
   WorldFile busy = busyWorld();
-  Script script;
-  script.world(busy.world, busy.state);
-  script.accelerations();
-  script.steps(Integrator::Euler, 1);
-  script.read();
-  ProbeRun run = runProbe(probe, script);
+  ProbeRun run = oneStep(probe, busy, Integrator::Euler);
   if (!run.complete()) return crashed("euler", run, "on one step of a cube in motion");
   const State& s = busy.state;
   State after = run.state(2), course = s, symplectic = s;
@@ -208,12 +188,7 @@ CheckResult checkEuler(const std::string& probe) {
 
 CheckResult checkRk4(const std::string& probe) {
   WorldFile busy = busyWorld();
-  Script script;
-  script.world(busy.world, busy.state);
-  script.accelerations();
-  script.steps(Integrator::RK4, 1);
-  script.read();
-  ProbeRun run = runProbe(probe, script);
+  ProbeRun run = oneStep(probe, busy, Integrator::RK4);
   if (!run.complete()) return crashed("rk4", run, "on one step of a cube in motion");
   std::string failure;
   std::string wrong = whichRk4(probe, busy, run.answers[0], run.state(2), &failure);

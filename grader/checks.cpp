@@ -125,6 +125,30 @@ CheckResult info(const std::string& check, std::string line) {
   return {check, Grade::Info, std::move(line), {}};
 }
 
+// The accelerations at each of `states`, in one probe run; empty with `failure` set when not.
+std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const World& world,
+                                                 const std::vector<State>& states,
+                                                 std::string* failure) {
+  Script script;
+  script.world(world, states.front());
+  for (const State& s : states) {
+    script.state(s);
+    script.accelerations();
+  }
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) *failure = run.failure;
+  return run.complete() ? run.answers : std::vector<std::vector<double>>{};
+}
+
+ProbeRun oneStep(const std::string& probe, const WorldFile& start, Integrator integrator) {
+  Script script;
+  script.world(start.world, start.state);
+  script.accelerations();
+  script.steps(integrator, 1);
+  script.read();
+  return runProbe(probe, script);
+}
+
 CheckResult crashed(const std::string& check, const ProbeRun& run, const std::string& when) {
   return failed(check, run.failure + " " + when);
 }

@@ -143,17 +143,13 @@ CheckResult judgeSprings(const std::string& kind, const std::vector<Offset>& off
 CheckResult checkRest(const std::string& probe) {
   World world = probeWorld();
   State still = restLattice(kCentred), turned = restLattice({0.13, -0.21, 0.08}, 0.7);
-  Script script;
-  script.world(world, still);
-  script.accelerations();
-  script.state(turned);
-  script.accelerations();
-  ProbeRun run = runProbe(probe, script);
-  if (!run.complete()) return crashed("rest", run, "on the cube at rest");
+  std::string failure;
+  auto answers = accelerationsAt(probe, world, {still, turned}, &failure);
+  if (!failure.empty()) return failed("rest", failure + " on the cube at rest");
   // The scale of the accelerations a spring gives: kElastic * (1/7) / mass.
   double scale = world.kElastic * kRestSpacing / world.mass;
   for (std::size_t n = 0; n < 2; ++n) {
-    const std::vector<double>& a = run.answers[n];
+    const std::vector<double>& a = answers[n];
     if (!allFinite(a))
       return failed("rest", "NaN or infinity in the accelerations of the cube at rest");
     double most = largest(a);
@@ -176,20 +172,17 @@ CheckResult checkSprings(const std::string& probe, const std::string& kind) {
   State base = restLattice(kCentred);
   const std::vector<Vec3> moves = {
       {0.021, -0.013, 0.017}, {-0.011, 0.019, 0.008}, {0.005, 0.012, -0.023}};
-  Script script;
-  script.world(world, base);
-  script.accelerations();
+  std::vector<State> states = {base};
   for (Vec3 move : moves) {
-    State moved = base;
-    store(moved.p(), kProbePoint, load(base.p(), kProbePoint) + move);
-    script.state(moved);
-    script.accelerations();
+    states.push_back(base);
+    store(states.back().p(), kProbePoint, load(base.p(), kProbePoint) + move);
   }
-  ProbeRun run = runProbe(probe, script);
-  if (!run.complete()) return crashed(kind, run, "with one point moved");
+  std::string failure;
+  auto answers = accelerationsAt(probe, world, states, &failure);
+  if (!failure.empty()) return failed(kind, failure + " with one point moved");
   std::vector<Offset> offsets = bothWays(springOffsets(kind));
   std::vector<SpringFit> fits;
-  for (const Offset& o : offsets) fits.push_back(fitSpring(base, moves, run.answers, neighbour(o)));
+  for (const Offset& o : offsets) fits.push_back(fitSpring(base, moves, answers, neighbour(o)));
   return judgeSprings(kind, offsets, fits, world.kElastic);
 }
 
@@ -198,13 +191,9 @@ CheckResult checkDampers(const std::string& probe) {
   State base = restLattice(kCentred), moving = base;
   const Vec3 w = {0.5, 0.2, 0.9};  // m/s: along no spring, across none
   store(moving.v(), kProbePoint, w);
-  Script script;
-  script.world(world, base);
-  script.accelerations();
-  script.state(moving);
-  script.accelerations();
-  ProbeRun run = runProbe(probe, script);
-  if (!run.complete()) return crashed("dampers", run, "with one point moving");
+  std::string failure;
+  auto answers = accelerationsAt(probe, world, {base, moving}, &failure);
+  if (!failure.empty()) return failed("dampers", failure + " with one point moving");
   std::vector<Offset> offsets;
   for (const char* kind : {"structural", "shear", "bend"}) {
     for (const Offset& o : bothWays(springOffsets(kind))) offsets.push_back(o);
@@ -215,7 +204,7 @@ CheckResult checkDampers(const std::string& probe) {
     Vec3 u = load(base.p(), r) - load(base.p(), kProbePoint);
     u = (1 / length(u)) * u;
     // On the neighbour: -d ((v_r - v_q) . u) u = d (w . u) u.
-    Vec3 change = run.answers.empty() ? Vec3{} : forceChange(run.answers[1], run.answers[0], r);
+    Vec3 change = forceChange(answers[1], answers[0], r);
     double along = dot(change, u) / dot(w, u);
     double across = length(change - dot(change, u) * u);
     std::string at = "the spring at offset " + offsetName(o[0], o[1], o[2]);
