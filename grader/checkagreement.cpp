@@ -153,6 +153,7 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
   static std::mutex lock;
   static std::map<std::string, AgreementReference> references;
   CheckResult result = passed("agreement", "");
+  int off = 0;
   std::string passes;
   for (const auto& [name, file] : worlds) {
     AgreementReference* ref;
@@ -171,15 +172,22 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
     }
     ProbeRun run = runProbe(probe, script, {3});
     Judged judged = judgeWorld(name, *ref, run, 0);
-    if (judged.grade == Grade::Fail ||
-        (judged.grade == Grade::Near && result.grade == Grade::Pass)) {
-      if (result.grade != Grade::Fail) result.diagnosis = judged.line;
-      result.grade = judged.grade;
+    // The diagnosis names the first world of the worst grade; the notes, every world.
+    if (judged.grade == Grade::Fail || judged.grade == Grade::Near) {
+      ++off;
+      if (result.grade == Grade::Pass ||
+          (judged.grade == Grade::Fail && result.grade != Grade::Fail)) {
+        result.diagnosis = judged.line;
+        result.grade = judged.grade;
+      }
     }
     result.notes.push_back(judged.line);
   }
-  if (result.grade == Grade::Pass)
+  if (result.grade == Grade::Pass) {
     result.diagnosis = textf("%zu worlds within their tolerance", worlds.size());
+  } else {
+    result.diagnosis = textf("%d of %zu worlds off; ", off, worlds.size()) + result.diagnosis;
+  }
   return result;
 }
 

@@ -42,6 +42,9 @@ std::string judgeContact(const ProbeRun& run, std::size_t first, const ContactPr
                          const std::vector<bool>& across, const World& world,
                          const std::string& name) {
   const auto& a = run.answers;
+  for (int n = 0; n < 4; ++n) {
+    if (!allFinite(a[first + n])) return name + ": NaN or infinity in the accelerations";
+  }
   for (int q = 0; q < kNumPoints; ++q) {
     if (across[q]) continue;
     for (int n = 1; n < 4; ++n) {

@@ -41,7 +41,7 @@ CheckResult near(const std::string& check, std::string line);
 CheckResult failed(const std::string& check, std::string line);
 CheckResult info(const std::string& check, std::string line);
 // The accelerations at each of `states` in `world`, in one probe run; empty, with *failure saying
-// what went wrong, when it did not answer them all.
+// what went wrong, when it did not answer them all, or answered a NaN or an infinity.
 std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const World& world,
                                                  const std::vector<State>& states,
                                                  std::string* failure);

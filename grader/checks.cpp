@@ -137,7 +137,11 @@ std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const
   }
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) *failure = run.failure;
-  return run.complete() ? run.answers : std::vector<std::vector<double>>{};
+  for (std::size_t n = 0; n < run.answers.size() && failure->empty(); ++n) {
+    // Every comparison after this is false for a NaN: one would pass for anything.
+    if (!allFinite(run.answers[n])) *failure = "computeAcceleration gave NaN or infinity";
+  }
+  return failure->empty() ? run.answers : std::vector<std::vector<double>>{};
 }
 
 ProbeRun oneStep(const std::string& probe, const WorldFile& start, Integrator integrator) {

@@ -1,5 +1,6 @@
-// coursefiles.h: the course API's files, built into the grader (from grader/course/), so that a
-// copied ./grade needs nothing beside it.
+// coursefiles.h: the course API's files, built into the grader (from grader/course/): what is
+// built with a student's code never depends on where ./grade is run from. (The course worlds of
+// the agreement check are read from world/, beside ./grade or in the sources.)
 #pragma once
 
 namespace jello::grader {

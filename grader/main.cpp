@@ -3,6 +3,7 @@
 // of every submission ran, whatever the grades; 2 on bad usage or when no sandbox can be made.
 // With --one (the tests grade --ctest writes) the status is the check's: 0 pass, near or info;
 // 1 fail.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -40,16 +41,36 @@ std::string programPath() {
 std::string worldDir() {
   fs::path beside = fs::path(programPath()).parent_path() / "world";
   if (fs::exists(beside / "rotate.w")) return beside.string();
-  return std::string(JELLO_SOURCE_DIR) + "/world";
+  std::string sources = std::string(JELLO_SOURCE_DIR) + "/world";
+  if (fs::exists(sources + "/rotate.w")) return sources;
+  throw std::runtime_error("the course worlds (world/rotate.w, ...) are neither beside " +
+                           programPath() + " nor in " + sources);
 }
 
 CheckResult buildCheck(const Submission& submission, const std::string& probePath, Graded& graded) {
-  BuildResult build = buildSubmission(submission, probePath);
+  BuildResult build;
+  try {
+    build = buildSubmission(submission, probePath);
+  } catch (const std::exception& e) {
+    build.diagnosis = std::string("the grader could not build it: ") + e.what();
+  }
   graded.headers = build.headers;
   graded.buildLog = build.log;
   CheckResult result{"builds", build.built ? Grade::Pass : Grade::Fail,
                      build.built ? "built with " + build.headers : build.diagnosis, build.notes};
   return result;
+}
+
+// A check whose grader failed (a file it could not write, memory) fails with the reason: one
+// submission's trouble never ends the grading of the class.
+CheckResult runCheckSafely(const std::string& check, const std::string& probePath,
+                           const GradingSetup& setup) {
+  try {
+    return runCheck(check, probePath, setup);
+  } catch (const std::exception& e) {
+    return {
+        check, Grade::Fail, std::string("the grader could not run this check: ") + e.what(), {}};
+  }
 }
 
 // The checks graded for one submission, in order; the first is "builds".
@@ -68,7 +89,7 @@ Graded gradeOne(const Submission& submission, const std::vector<std::string>& ch
       graded.results.push_back(
           {check, Grade::Fail, "not run: the submission did not return in an earlier check", {}});
     } else {
-      graded.results.push_back(runCheck(check, probePath, setup));
+      graded.results.push_back(runCheckSafely(check, probePath, setup));
     }
   }
   fs::remove(probePath);
@@ -122,7 +143,7 @@ int gradeOneCheck(const std::string& check, std::size_t item, const std::string&
   } else if (!fs::exists(probePath)) {
     result = {check, Grade::Fail, "not built", {}};
   } else {
-    result = runCheck(check, probePath, setup);
+    result = runCheckSafely(check, probePath, setup);
   }
   std::cout << s.name << "/" << check << ": " << gradeName(result.grade) << ": " << result.diagnosis
             << "\n";
@@ -226,6 +247,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   setProgramName("grade");
   installSignalCleanup();
+  // What the grader makes for a sandbox (copies of sources, its probe) must be readable by the
+  // sandbox's own user, whatever umask the grader was started with.
+  umask(022);
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -51,9 +51,11 @@ struct ProbeRun {
 };
 
 // A probe run's time: `scale` times the budget of this thread, which is kProbeSeconds until a
-// run on the thread does not finish in time, and kProbeSecondsAfterHang after that, so that a
-// submission that never returns costs seconds a check, not minutes. resetProbeBudget() when a
-// thread starts on the next submission.
+// run on the thread does not finish in time, and kProbeSecondsAfterHang after that (for the
+// further runs of the same check); ./grade then fails the submission's later checks as "not
+// run" (probeHung), so that one that never returns costs seconds, not minutes. Under CTest
+// each check is a process of its own and waits its own kProbeSeconds. resetProbeBudget() when
+// a thread starts on the next submission.
 constexpr double kProbeSeconds = 5;
 constexpr double kProbeSecondsAfterHang = 2;
 void resetProbeBudget();

@@ -63,14 +63,14 @@ std::string gradeCell(const CheckResult& r, const char* unit) {
 
 std::string submissionReport(const Graded& g) {
   std::ostringstream md;
-  md << "# " << g.submission.name << "\n\nSubmission: `" << g.submission.path << "`";
+  md << "# " << g.submission.name << "\n\nSubmission: `" << printable(g.submission.path) << "`";
   if (!g.headers.empty()) md << ", built with " << g.headers;
   md << textf(". Graded in %.1f s.\n\n| check | grade | what it found |\n|---|---|---|\n",
               g.seconds);
   for (const auto& r : g.results)
     md << "| " << r.check << " | " << gradeName(r.grade) << " | " << cell(r.diagnosis) << " |\n";
   for (const auto& r : g.results) {
-    for (const auto& note : r.notes) md << "\n- " << r.check << ": " << note;
+    for (const auto& note : r.notes) md << "\n- " << r.check << ": " << printable(note);
   }
   md << "\n\nThe compiler's output is in build.log.\n";
   return md.str();
@@ -95,7 +95,7 @@ std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t see
     for (const auto& r : g.results) {
       if (r.grade == Grade::Fail || r.grade == Grade::Near)
         md << "\n- " << g.submission.name << "/" << r.check << " (" << gradeName(r.grade)
-           << "): " << r.diagnosis;
+           << "): " << printable(r.diagnosis);
     }
   }
   return md.str() + "\n";

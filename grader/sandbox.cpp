@@ -26,18 +26,20 @@ constexpr std::size_t kErrorsKept = 64 << 10;
 const char* const kBubblewrap = "/usr/bin/bwrap";
 
 // Sandboxes started by root run under user ids of their own, from this base: RLIMIT_NPROC counts
-// processes per user and does not bind root at all. Unique per process (pid) and per sandbox
-// within it (a counter), below 2^31.
+// processes per user and does not bind root at all. Unique per process (pid) and, among the
+// sandboxes of one process (at most one a thread, 256 threads), per call (a counter), below 2^31.
 constexpr unsigned kSandboxUidBase = 100000000u;
+constexpr unsigned kSlots = 1024;
 std::atomic<unsigned> sandboxCounter{0};
 
 unsigned sandboxUid() {
-  unsigned slot = sandboxCounter.fetch_add(1) % 64;
-  return kSandboxUidBase + (static_cast<unsigned>(getpid()) % 4000000u) * 64u + slot;
+  unsigned slot = sandboxCounter.fetch_add(1) % kSlots;
+  return kSandboxUidBase + (static_cast<unsigned>(getpid()) % 1000000u) * kSlots + slot;
 }
 
-// Processes this user runs now: a user other than root shares RLIMIT_NPROC with them.
-int processesOfUser(uid_t uid) {
+// Threads this user runs now (RLIMIT_NPROC counts threads): a user other than root shares the
+// limit with them.
+int threadsOfUser(uid_t uid) {
   int count = 0;
   DIR* proc = opendir("/proc");
   if (!proc) return 0;
@@ -45,7 +47,11 @@ int processesOfUser(uid_t uid) {
     if (entry->d_name[0] < '0' || entry->d_name[0] > '9') continue;
     struct stat info;
     std::string path = std::string("/proc/") + entry->d_name;
-    if (stat(path.c_str(), &info) == 0 && info.st_uid == uid) ++count;
+    if (stat(path.c_str(), &info) != 0 || info.st_uid != uid) continue;
+    DIR* tasks = opendir((path + "/task").c_str());
+    if (!tasks) continue;
+    while (dirent* task = readdir(tasks)) count += task->d_name[0] != '.';
+    closedir(tasks);
   }
   closedir(proc);
   return count;
@@ -73,8 +79,8 @@ std::vector<std::string> bubblewrapArguments(const SandboxJob& job) {
   return args;
 }
 
-void setLimit(int resource, rlim_t value) {
-  struct rlimit limit = {value, value};
+void setLimit(int resource, rlim_t value, rlim_t hardSlack = 0) {
+  struct rlimit limit = {value, value + hardSlack};
   setrlimit(resource, &limit);
 }
 
@@ -82,7 +88,8 @@ void setLimit(int resource, rlim_t value) {
 [[noreturn]] void startChild(char* const* argv, const SandboxLimits& limits, int in, int out,
                              int err, bool switchUser, unsigned uid, rlim_t processLimit) {
   setsid();
-  setLimit(RLIMIT_CPU, static_cast<rlim_t>(limits.cpuSeconds + 0.5));
+  // SIGXCPU at the soft limit says what happened; SIGKILL a second later if it is ignored.
+  setLimit(RLIMIT_CPU, static_cast<rlim_t>(limits.cpuSeconds + 0.5), 1);
   setLimit(RLIMIT_AS, static_cast<rlim_t>(limits.memoryBytes));
   setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.fileBytes));
   setLimit(RLIMIT_CORE, 0);
@@ -193,7 +200,7 @@ SandboxResult runSandboxed(const SandboxJob& job) {
   unsigned uid = switchUser ? sandboxUid() : static_cast<unsigned>(getuid());
   // The sandbox's processes: bubblewrap, its pid 1, and the program's own.
   rlim_t processLimit = static_cast<rlim_t>(job.limits.processes + 2) +
-                        (switchUser ? 0 : static_cast<rlim_t>(processesOfUser(getuid())));
+                        (switchUser ? 0 : static_cast<rlim_t>(threadsOfUser(getuid())));
   if (switchUser && !job.outputDir.empty() && chown(job.outputDir.c_str(), uid, uid) != 0) {
     result.error = job.outputDir + ": cannot hand it to the sandbox: " + std::strerror(errno);
     return result;

@@ -1,17 +1,18 @@
 // submission.cpp: finding, copying and building a submission (submission.h).
 #include "grader/submission.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -147,24 +148,73 @@ fs::path findPhysics(const fs::path& root) {
   return best;
 }
 
-// The files of `folder` to compile, physics.cpp first.
+// Whether `text` calls or defines a function main: the word, then blanks, then '('. A plain
+// scan: a pattern would recurse once per blank, and a file of blanks would crash the grader.
+bool hasMain(const std::string& text) {
+  for (std::size_t at = text.find("main"); at != std::string::npos;
+       at = text.find("main", at + 1)) {
+    bool wordStart =
+        at == 0 || !(std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_');
+    std::size_t next = at + 4;
+    while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+    if (wordStart && next < text.size() && text[next] == '(') return true;
+  }
+  return false;
+}
+
+// A name the compiler can only take for a file: letters, digits, '.', '_', '-', not first '-'.
+bool plainName(const std::string& name) {
+  if (name.empty() || name[0] == '-') return false;
+  for (char c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-')
+      return false;
+  }
+  return true;
+}
+
+// The files of `folder` to compile, physics.cpp first, each as "./NAME" (never an option).
 std::vector<std::string> compiledFiles(const fs::path& folder, std::vector<std::string>& notes) {
-  static const std::regex mainFunction(R"(\bmain\s*\()");
-  std::vector<std::string> files = {"physics.cpp"};
+  std::vector<std::string> files = {"./physics.cpp"};
   for (auto& entry : fs::directory_iterator(folder)) {
     std::string name = entry.path().filename().string();
     if (!entry.is_regular_file() || name == "physics.cpp" ||
         !kCompiledExtensions.count(entry.path().extension().string())) {
       continue;
     }
-    if (kViewerFiles.count(name) || std::regex_search(readWhole(entry.path()), mainFunction)) {
+    if (!plainName(name)) {
+      notes.push_back(
+          printable(name) +
+          ": left out (a name of other characters than letters, digits, '.', '_' and '-')");
+    } else if (kViewerFiles.count(name) || hasMain(readWhole(entry.path()))) {
       notes.push_back(name + ": left out (the course's viewer, or a main())");
-      continue;
+    } else {
+      files.push_back("./" + name);
     }
-    files.push_back(name);
   }
   std::sort(files.begin() + 1, files.end());
   return files;
+}
+
+// Copies the program the sandbox built to `to`: only a regular file, never through a link the
+// sandbox may have put in its place. False when there is none.
+bool copyBuiltProgram(const std::string& from, const std::string& to) {
+  int in = open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  struct stat info;
+  if (in < 0) return false;
+  bool ok = fstat(in, &info) == 0 && S_ISREG(info.st_mode) && info.st_size < (256 << 20);
+  std::string bytes;
+  char buffer[1 << 16];
+  for (ssize_t n; ok && (n = read(in, buffer, sizeof buffer)) != 0;) {
+    if (n < 0)
+      ok = false;
+    else
+      bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(in);
+  if (!ok) return false;
+  writeText(to, bytes);
+  fs::permissions(to, fs::perms(0755));
+  return true;
 }
 
 // The first line of the compiler's output that says what is wrong, without sandbox paths.
@@ -179,6 +229,7 @@ std::string firstError(const std::string& log) {
           line.erase(at, std::strlen(prefix));
         }
       }
+      if (line.rfind("./", 0) == 0) line.erase(0, 2);  // the files are given as ./NAME
       return line.size() > 300 ? line.substr(0, 300) + "..." : line;
     }
   }
@@ -279,9 +330,7 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
     SandboxResult compiled = runSandboxed(job);
     result.log += "--- with " + std::string(attempt.headers) + ": " + compiled.describe() + "\n" +
                   compiled.errors + compiled.output;
-    if (compiled.exitedWith(0)) {
-      fs::copy_file(out + "/probe", probePath, fs::copy_options::overwrite_existing);
-      fs::permissions(probePath, fs::perms(0755));
+    if (compiled.exitedWith(0) && copyBuiltProgram(out + "/probe", probePath)) {
       result.built = true;
       result.headers = attempt.headers;
       break;

@@ -133,6 +133,10 @@ TEST(Grader, PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWor
            "segfault/rest (FAIL): computeAcceleration was killed by signal 11",
            "never-returns/rest (FAIL): computeAcceleration did not finish in time",
            "never-returns/structural (FAIL): not run",
+           "dampers-some/dampers (FAIL): no damping on the spring at offset (1,1,0)",
+           "rk4-global/rk4 (FAIL): every stage of RK4 gets the accelerations of the start",
+           "nan-inside/walls (FAIL): wall x = -2: NaN or infinity in the accelerations",
+           "nan-inside/euler (FAIL): computeAcceleration gave NaN or infinity",
        }) {
     EXPECT_NE(summary.find(line), std::string::npos) << line;
   }
@@ -267,6 +271,13 @@ TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
         std::string(name) == "glut" ? "#include <GL/glut.h>\n" : "#include \"pic.h\"\n";
     writeText(root + "/" + name + "/jello.h", first + jello::grader::kCourseJelloH);
   }
+  // File names the compiler must not take for options, and a file that would make a pattern
+  // search for main( recurse 200,000 times.
+  fs::create_directories(root + "/odd-names");
+  writeText(root + "/odd-names/physics.cpp", physics);
+  writeText(root + "/odd-names/@options.cpp", "-wrapper /bin/sh,-c,touch\\ /out/pwned\n");
+  writeText(root + "/odd-names/-o.cpp", "int notCompiled = ;\n");
+  writeText(root + "/odd-names/blank.cpp", "/* main" + std::string(200000, ' ') + "*/\n");
   // The correct folder as a .tar.gz and a .zip, inside a folder of its own as students pack it.
   fs::create_directories(root + "/pack/alice");
   fs::copy_file(kSubmissions + "/correct/physics.cpp", root + "/pack/alice/physics.cpp");
@@ -284,6 +295,7 @@ TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
                                    "--checks",
                                    "rest",
                                    root + "/glut",
+                                   root + "/odd-names",
                                    root + "/missing-pic",
                                    root + "/alice.tar.gz"};
   if (zip) args.push_back(root + "/bob.zip");
@@ -295,8 +307,11 @@ TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
       readText(report + "/glut/report.md").find(gl ? "built with its own headers" : courseJello),
       std::string::npos);
   EXPECT_NE(readText(report + "/missing-pic/report.md").find(courseJello), std::string::npos);
+  std::string odd = readText(report + "/odd-names/report.md");
+  EXPECT_NE(odd.find("@options.cpp: left out"), std::string::npos) << odd;
+  EXPECT_NE(odd.find("-o.cpp: left out"), std::string::npos) << odd;
   auto grades = readSummary(report);
-  for (const char* name : {"glut", "missing-pic", "alice", "bob"}) {
+  for (const char* name : {"glut", "missing-pic", "odd-names", "alice", "bob"}) {
     if (std::string(name) == "bob" && !zip) continue;
     EXPECT_EQ(grades[name]["builds"], "pass") << name;
     EXPECT_EQ(grades[name]["rest"], "pass") << name;
