@@ -107,8 +107,10 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
     if (!why.empty()) throw std::runtime_error(why);
   }
   Scratch work;  // the built programs, trusted: never shown to a sandbox but by copy
-  std::cerr << textf("grading %zu submissions, %d at a time; unseen worlds from seed %llu\n",
-                     submissions.size(), jobs, static_cast<unsigned long long>(setup.seed));
+  jobs = std::max(1, std::min(jobs, static_cast<int>(submissions.size())));
+  std::cerr << textf("grading %zu submission%s, %d at a time; unseen worlds from seed %llu\n",
+                     submissions.size(), submissions.size() == 1 ? "" : "s", jobs,
+                     static_cast<unsigned long long>(setup.seed));
   std::vector<Graded> graded(submissions.size());
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
