@@ -8,9 +8,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "core/output.h"
 #include "world.h"
@@ -60,6 +62,54 @@ inline const CLI::Validator kNonEmpty = CLI::Validator(
     [](std::string& text) -> std::string { return text.empty() ? "an empty name" : std::string(); },
     "");
 
+// Edits (insertions, deletions, substitutions) from a to b: how far a typed name is from an
+// option's.
+inline std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The option of `app` a mistyped `name` most likely meant ("--step" -> "--steps"), or "" when
+// none is near: within two edits, or one name the start of the other.
+inline std::string nearestOption(const CLI::App& app, const std::string& name) {
+  constexpr std::size_t kMostEdits = 2;
+  std::string best;
+  std::size_t bestEdits = kMostEdits + 1;
+  for (const CLI::Option* option : app.get_options()) {
+    for (const std::string& longName : option->get_lnames()) {
+      const std::string candidate = "--" + longName;
+      const bool prefix =
+          name.size() > 3 && (candidate.rfind(name, 0) == 0 || name.rfind(candidate, 0) == 0);
+      const std::size_t edits = prefix ? 1 : editDistance(name, candidate);
+      if (edits < bestEdits) best = candidate, bestEdits = edits;
+    }
+  }
+  return best;
+}
+
+// The line for arguments nobody asked for: an unknown option is named, with the option it most
+// likely meant; anything else is CLI11's own line.
+inline std::string extrasMessage(const CLI::App& app, const CLI::ExtrasError& e) {
+  for (const std::string& extra : app.remaining()) {
+    if (extra.size() < 2 || extra[0] != '-') continue;
+    const std::string name = extra.substr(0, extra.find('='));
+    const std::string meant = nearestOption(app, name);
+    return name + ": no such option" +
+           (meant.empty() ? std::string() : "; did you mean " + meant + "?");
+  }
+  return e.what();
+}
+
 // Parses the command line. --help and --version print and set *status to 0; an error prints
 // one line "NAME: what (see NAME --help)" and sets *status to 2. Returns true when the program
 // should go on.
@@ -71,6 +121,9 @@ inline bool parseCommandLine(CLI::App& app, int argc, const char* const* argv, i
     *status = app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     *status = app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    printError(extrasMessage(app, e) + " (see " + app.get_name() + " --help)");
+    *status = 2;
   } catch (const CLI::ParseError& e) {
     printError(std::string(e.what()) + " (see " + app.get_name() + " --help)");
     *status = 2;

@@ -50,11 +50,11 @@ struct Given {
       *kernelOption;
   CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
       *checkOption;
-  CLI::Option *jsonOption, *mapOption, *benchOption;
+  CLI::Option *jsonOption, *mapOption, *benchOption, *fpsOption, *worldOption;
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
-  app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
+  g->worldOption = app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
   app.add_flag("--headless", c->headless, "run without a window");
   g->stepsOption =
       app.add_option("--steps", g->steps, "steps to run headless (default 300 frames of n steps)")
@@ -98,8 +98,15 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
 void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
   g->framesOption =
       app.add_option("--frames", c->pictures.framesDir,
-                     "save JPEG frames DIR/0000.jpg, 0001.jpg, ... one per drawn frame")
+                     "save JPEG frames DIR/0000.jpg, 0001.jpg, ... (--fps a simulated second)")
           ->check(kNonEmpty);
+  g->fpsOption =
+      app.add_option("--fps", c->pictures.fps,
+                     "frames saved per simulated second, with --frames or the window's "
+                     "recording (default 30); 0: one per drawn frame, every n steps, as the "
+                     "course's viewer")
+          ->transform(
+              finiteNumber("from 0 to 1e6", [](double v) { return v >= 0 && v <= kMaxFps; }));
   app.add_option("--max-frames", c->pictures.maxFrames,
                  "save at most this many frames (default 300)")
       ->transform(wholeNumber(1, kMaxFrames));
@@ -163,6 +170,9 @@ int chooseMode(const Given& g, JelloCommand* c) {
     return refuse("--json goes with --check alone, not with --map");
   if (*g.integratorsOption && !*g.reportOption) return refuse("--integrators goes with --report");
   if (*g.toleranceOption && !*g.reportOption) return refuse("--tolerance goes with --report");
+  const bool analysis = *g.benchOption || *g.checkOption || *g.reportOption;
+  if (*g.fpsOption && (analysis || (c->headless && !*g.framesOption)))
+    return refuse("--fps goes with --frames (or the window, where space records)");
   if (*g.benchOption)
     c->mode = JelloCommand::Mode::Bench;
   else if (*g.checkOption)
@@ -196,6 +206,7 @@ int readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.dtOption) run.dt = g.dt;
   if (*g.nOption) run.n = g.n;
   if (*g.dumpOption) run.dumpPath = g.dump;
+  run.worldDefaulted = g.worldOption->count() == 0;
   c->framesGiven = g.framesOption->count() > 0;
   if (*g.sizeOption && !parseSize(g.size, &c->pictures.width, &c->pictures.height))
     return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) +

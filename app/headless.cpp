@@ -54,7 +54,12 @@ class RunProgress {
     }
     line_.show(text);
   }
-  void finish() { line_.finish(); }
+  // The last line says the run is done, then ends: the summary starts a line of its own.
+  void finish(long long total) {
+    if (line_.shown())
+      line_.show(textf("step %lld/%lld (100%%) in %.1f s", total, total, secondsSince(start_)));
+    line_.finish();
+  }
 
  private:
   static constexpr double kQuietSeconds = 1.0;
@@ -86,14 +91,23 @@ long long nextMultiple(long long done, long long every) {
   return every > 0 ? (done / every + 1) * every : done + 1;
 }
 
-// How many steps the run takes: --steps, --time, or 300 frames of n steps. Fails, saying why,
-// when the run is refused.
-Outcome stepsOfRun(const RunOptions& options, const World& world, long long* steps) {
+// How many steps the run takes: --steps, --time, or by default 300 frames of n steps, or, when
+// frames are saved by simulated time, --max-frames of them. Fails, saying why, when the run is
+// refused.
+Outcome stepsOfRun(const RunOptions& options, const World& world, const FrameObserver* frames,
+                   long long* steps) {
+  const bool byTime = frames && frames->options().fps > 0;
+  std::string length = "300 frames of n steps";
   *steps = kDefaultFrames * world.n;
+  if (byTime) {
+    const PictureOptions& pictures = frames->options();
+    *steps = FrameClock(pictures.fps, world.n, world.dt).stepsForFrames(pictures.maxFrames);
+    length = textf("%d frames at %g a simulated second", pictures.maxFrames, pictures.fps);
+  }
   if (!options.steps && !options.time && *steps > kMostDefaultSteps) {
-    return failed(options.worldPath + ": n = " + std::to_string(world.n) +
-                  " makes the default run (300 frames of n steps) " + std::to_string(*steps) +
-                  " steps long; say how long with --steps N or --time T, or lower n with --n");
+    return failed(options.worldPath + ": the default run (" + length + ") would be " +
+                  std::to_string(*steps) + " steps long; say how long with --steps N or --time T" +
+                  (byTime ? ", or save fewer frames with --max-frames" : ", or lower n with --n"));
   }
   if (options.steps) *steps = *options.steps;
   if (options.time) {
@@ -145,6 +159,15 @@ void printSummary(const RunOptions& options, const World& world, long long steps
   std::fflush(stdout);
 }
 
+// Said when --max-frames stopped the saving before the run's end.
+std::string frameLimitNote(const PictureOptions& pictures, double savedUntil, double runTime) {
+  return textf(
+      "note: %s/: saving stopped at %d frames, the most --max-frames %d allows, at %.3g s of the "
+      "run's %.3g s; raise --max-frames (up to %d) or lower --fps to save the whole run",
+      pictures.framesDir.c_str(), pictures.maxFrames, pictures.maxFrames, savedUntil, runTime,
+      kMaxFrames);
+}
+
 }  // namespace
 
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
@@ -168,6 +191,11 @@ Outcome loadRun(const RunOptions& options, WorldFile* out) {
   try {
     *out = readWorldFile(options.worldPath);
   } catch (const WorldFileError& e) {
+    struct stat info;
+    if (options.worldDefaulted && ::stat(options.worldPath.c_str(), &info) != 0)
+      return failed(std::string(e.what()) +
+                    " (no WORLD was named, and this default is found only from the project's "
+                    "folder; name one: jello path/to/world.w)");
     return failed(e.what());
   }
   World& world = out->world;
@@ -182,7 +210,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   long long steps = 0;
-  if (Outcome counted = stepsOfRun(options, world, &steps); !counted.ok()) return counted;
+  if (Outcome counted = stepsOfRun(options, world, frames, &steps); !counted.ok()) return counted;
   if (options.dumpPath) {
     std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
     if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
@@ -206,20 +234,27 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
                   ? "; --kernel general computes every term at every point anyway"
                   : "");
   // In stretches that end where a frame is due or the progress line may be redrawn.
-  const long long frameEvery = frames ? world.n : steps;
+  const FrameClock clock(frames ? frames->options().fps : 0, world.n, world.dt);
+  long long nextFrame = frames ? clock.nextAfter(0) : steps;
+  long long lastFrame = 0;  // the step of the last frame saved
   while (simulation.step() < steps) {
     const long long done = simulation.step();
-    const long long stop =
-        std::min({steps, nextMultiple(done, kProgressEvery), nextMultiple(done, frameEvery)});
+    const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextFrame});
     const RunOutcome outcome = simulation.advance(stop - done);
     if (!outcome.ran()) return runFailure(options, world, file.state, outcome);
-    if (frames && simulation.step() % world.n == 0 && frames->wantsMore()) {
-      if (Outcome shown = observed(showFrame); !shown.ok()) return shown;
+    if (frames && simulation.step() == nextFrame) {
+      nextFrame = clock.nextAfter(nextFrame);
+      if (frames->wantsMore()) {
+        if (Outcome shown = observed(showFrame); !shown.ok()) return shown;
+        lastFrame = simulation.step();
+      }
     }
     progress.update(simulation.step());
   }
-  progress.finish();
+  progress.finish(steps);
   printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
+  if (frames && !frames->wantsMore() && lastFrame < steps)
+    printError(frameLimitNote(frames->options(), lastFrame * world.dt, steps * world.dt));
 
   if (options.dumpPath) {
     try {

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "app/pictures.h"
 #include "core/outcome.h"
 #include "physics.h"
 #include "solver/integrators.h"
@@ -15,6 +16,7 @@ namespace jello {
 // What the command line asks of a run; unset values come from the world file.
 struct RunOptions {
   std::string worldPath;
+  bool worldDefaulted = false;     // no WORLD was named: worldPath is jello's default
   std::optional<long long> steps;  // --steps N
   std::optional<double> time;      // --time T, seconds
   std::optional<Integrator> integrator;
@@ -30,16 +32,20 @@ constexpr int kExitOk = 0;
 constexpr int kExitDiverged = 1;
 constexpr int kExitBadInput = 2;
 
-// The default length of a run: 300 drawn frames of n steps each.
+// The default length of a run: 300 drawn frames of n steps each, or, when frames are saved by
+// simulated time (--fps), as long as --max-frames of them take.
 constexpr long long kDefaultFrames = 300;
 // A default run longer than this (n above 100,000) is refused rather than started: at about
 // 100 us an RK4 step it would take most of an hour, which nobody asks for without saying so.
 constexpr long long kMostDefaultSteps = 30'000'000;
 
-// Receives the frames a viewer would draw: the state at step 0 and after every n steps.
+// Receives the frames to save: the state at step 0 and at the steps of a FrameClock
+// (pictures.h) made from the observer's options.
 class FrameObserver {
  public:
   virtual ~FrameObserver() = default;
+  // What was asked of the pictures: --fps, --max-frames, the folder.
+  virtual const PictureOptions& options() const = 0;
   // Called once before the first frame (e.g. to claim the output folder). Throws
   // std::runtime_error with a one-line message to stop the run with exit status 2.
   virtual void begin() {}
@@ -64,7 +70,8 @@ std::string tooManyStepsMessage(double time, double dt);
 // that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
 
-// Reads the world of `options` and applies its overrides. Fails, saying why, on bad input.
+// Reads the world of `options` and applies its overrides. Fails, saying why, on bad input; a
+// default world that is missing is said to be the default, with how to name one.
 Outcome loadRun(const RunOptions& options, WorldFile* out);
 
 // Loads the world, runs it (handing its frames to `frames` when given) and prints the summary

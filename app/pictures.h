@@ -2,6 +2,8 @@
 // --overwrite), apart from how they are made (graphics/, a library loaded only when needed).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace jello {
@@ -10,15 +12,50 @@ constexpr int kMinPictureSize = 16;  // pixels a side
 constexpr int kMaxPictureSize = 8192;
 constexpr int kDefaultMaxFrames = 300;
 constexpr int kFrameDigits = 4;
-constexpr int kMaxFrames = 10000;  // what four digits can number
+constexpr int kMaxFrames = 10000;   // what four digits can number
+constexpr double kDefaultFps = 30;  // saved frames per simulated second
+constexpr double kMaxFps = 1e6;
 
 // How pictures are made and kept.
 struct PictureOptions {
   std::string framesDir;  // where frames go
   int maxFrames = kDefaultMaxFrames;
+  double fps = kDefaultFps;  // saved frames per simulated second; 0: one per drawn frame (n steps)
   bool overwrite = false;
   bool saveFromStart = false;  // the window saves from its first frame (--frames was given)
   int width = 640, height = 480;
+};
+
+// The steps at which frames are saved: frame k at the first step at or past k / fps simulated
+// seconds (a frame of time t shows the state at the step ending nearest after t), or, with fps
+// 0, every n steps (the course's: a frame per drawn frame). Never two frames of one step: when
+// fps * dt > 1 the frames are as many as the steps.
+class FrameClock {
+ public:
+  FrameClock(double fps, int n, double dt) : fps_(fps), n_(n), dt_(dt) {}
+
+  // The step of the next frame due after `step` (step 0's frame is the first).
+  long long nextAfter(long long step) const {
+    if (fps_ <= 0) return (step / n_ + 1) * n_;
+    // Frames at k / fps; the first k past step * dt * fps. The factor keeps a step that is a
+    // frame's time up to rounding (0.1 s at dt 0.001 and 10 fps) that frame's step.
+    const double next = std::floor(step * dt_ * fps_ * (1 + kRounding)) + 1;
+    const double at = std::ceil(next / (dt_ * fps_) * (1 - kRounding));
+    return std::max(step + 1, static_cast<long long>(std::min(at, kMostSteps)));
+  }
+  // The steps of the first `frames` frames (frame 0 at step 0): a default run's length.
+  long long stepsForFrames(int frames) const {
+    long long step = 0;
+    for (int k = 1; k < frames; ++k) step = nextAfter(step);
+    return step;
+  }
+
+ private:
+  static constexpr double kRounding = 1e-12;
+  static constexpr double kMostSteps = 9e18;  // below LLONG_MAX: the cast is defined
+  double fps_;
+  int n_;
+  double dt_;
 };
 
 }  // namespace jello

@@ -14,7 +14,7 @@ Progress::Progress() : enabled_(::isatty(STDERR_FILENO) == 1) {}
 Progress::~Progress() { finish(); }
 
 void Progress::finish() {
-  if (width_ > 0) std::fprintf(stderr, "\r%*s\r", static_cast<int>(width_), "");
+  if (width_ > 0) std::fputc('\n', stderr);
   width_ = 0;
 }
 

@@ -1,7 +1,8 @@
 // progress.h: the one progress line of a long piece of work (a headless run, a report, a
 // stability map) on stderr. It is rewritten in place (a carriage return, no newline) and shown
-// only when stderr is a terminal: a log or a pipe never holds one. It is wiped when the
-// Progress object goes, so the object lives exactly as long as the work it reports on.
+// only when stderr is a terminal: a log or a pipe never holds one. It ends with a newline when
+// the Progress object goes (or at finish()), so what the work prints next starts a line of its
+// own, and the last state of the work stays readable above it.
 #pragma once
 
 #include <cstddef>
@@ -20,8 +21,11 @@ class Progress {
   bool enabled() const { return enabled_; }
   // Replaces the line shown with `line` (one line, no newline).
   void show(const std::string& line);
-  // Wipes the line now, before the work prints its results; the destructor does it otherwise.
+  // Ends the line shown (if any) with a newline, before the work prints its results; the
+  // destructor does it otherwise. Show the work's final state first.
   void finish();
+  // True when a line is shown and not yet ended.
+  bool shown() const { return width_ > 0; }
 
  private:
   bool enabled_;

@@ -76,12 +76,14 @@ namespace {
 class OffscreenFrames : public FrameObserver {
  public:
   explicit OffscreenFrames(const PictureOptions& pictures)
-      : renderer_(pictures.width, pictures.height),
+      : options_(pictures),
+        renderer_(pictures.width, pictures.height),
         sequence_(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {}
 
+  const PictureOptions& options() const override { return options_; }
   void begin() override { sequence_.open(); }
   void frame(const Model& model, const State& state) override {
-    sequence_.save(renderer_.render(model, state, camera_, options_));
+    sequence_.save(renderer_.render(model, state, camera_, draw_));
   }
   bool wantsMore() const override { return !sequence_.full(); }
   int framesDone() const override { return sequence_.written(); }
@@ -90,10 +92,11 @@ class OffscreenFrames : public FrameObserver {
   }
 
  private:
+  PictureOptions options_;
   OffscreenRenderer renderer_;
   FrameSequence sequence_;
   Camera camera_;
-  DrawOptions options_;
+  DrawOptions draw_;
 };
 
 }  // namespace
