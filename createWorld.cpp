@@ -87,7 +87,7 @@ std::vector<std::string> optionsShaping(jello::WorldProblem::Part part, const CL
       names = {"--plane"};
       break;
     case Part::Field:
-      names = {"--field-uniform", "--field-swirl", "--field-radial", "--field-expr"};
+      names = {"--field-uniform", "--gravity", "--field-swirl", "--field-radial", "--field-expr"};
       break;
     case Part::Position:
       names = {"--cube-size", "--center", "--rotate", "--skew-corner"};
@@ -135,9 +135,10 @@ struct Options {
               *noPlaneOption = nullptr;
 
   int resolution = 0;
-  std::vector<double> uniform;
+  std::vector<double> uniform, gravity;
   double swirl = 0, radial = 0;
   std::string expression, fieldFrom;
+  CLI::Option* gravityOption = nullptr;
   CLI::Option *resolutionOption = nullptr, *uniformOption = nullptr, *swirlOption = nullptr,
               *radialOption = nullptr, *expressionOption = nullptr, *fieldFromOption = nullptr;
   std::vector<CLI::Option*> fieldSources;  // the options that each give the whole field
@@ -224,6 +225,14 @@ void addFieldOptions(CLI::App& app, Options& o) {
                         ->expected(3)
                         ->transform(kFinite)
                         ->group("Force field");
+  o.gravityOption =
+      app.add_option("--gravity", o.gravity,
+                     "uniform acceleration GX GY GZ, m/s^2 (e.g. 0 0 -9.8): written as the "
+                     "uniform force mass x g")
+          ->type_name("GX GY GZ")
+          ->expected(3)
+          ->transform(kFinite)
+          ->group("Force field");
   o.swirlOption = app.add_option("--field-swirl", o.swirl, "swirl about z: F = S (-y, x, 0)")
                       ->type_name("S")
                       ->transform(kFinite)
@@ -239,8 +248,8 @@ void addFieldOptions(CLI::App& app, Options& o) {
   o.fieldFromOption = app.add_option("--field-from", o.fieldFrom, "copy the field of WORLD")
                           ->type_name("WORLD")
                           ->group("Force field");
-  o.fieldSources = {o.uniformOption, o.swirlOption, o.radialOption, o.expressionOption,
-                    o.fieldFromOption};
+  o.fieldSources = {o.uniformOption, o.gravityOption,    o.swirlOption,
+                    o.radialOption,  o.expressionOption, o.fieldFromOption};
   for (CLI::Option* a : o.fieldSources)
     for (CLI::Option* b : o.fieldSources)
       if (a != b) a->excludes(b);
@@ -329,8 +338,9 @@ jello::Outcome applyParameters(const Options& o, jello::World& w) {
   return jello::succeeded();
 }
 
-// The Force field options, applied to `field`.
-jello::Outcome applyField(const Options& o, jello::FieldRecipe& field) {
+// The Force field options, applied to `field`; `mass` (kg, a point's) turns --gravity into a
+// force.
+jello::Outcome applyField(const Options& o, double mass, jello::FieldRecipe& field) {
   using Source = jello::FieldRecipe::Source;
   bool newSource = false;
   for (CLI::Option* option : o.fieldSources) newSource = newSource || option->count() > 0;
@@ -351,6 +361,10 @@ jello::Outcome applyField(const Options& o, jello::FieldRecipe& field) {
   if (*o.uniformOption) {
     field.source = Source::Uniform;
     field.uniform = toVec3(o.uniform);
+  }
+  if (*o.gravityOption) {
+    field.source = Source::Uniform;
+    field.uniform = mass * toVec3(o.gravity);
   }
   if (*o.swirlOption) {
     field.source = Source::Swirl;
@@ -428,7 +442,8 @@ jello::Outcome createWorld(const Options& o, const CLI::App& app) {
   jello::setWorldUse(jello::WorldUse::Create);
   jello::Recipe recipe = startingRecipe(o);
   if (jello::Outcome applied = applyParameters(o, recipe.world); !applied.ok()) return applied;
-  if (jello::Outcome applied = applyField(o, recipe.field); !applied.ok()) return applied;
+  if (jello::Outcome applied = applyField(o, recipe.world.mass, recipe.field); !applied.ok())
+    return applied;
   applyState(o, recipe.state);
   recipe.world.field = takeField(recipe.field);
   const jello::State initial = jello::buildState(recipe.state);

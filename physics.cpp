@@ -16,7 +16,8 @@ namespace {
 // The field as a specialised scene computes it, or why it is left out.
 void addField(const World& world, KernelChoice choice, Scene* scene) {
   if (choice == KernelChoice::General) {
-    scene->terms.push_back(std::make_unique<FieldTerm>(world.field, FieldTerm::Method::Reference));
+    scene->terms.push_back(
+        std::make_unique<FieldTerm>(world.field, world.mass, FieldTerm::Method::Reference));
     return;
   }
   switch (fieldUse(world.field)) {
@@ -27,11 +28,13 @@ void addField(const World& world, KernelChoice choice, Scene* scene) {
       scene->leftOut.push_back("field (all zero)");
       return;
     case FieldUse::Uniform:
-      scene->terms.push_back(std::make_unique<FieldTerm>(world.field, FieldTerm::Method::Uniform));
+      scene->terms.push_back(
+          std::make_unique<FieldTerm>(world.field, world.mass, FieldTerm::Method::Uniform));
       return;
     case FieldUse::Trilinear:
       // A field the scene calls trilinear has R >= 2: one node would be uniform.
-      scene->terms.push_back(std::make_unique<FieldTerm>(world.field, FieldTerm::Method::Padded));
+      scene->terms.push_back(
+          std::make_unique<FieldTerm>(world.field, world.mass, FieldTerm::Method::Padded));
       return;
   }
 }

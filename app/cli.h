@@ -80,11 +80,12 @@ inline std::size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 // The option of `app` a mistyped `name` most likely meant ("--step" -> "--steps"), or "" when
-// none is near: within two edits, or one name the start of the other.
+// none is near: one edit in four characters (at most two; "--fast" is not "--fps"), or one
+// name the start of the other.
 inline std::string nearestOption(const CLI::App& app, const std::string& name) {
-  constexpr std::size_t kMostEdits = 2;
+  const std::size_t mostEdits = std::clamp<std::size_t>(name.size() / 4, 1, 2);
   std::string best;
-  std::size_t bestEdits = kMostEdits + 1;
+  std::size_t bestEdits = mostEdits + 1;
   for (const CLI::Option* option : app.get_options()) {
     for (const std::string& longName : option->get_lnames()) {
       const std::string candidate = "--" + longName;

@@ -131,7 +131,8 @@ Block3 fieldJacobian(const ForceField& field, Vec3 p) {
   return gradientAt(field.forces.data(), field.resolution, p);
 }
 
-FieldTerm::FieldTerm(const ForceField& field, Method method) : field_(field), method_(method) {
+FieldTerm::FieldTerm(const ForceField& field, double mass, Method method)
+    : field_(field), method_(method), mass_(mass) {
   // The node array is the world's whole field: what trilinear() and gradientAt() index.
   JELLO_ASSERT(field.forces.size() == 3 * field_.nodes());
   // A padded field is interpolated between nodes: one node is a uniform field.
@@ -218,9 +219,13 @@ std::vector<TermLine> FieldTerm::describe(const double*) const {
   const FieldShape shape = classifyField(field_);
   std::string text = textf("R = %d, %s", field_.resolution, fieldKindName(shape.kind));
   switch (shape.kind) {
-    case FieldKind::Uniform:
-      text += textf(" F = (%.6g, %.6g, %.6g) N", shape.uniform.x, shape.uniform.y, shape.uniform.z);
+    case FieldKind::Uniform: {
+      // The acceleration too: a user thinking of g (9.8 m/s^2) writes it as a force by mistake.
+      const Vec3 a{shape.uniform.x / mass_, shape.uniform.y / mass_, shape.uniform.z / mass_};
+      text += textf(" F = (%.6g, %.6g, %.6g) N, a = F/m = (%.6g, %.6g, %.6g) m/s^2",
+                    shape.uniform.x, shape.uniform.y, shape.uniform.z, a.x, a.y, a.z);
       break;
+    }
     case FieldKind::Swirl:
       text += textf(" about z, F = %.6g (-y, x, 0) N", shape.strength);
       break;
@@ -231,8 +236,9 @@ std::vector<TermLine> FieldTerm::describe(const double*) const {
     case FieldKind::General:
       break;
   }
-  if (shape.kind != FieldKind::Zero)
-    text += textf("; |F| from %.6g to %.6g N", shape.smallest, shape.largest);
+  if (shape.kind != FieldKind::Zero && shape.kind != FieldKind::Uniform)
+    text += textf("; |F| from %.6g to %.6g N (|a| up to %.6g m/s^2)", shape.smallest, shape.largest,
+                  shape.largest / mass_);
   return {{"field", text}};
 }
 

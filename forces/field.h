@@ -61,7 +61,8 @@ class FieldTerm final : public ForceTerm {
   // of the nodes (4 doubles each, one vector operation a step), or the reference interpolation
   // on the world's nodes point by point (the general kernel).
   enum class Method { Uniform, Padded, Reference };
-  FieldTerm(const ForceField& field, Method method);
+  // `mass` (kg, each point's) only for the description: the acceleration a force gives.
+  FieldTerm(const ForceField& field, double mass, Method method);
 
   // The field acts inside the box only.
   bool mayReach(const Bounds& box) const override;
@@ -75,6 +76,7 @@ class FieldTerm final : public ForceTerm {
  private:
   FieldView field_;  // the world's nodes
   Method method_;
+  double mass_;                 // kg, a point's
   Vec3 uniform_;                // N, for Method::Uniform
   std::vector<double> padded_;  // for Method::Padded: (x, y, z, 0) a node
   double largestNode_ = 0;      // N

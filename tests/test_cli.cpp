@@ -1,11 +1,15 @@
 // The command line of ./jello (README: Running), run as a user runs it.
 #include <gtest/gtest.h>
+#include <pty.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 
+#include "app/cli.h"
 #include "app/headless.h"
+#include "app/pictures.h"
 #include "physics.h"
 #include "solver/integrators.h"
 #include "test_support.h"
@@ -204,7 +208,16 @@ TEST_P(CliUsage, ExitsTwoWithOneLine) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliUsage,
     ::testing::Values(
-        UsageCase{"unknown_option", "--headless --fast", "--fast"},
+        UsageCase{"unknown_option", "--headless --fast", "--fast: no such option (see"},
+        UsageCase{"misspelled_option", "--headless --step 100",
+                  "--step: no such option; did you mean --steps?"},
+        UsageCase{"misspelled_flag", "--headles",
+                  "--headles: no such option; did you mean --headless?"},
+        UsageCase{"single_dash", "--headless -time 1",
+                  "-time: no such option; did you mean --time?"},
+        UsageCase{"fps_without_frames", "--headless --fps 10", "--fps goes with --frames"},
+        UsageCase{"fps_with_check", "--check --fps 10", "--fps goes with --frames"},
+        UsageCase{"negative_fps", "--headless --fps -1 --frames /tmp/never", "--fps"},
         UsageCase{"steps_and_time", "--headless --steps 3 --time 1", "--time"},
         UsageCase{"negative_steps", "--headless --steps -3", "--steps"},
         UsageCase{"zero_dt", "--headless --dt 0", "--dt"},
@@ -219,6 +232,92 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
         UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& testInfo) { return std::string(testInfo.param.name); });
+
+TEST(Cli, AMissingDefaultWorldIsSaidToBeTheDefaultWithHowToNameOne) {
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = runJello("--headless", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("world/rotate.w: cannot open"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no WORLD was named"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("jello path/to/world.w"), std::string::npos) << r.err;
+  // A world the user named is not called the default.
+  r = runJello("--headless world/rotate.w", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.find("no WORLD was named"), std::string::npos) << r.err;
+  test::removeTree(dir);
+}
+
+TEST(Cli, OptionNamesAnEditInFourCharactersAwayOrAPrefixAreSuggested) {
+  EXPECT_EQ(editDistance("--step", "--steps"), 1u);
+  EXPECT_EQ(editDistance("--itnegrator", "--integrator"), 2u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  CLI::App app;
+  int value = 0;
+  for (const char* name : {"--steps", "--time", "--integrator", "--integrators", "--frames"})
+    app.add_option(name, value);
+  EXPECT_EQ(nearestOption(app, "--step"), "--steps");
+  EXPECT_EQ(nearestOption(app, "--itnegrator"), "--integrator");
+  EXPECT_EQ(nearestOption(app, "--frame"), "--frames");
+  EXPECT_EQ(nearestOption(app, "--integ"), "--integrator") << "a prefix: the first of its kind";
+  EXPECT_EQ(nearestOption(app, "--bogus"), "");
+  EXPECT_EQ(nearestOption(app, "--tim"), "--time") << "one edit in a short name";
+  EXPECT_EQ(nearestOption(app, "--fames"), "--frames");
+  EXPECT_EQ(nearestOption(app, "--tmie"), "") << "two edits in six characters are too many";
+  EXPECT_EQ(nearestOption(app, "-x"), "") << "too short to be a prefix";
+}
+
+TEST(FrameClock, FramesFallOnTheFirstStepAtOrPastEachMultipleOfOneOverFps) {
+  const FrameClock thirty(30, 1, 0.001);
+  EXPECT_EQ(thirty.nextAfter(0), 34);  // 1/30 s = 33.3 steps
+  EXPECT_EQ(thirty.nextAfter(34), 67);
+  EXPECT_EQ(thirty.nextAfter(67), 100);  // 0.1 s exactly, although 100 * 0.001 * 30 rounds
+  EXPECT_EQ(thirty.nextAfter(40), 67) << "from a step between frames";
+  EXPECT_EQ(thirty.stepsForFrames(300), 9967);
+  const FrameClock ten(10, 5, 0.001);
+  for (long long step : {0LL, 100LL, 200LL, 900LL}) EXPECT_EQ(ten.nextAfter(step), step + 100);
+  EXPECT_EQ(FrameClock(50, 1, 0.001).nextAfter(0), 20);
+  // 580 * 0.001 * 50 is 28.999999999999996: still frame 29's step, so the next is frame 30's.
+  EXPECT_EQ(FrameClock(50, 1, 0.001).nextAfter(580), 600);
+  EXPECT_EQ(FrameClock(0, 7, 0.001).nextAfter(0), 7) << "fps 0: every n steps, the course's";
+  EXPECT_EQ(FrameClock(0, 7, 0.001).nextAfter(8), 14);
+  EXPECT_EQ(FrameClock(0, 7, 0.001).stepsForFrames(300), 299 * 7);
+  EXPECT_EQ(FrameClock(2000, 1, 0.001).nextAfter(5), 6) << "never two frames of one step";
+}
+
+// What a program writes to a terminal: run under a pseudo-terminal (stdout and stderr both),
+// read to its end.
+std::string runInTerminal(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  int master = -1;
+  const pid_t child = ::forkpty(&master, nullptr, nullptr, nullptr);
+  if (child == 0) {
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  std::string out;
+  char buffer[4096];
+  for (ssize_t got; (got = ::read(master, buffer, sizeof buffer)) > 0;) out.append(buffer, got);
+  ::close(master);
+  ::waitpid(child, nullptr, 0);
+  return out;
+}
+
+TEST(Cli, InATerminalTheProgressLineEndsWithItsFinalStateAndANewlineBeforeTheSummary) {
+  // Long enough (2 s or more) for the progress line to be shown at all.
+  const std::string world = dataPath("rotate.w");
+  const std::string out =
+      runInTerminal({JELLO_BINARY, "--headless", "--kernel", "general", "--steps", "20000", world});
+  const std::size_t last = out.find("step 20000/20000 (100%) in ");
+  ASSERT_NE(last, std::string::npos) << out;
+  EXPECT_NE(out.find("step ", 0), last) << "earlier states were shown first";
+  const std::size_t summary = out.find(world + ": RK4 dt=0.001 steps=20000 ");
+  ASSERT_NE(summary, std::string::npos) << out;
+  EXPECT_GT(summary, last);
+  EXPECT_EQ(out[summary - 1], '\n') << "the summary starts a line of its own: " << out;
+}
 
 TEST(Cli, HelpAndVersion) {
   test::CommandResult help = runJello("--help");

@@ -456,6 +456,29 @@ TEST(CreateWorld, WarnsWhenTheCubeStartsOutsideTheBoxOrAcrossThePlane) {
   test::removeTree(dir);
 }
 
+TEST(CreateWorld, GravityIsWrittenAsTheForceMassTimesGAndDescribedAsBoth) {
+  std::string dir = test::makeTempDir();
+  Result r = createWorld("--mass 0.002 --gravity 0 0 -9.8 -o '" + dir + "/g.w'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const World world = readWorldFile(dir + "/g.w").world;
+  ASSERT_EQ(world.field.resolution, 30);
+  for (std::size_t n = 0; n < world.field.forces.size() / 3; n += 997) {
+    EXPECT_EQ(world.field.forces[3 * n], 0.0);
+    EXPECT_EQ(world.field.forces[3 * n + 2], 0.002 * -9.8) << "node " << n;
+  }
+  Result described = createWorld("--describe '" + dir + "/g.w'");
+  EXPECT_NE(described.out.find("F = (0, 0, -0.0196) N, a = F/m = (0, 0, -9.8) m/s^2"),
+            std::string::npos)
+      << described.out;
+  // A student's g written as a force is shown for what it does: 5017.6 m/s^2 at 1/512 kg.
+  Result force = createWorld("--describe '" + dataPath("gravity.w") + "'");
+  EXPECT_NE(force.out.find("a = F/m = (0, 0, -30.722) m/s^2"), std::string::npos) << force.out;
+  Result both = createWorld("--gravity 0 0 -9.8 --field-uniform 0 0 1 -o '" + dir + "/b.w'");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("--gravity"), std::string::npos) << both.err;
+  test::removeTree(dir);
+}
+
 TEST(Describe, RecognisesTheCourseFields) {
   const std::pair<const char*, const char*> expected[] = {
       {"rotate.w", "swirl about z, F = 0.0097"},

@@ -189,11 +189,14 @@ TEST(FrameSequence, NewFoldersAreMadeOnceEachAndNeverShared) {
 TEST(CliFrames, HeadlessFramesAreNumberedCappedAndNeverOverwritten) {
   std::string dir = test::makeTempDir();
   std::string frames = dir + "/out frames";
-  std::string args = "--headless --steps 30 --max-frames 5 --frames '" + frames + "' '" +
+  std::string args = "--headless --steps 30 --fps 0 --max-frames 5 --frames '" + frames + "' '" +
                      dataPath("rotate.w") + "'";
   test::CommandResult r = test::runJello(args);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("5 frames in " + frames + "/"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("the most --max-frames 5 allows, at 0.004 s of the run's 0.03 s"),
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(countFrames(frames), 5);
   Image first = readJpeg(frames + "/0000.jpg");
   EXPECT_EQ(first.width, 640);
@@ -215,8 +218,8 @@ TEST(CliFrames, HeadlessFramesAreNumberedCappedAndNeverOverwritten) {
 
 TEST(CliFrames, FramesOfRotateChangeOverTime) {
   std::string dir = test::makeTempDir();
-  test::CommandResult r = test::runJello("--headless --n 300 --steps 900 --frames '" + dir + "' '" +
-                                         dataPath("rotate.w") + "'");
+  test::CommandResult r = test::runJello("--headless --n 300 --fps 0 --steps 900 --frames '" + dir +
+                                         "' '" + dataPath("rotate.w") + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(countFrames(dir), 4);  // steps 0, 300, 600, 900
   Image a = readJpeg(dir + "/0000.jpg"), b = readJpeg(dir + "/0001.jpg"),
@@ -229,15 +232,44 @@ TEST(CliFrames, FramesOfRotateChangeOverTime) {
 TEST(CliFrames, WithoutADisplayItRunsHeadlessIntoANewFolderItNames) {
   std::string dir = test::makeTempDir();
   test::CommandResult r =
-      test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+      test::runJello("--steps 100 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("animation/rotate-001"), std::string::npos) << r.err;
-  EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 3);
+  EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 4);  // steps 0, 34, 67, 100: 30 a second
   test::CommandResult again =
-      test::runJello("--steps 2 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
+      test::runJello("--steps 100 '" + dataPath("rotate.w") + "'", dir, "env -u DISPLAY");
   EXPECT_EQ(again.status, 0) << again.err;
-  EXPECT_EQ(countFrames(dir + "/animation/rotate-002"), 3);
+  EXPECT_EQ(countFrames(dir + "/animation/rotate-002"), 4);
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, FramesAreSavedBySimulatedTimeAndADefaultRunIsMaxFramesOfThem) {
+  std::string dir = test::makeTempDir();
+  const std::string world = " '" + dataPath("rotate.w") + "'";
+  test::CommandResult r = test::runJello("--headless --time 1 --fps 10 --frames a" + world, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(countFrames(dir + "/a"), 11);  // 0, 0.1, ..., 1 s
+  EXPECT_EQ(r.err, "") << "all saved: nothing to say";
+  // No --steps or --time: as long as --max-frames frames take, 10 at 50 a second.
+  r = test::runJello("--headless --max-frames 10 --fps 50 --frames b" + world, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("steps=180 "), std::string::npos) << r.out;
+  EXPECT_EQ(countFrames(dir + "/b"), 10);
+  EXPECT_EQ(r.err, "");
+  test::removeTree(dir);
+}
+
+TEST(CliFrames, HittingMaxFramesIsSaidNamingTheOption) {
+  std::string dir = test::makeTempDir();
+  test::CommandResult r = test::runJello(
+      "--headless --time 1 --fps 10 --max-frames 4 --frames f '" + dataPath("rotate.w") + "'", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(countFrames(dir + "/f"), 4);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const char* part : {"f/: saving stopped at 4 frames", "--max-frames 4",
+                           "at 0.3 s of the run's 1 s", "raise --max-frames", "--fps"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing from: " << r.err;
   test::removeTree(dir);
 }
 
