@@ -207,7 +207,7 @@ void drawOverlay(const Viewer& v) {
     if (!panel.empty()) drawPanel(panel, v.width, v.height, 0, 0, 0, kPanelAlpha);
   for (const PlacedLine& line : layout.lines) {
     float r = 1, g = 1, b = 1;  // status and help: white
-    if (line.role == TextRole::Recording) g = 0.4f, b = 0.35f;
+    if (line.role == TextRole::Recording) g = 0.5f, b = 0.45f;
     if (line.role == TextRole::Message) b = 0.4f;
     if (line.role == TextRole::Standing && v.diverged) g = 0.45f, b = 0.4f;
     if (line.role == TextRole::Standing && !v.diverged) r = 0.5f, g = 0.9f;
