@@ -23,14 +23,6 @@
 
 namespace {
 
-// "world/rotate.w" -> "rotate"
-std::string worldStem(const std::string& path) {
-  std::size_t slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  std::size_t dot = name.rfind('.');
-  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
-}
-
 jello::Outcome check(const jello::JelloCommand& c) {
   jello::WorldFile file;
   if (jello::Outcome loaded = jello::loadRun(c.run, &file); !loaded.ok()) return loaded;
@@ -63,7 +55,7 @@ jello::Outcome simulate(jello::JelloCommand c) {
       return jello::runHeadless(c.run);
     }
     if (!c.framesGiven)
-      c.pictures.framesDir = jello::makeNewFolder("animation", worldStem(c.run.worldPath));
+      c.pictures.framesDir = jello::makeNewFolder("animation", jello::worldStem(c.run.worldPath));
     jello::printError("no display (" + why + "); running headless, writing frames into " +
                       c.pictures.framesDir + "/");
   }

@@ -23,8 +23,16 @@ constexpr float kJelly[3] = {0.86f, 0.18f, 0.24f};
 constexpr double kNear = 0.05, kFar = 100.0;
 constexpr int kLast = kLatticeSize - 1;
 
-// 5x7 dots per glyph, one byte per row, bit 4 the leftmost dot; ASCII 32 (space) to 95 (_).
-constexpr int kGlyphWidth = 5, kGlyphHeight = 7, kGlyphAdvance = 6;
+// The spring kinds' line colours, shown by their legend too.
+constexpr float kStructuralColour[3] = {0.2f, 0.9f, 0.95f};
+constexpr float kShearColour[3] = {0.95f, 0.85f, 0.2f};
+constexpr float kBendColour[3] = {0.85f, 0.3f, 0.9f};
+// Pushes the filled surface this far back in depth (glPolygonOffset's factor and units), so that
+// spring lines lying on it are drawn over it instead of flickering in and out of it.
+constexpr float kSurfaceOffsetFactor = 1.0f, kSurfaceOffsetUnits = 1.0f;
+
+// 5x7 dots per glyph (layout.h), one byte per row, bit 4 the leftmost dot; ASCII 32 (space) to
+// 95 (_).
 constexpr unsigned char kFont[64][kGlyphHeight] = {
     {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}, {0x04, 0x04, 0x04, 0x04, 0x04, 0x00, 0x04},
     {0x0A, 0x0A, 0x00, 0x00, 0x00, 0x00, 0x00}, {0x0A, 0x0A, 0x1F, 0x0A, 0x1F, 0x0A, 0x0A},
@@ -131,11 +139,16 @@ struct SurfaceColors {
   bool diverging = false;
 };
 
-SurfaceColors colorsFor(const Model& model, const State& state, Coloring coloring) {
-  SurfaceColors out;
-  out.color.assign(kNumPoints, Vec3{kJelly[0], kJelly[1], kJelly[2]});
-  if (coloring == Coloring::Plain) return out;
-  std::vector<double> value(kNumPoints, 0.0);
+// The coloured quantity at every point: strain (relative stretch, signed) or force (N).
+struct SurfaceValues {
+  std::vector<double> value;
+  double largest = 0;  // of the magnitudes
+};
+
+SurfaceValues valuesFor(const Model& model, const State& state, Coloring coloring) {
+  SurfaceValues out;
+  std::vector<double>& value = out.value;
+  value.assign(kNumPoints, 0.0);
   if (coloring == Coloring::Strain) {
     // Mean relative stretch of the springs meeting at each point.
     std::vector<int> count(kNumPoints, 0);
@@ -146,26 +159,38 @@ SurfaceColors colorsFor(const Model& model, const State& state, Coloring colorin
       ++count[s.a];
       ++count[s.b];
     }
-    double largest = 0;
     for (int q = 0; q < kNumPoints; ++q) {
       value[q] /= count[q];
-      largest = std::max(largest, std::fabs(value[q]));
+      out.largest = std::max(out.largest, std::fabs(value[q]));
     }
-    out.scale = niceCeiling(std::max(largest, 1e-3));
-    out.title = "STRAIN";
-    out.diverging = true;
-    for (int q = 0; q < kNumPoints; ++q) out.color[q] = divergingColor(value[q] / out.scale);
-  } else {
+  } else if (coloring == Coloring::Force) {
     std::vector<double> force(kNumCoords);
     computeForces(model, state.p(), state.v(), force.data());
-    double largest = 0;
     for (int q = 0; q < kNumPoints; ++q) {
       value[q] = length(load(force.data(), q));
-      largest = std::max(largest, value[q]);
+      out.largest = std::max(out.largest, value[q]);
     }
-    out.scale = niceCeiling(std::max(largest, 1e-6));
-    out.title = "FORCE N";
-    for (int q = 0; q < kNumPoints; ++q) out.color[q] = sequentialColor(value[q] / out.scale);
+  }
+  return out;
+}
+
+// The smallest legend scale: a cube at rest still gets a legend that means something.
+double smallestScale(Coloring coloring) { return coloring == Coloring::Strain ? 1e-3 : 1e-6; }
+
+// `heldScale` > 0 is the legend's end value; 0 fits it to this state.
+SurfaceColors colorsFor(const Model& model, const State& state, Coloring coloring,
+                        double heldScale) {
+  SurfaceColors out;
+  out.color.assign(kNumPoints, Vec3{kJelly[0], kJelly[1], kJelly[2]});
+  if (coloring == Coloring::Plain) return out;
+  const SurfaceValues values = valuesFor(model, state, coloring);
+  out.scale =
+      heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(coloring)));
+  out.diverging = coloring == Coloring::Strain;
+  out.title = out.diverging ? "STRAIN" : "FORCE N";
+  for (int q = 0; q < kNumPoints; ++q) {
+    const double t = values.value[q] / out.scale;
+    out.color[q] = out.diverging ? divergingColor(t) : sequentialColor(t);
   }
   return out;
 }
@@ -250,6 +275,8 @@ void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe
   glShadeModel(GL_SMOOTH);
   glPolygonMode(GL_FRONT_AND_BACK, wireframe ? GL_LINE : GL_FILL);
   glLineWidth(1.0f);
+  glPolygonOffset(kSurfaceOffsetFactor, kSurfaceOffsetUnits);
+  if (!wireframe) glEnable(GL_POLYGON_OFFSET_FILL);
   glBegin(GL_TRIANGLES);
   for (const auto& t : triangles)
     for (int q : t) {
@@ -258,7 +285,29 @@ void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe
       vertex(load(state.p(), q));
     }
   glEnd();
+  glDisable(GL_POLYGON_OFFSET_FILL);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+const float* springColour(SpringKind kind) {
+  switch (kind) {
+    case SpringKind::Structural:
+      return kStructuralColour;
+    case SpringKind::Shear:
+      return kShearColour;
+    case SpringKind::Bend:
+      return kBendColour;
+  }
+  return kStructuralColour;  // not reached: every kind is named above
+}
+
+// The kinds drawn, in the legend's order.
+std::vector<SpringKind> springKindsShown(const DrawOptions& options) {
+  std::vector<SpringKind> kinds;
+  if (options.structural) kinds.push_back(SpringKind::Structural);
+  if (options.shear) kinds.push_back(SpringKind::Shear);
+  if (options.bend) kinds.push_back(SpringKind::Bend);
+  return kinds;
 }
 
 void drawSprings(const Model& model, const State& state, const DrawOptions& options) {
@@ -271,9 +320,7 @@ void drawSprings(const Model& model, const State& state, const DrawOptions& opti
                  (s.kind == SpringKind::Shear && options.shear) ||
                  (s.kind == SpringKind::Bend && options.bend);
     if (!shown) continue;
-    if (s.kind == SpringKind::Structural) glColor3f(0.2f, 0.9f, 0.95f);
-    if (s.kind == SpringKind::Shear) glColor3f(0.95f, 0.85f, 0.2f);
-    if (s.kind == SpringKind::Bend) glColor3f(0.85f, 0.3f, 0.9f);
+    glColor3fv(springColour(s.kind));
     vertex(load(state.p(), s.a));
     vertex(load(state.p(), s.b));
   }
@@ -368,13 +415,9 @@ std::string formatValue(double v) {
   return text;
 }
 
-void drawLegend(const SurfaceColors& colors, int width, int height) {
-  const int barWidth = 14, barHeight = std::min(160, height / 3), scale = 2, margin = 12, gap = 6;
-  std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
-  std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
-  int labels = std::max(
-      {textWidth(top, scale), textWidth(bottom, scale), textWidth(colors.title, scale) - barWidth});
-  const int x = width - margin - labels - gap - barWidth, y = height - barHeight - 20;
+void drawLegend(const SurfaceColors& colors, const LegendLayout& legend, int width, int height) {
+  const PixelRect& bar = legend.bar;
+  const int scale = legend.scale, glyph = kGlyphHeight * scale;
   beginPixels(width, height);
   glBegin(GL_QUADS);
   const int steps = 32;
@@ -382,19 +425,40 @@ void drawLegend(const SurfaceColors& colors, int width, int height) {
     double t0 = 1 - double(i) / steps, t1 = 1 - double(i + 1) / steps;  // top is the largest
     Vec3 c0 = colors.diverging ? divergingColor(2 * t0 - 1) : sequentialColor(t0);
     Vec3 c1 = colors.diverging ? divergingColor(2 * t1 - 1) : sequentialColor(t1);
-    double y0 = y + barHeight * double(i) / steps, y1 = y + barHeight * double(i + 1) / steps;
+    double y0 = bar.y + bar.height * double(i) / steps;
+    double y1 = bar.y + bar.height * double(i + 1) / steps;
     glColor3d(c0.x, c0.y, c0.z);
-    glVertex2d(x, y0);
-    glVertex2d(x + barWidth, y0);
+    glVertex2d(bar.x, y0);
+    glVertex2d(bar.right(), y0);
     glColor3d(c1.x, c1.y, c1.z);
-    glVertex2d(x + barWidth, y1);
-    glVertex2d(x, y1);
+    glVertex2d(bar.right(), y1);
+    glVertex2d(bar.x, y1);
   }
   glEnd();
   endPixels();
-  drawText(colors.title, x, y - 22, width, height, scale, 1, 1, 1);
-  drawText(top, x + barWidth + gap, y - 2, width, height, scale, 1, 1, 1);
-  drawText(bottom, x + barWidth + gap, y + barHeight - 12, width, height, scale, 1, 1, 1);
+  std::string top = (colors.diverging ? "+" : "") + formatValue(colors.scale);
+  std::string bottom = colors.diverging ? "-" + formatValue(colors.scale) : "0";
+  drawText(colors.title, legend.colours.x, legend.colours.y, width, height, scale, 1, 1, 1);
+  drawText(top, legend.barLabelX, bar.y, width, height, scale, 1, 1, 1);
+  drawText(bottom, legend.barLabelX, bar.bottom() - glyph - scale, width, height, scale, 1, 1, 1);
+}
+
+// A swatch of each kind's line colour and its name.
+void drawSpringLegend(const DrawOptions& options, const LegendLayout& legend, int width,
+                      int height) {
+  const int scale = legend.scale, line = kLineAdvance * scale, glyph = kGlyphHeight * scale;
+  int y = legend.springs.y;
+  for (SpringKind kind : springKindsShown(options)) {
+    const float* c = springColour(kind);
+    drawPanel({legend.springs.x, y + glyph / 2 - scale,
+               legend.springLabelX - legend.springs.x - 2 * scale, 2 * scale},
+              width, height, c[0], c[1], c[2], 1);
+    const char* name = kind == SpringKind::Structural ? "STRUCTURAL"
+                       : kind == SpringKind::Shear    ? "SHEAR"
+                                                      : "BEND";
+    drawText(name, legend.springLabelX, y, width, height, scale, c[0], c[1], c[2]);
+    y += line;
+  }
 }
 
 }  // namespace
@@ -428,16 +492,36 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
   setUpCamera(camera, width, height);
 
   drawBox();
-  SurfaceColors colors = colorsFor(model, state, options.coloring);
+  SurfaceColors colors = colorsFor(model, state, options.coloring, options.colourScale);
   drawSurface(state, colors, options.wireframe);
   drawSprings(model, state, options);
   if (model.world.hasPlane) drawPlane(model.plane());
   if (pull && pull->point >= 0) drawPull(state, *pull);
-  if (options.coloring != Coloring::Plain) drawLegend(colors, width, height);
+  const bool coloured = options.coloring != Coloring::Plain;
+  const LegendLayout legend = layoutLegends(width, height, options.springKinds(), coloured);
+  if (coloured) drawLegend(colors, legend, width, height);
+  if (options.springKinds() > 0) drawSpringLegend(options, legend, width, height);
 }
 
-int textWidth(const std::string& text, int scale) {
-  return static_cast<int>(text.size()) * kGlyphAdvance * scale;
+double fittedColourScale(const Model& model, const State& state, Coloring coloring) {
+  if (coloring == Coloring::Plain) return 0;
+  return colorsFor(model, state, coloring, 0).scale;
+}
+
+void drawPanel(const PixelRect& rect, int width, int height, float r, float g, float b,
+               float alpha) {
+  beginPixels(width, height);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glColor4f(r, g, b, alpha);
+  glBegin(GL_QUADS);
+  glVertex2i(rect.x, rect.y);
+  glVertex2i(rect.right(), rect.y);
+  glVertex2i(rect.right(), rect.bottom());
+  glVertex2i(rect.x, rect.bottom());
+  glEnd();
+  glDisable(GL_BLEND);
+  endPixels();
 }
 
 void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r,

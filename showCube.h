@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "graphics/layout.h"
 #include "physics.h"
 
 namespace jello {
@@ -31,20 +32,30 @@ struct DrawOptions {
   bool wireframe = false;
   bool structural = false, shear = false, bend = false;  // springs drawn as lines
   Coloring coloring = Coloring::Plain;
+  // The value at the colour legend's end (strain, or newtons for force), held by the viewer's
+  // `f`; 0: fitted to each frame's largest value.
+  double colourScale = 0;
+  int springKinds() const { return int(structural) + int(shear) + int(bend); }
 };
 
 // Clears and draws the whole scene into a width x height viewport: the box, the cube's lit,
-// smooth-shaded surface (or its wireframe), the springs asked for, the inclined plane clipped
-// to the box, the colour legend when the surface is coloured, and the pull line when a point
-// is pulled.
+// smooth-shaded surface (or its wireframe), the springs asked for (over the surface, never
+// half-hidden in it), the inclined plane clipped to the box, the legends of the springs and the
+// colouring where layoutLegends (layout.h) puts them, and the pull line when a point is pulled.
 void drawScene(const Model& model, const State& state, const Camera& camera,
                const DrawOptions& options, int width, int height, const Pull* pull = nullptr);
 
+// The colour legend's end value that drawScene fits to `state` (a round 1, 2 or 5 times a power
+// of ten at least its largest value); 0 for Coloring::Plain.
+double fittedColourScale(const Model& model, const State& state, Coloring coloring);
+
 // Text in a small built-in bitmap font (upper case, digits, punctuation; lower case is drawn
 // as upper case), its top-left corner at pixel (x, y), `scale` pixels per font dot.
+// Its width is textWidth (layout.h).
 void drawText(const std::string& text, int x, int y, int width, int height, int scale, float r,
               float g, float b);
-// Width in pixels of `text` drawn at `scale`.
-int textWidth(const std::string& text, int scale);
+// A filled rectangle in pixels, blended with what is under it at `alpha` (0 to 1).
+void drawPanel(const PixelRect& rect, int width, int height, float r, float g, float b,
+               float alpha);
 
 }  // namespace jello

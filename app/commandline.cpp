@@ -57,10 +57,13 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
   g->worldOption = app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
   app.add_flag("--headless", c->headless, "run without a window");
   g->stepsOption =
-      app.add_option("--steps", g->steps, "steps to run headless (default 300 frames of n steps)")
+      app.add_option("--steps", g->steps,
+                     "steps to run (default: headless 300 frames of n steps, the window without "
+                     "end); the window pauses there, p runs on")
           ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
-  g->timeOption =
-      app.add_option("--time", g->time, "simulated seconds to run headless")->transform(kPositive);
+  g->timeOption = app.add_option("--time", g->time,
+                                 "simulated seconds to run; the window pauses there, p runs on")
+                      ->transform(kPositive);
   g->stepsOption->excludes(g->timeOption);
   g->integratorOption = app.add_option("--integrator", g->integrator,
                                        integratorNameList() +

@@ -26,6 +26,15 @@ struct PictureOptions {
   int width = 640, height = 480;
 };
 
+// The name new frames folders of a world are made from (makeNewFolder, core/output.h):
+// "world/rotate.w" -> "rotate".
+inline std::string worldStem(const std::string& worldPath) {
+  const std::size_t slash = worldPath.find_last_of('/');
+  std::string name = slash == std::string::npos ? worldPath : worldPath.substr(slash + 1);
+  const std::size_t dot = name.rfind('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
 // The steps at which frames are saved: frame k at the first step at or past k / fps simulated
 // seconds (a frame of time t shows the state at the step ending nearest after t), or, with fps
 // 0, every n steps (the course's: a frame per drawn frame). Never two frames of one step: when

@@ -1,6 +1,11 @@
 // viewer.cpp: the GLUT window (README: The viewer). GLUT calls back without a user pointer, so
 // the viewer's state lives in one object reached through freeglut's per-window data, not in
 // globals; the physics sees it only as arguments (the model, the state, the pull).
+//
+// GLUT and GL are used from the main thread only. The one other thread diagnoses a divergence
+// (divergenceMessage: eigen-analyses that take seconds) on copies of the world and its initial
+// state, and hands its line back through a std::future that the idle callback polls, so the
+// window keeps drawing and answering keys meanwhile.
 
 #include <GL/freeglut.h>
 #include <GL/glu.h>
@@ -9,12 +14,18 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <future>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
+#include <thread>
 
 #include "app/stability.h"
 #include "core/output.h"
+#include "forces/term.h"
 #include "graphics/graphics.h"
+#include "graphics/layout.h"
 #include "showCube.h"
 #include "solver/simulation.h"
 
@@ -24,9 +35,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kZoomStep = 0.2;          // m per z/x key press
-constexpr double kMinRadius = 0.5;         // m
-constexpr double kRadiansPerPixel = 0.01;  // camera rotation per pixel dragged
+constexpr double kZoomStep = 0.2;   // m per z/x key press
+constexpr double kMinRadius = 0.5;  // m
 constexpr double kMaxElevation = kPi / 2 - 0.01;
 constexpr int kGrabPixels = 40;            // how near the cursor a grabbed point must be
 constexpr double kMinPullStiffness = 100;  // N/m
@@ -34,7 +44,35 @@ constexpr double kMessageSeconds = 4;
 constexpr double kMaxCatchUpSeconds = 0.1;  // real-time pacing never steps more than this at once
 constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
 constexpr int kStepsBetweenClockReads = 16;       // how often real-time pacing looks at that budget
+constexpr double kRateSeconds = 0.5;              // steps per second are counted over this long
+// While nothing runs, the idle callback naps this long: the CPU goes to a diagnosis under way
+// (and to other programs), and keys are still answered well within a frame.
+constexpr auto kStillNap = std::chrono::milliseconds(10);
 constexpr int kEscape = 27;
+constexpr float kPanelAlpha = 0.6f;  // of the panels behind the help and the messages
+constexpr const char* kScreenshotPattern = "jello-window-%03d.jpg";  // in the current folder
+constexpr int kMostScreenshots = 999;
+
+// The keys, as the window's help lists them (the README's table says the same at more length).
+const std::vector<KeyLine>& keyHelp() {
+  static const std::vector<KeyLine> keys = {
+      {"RIGHT-DRAG", "turn the camera"},
+      {"LEFT-DRAG", "pull the cube (start on it)"},
+      {"Z X", "zoom in, out"},
+      {"E", "reset the camera"},
+      {"V", "wireframe"},
+      {"S H B", "springs by kind, as lines"},
+      {"C", "colour by strain, force"},
+      {"F", "hold or free colour scale"},
+      {"P", "pause, run on"},
+      {"R", "real-time pacing"},
+      {"SPACE", "record frames, stop"},
+      {"W", "save the window as a JPEG"},
+      {"? K", "this help"},
+      {"ESC", "quit"},
+  };
+  return keys;
+}
 
 double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
@@ -47,13 +85,29 @@ struct Viewer {
   Tolerances tolerances;  // RK45's, for the message when they cannot be met
   State lastGood;         // the state before the current frame's steps, shown if they diverge
   int n;
+
+  // The run's length (--steps, --time), where the window pauses once; none: it runs on.
+  std::optional<long long> endStep;
+  std::string endName;  // how the command line said it: "--time 0.5 s"
+  bool paused = false, diverged = false, ended = false, realTime = false;
+  std::future<std::string> diagnosis;  // of the divergence, while it is under way
+  std::string divergedAt;              // "diverged at step N (t=T s): reason"
+
+  // Recording (space, --frames): frames at the steps of `clock`, as a headless run saves them.
+  PictureOptions pictures;
+  std::string stem;                       // names new folders of recordings
+  std::unique_ptr<FrameSequence> frames;  // the latest recording's
+  int recordings = 0;
+  FrameClock clock;
+  bool saving = false;
+  long long nextFrame = 0;   // the step of the next frame to save while saving
   long long savedStep = -1;  // the step of the last saved frame
+  bool screenshotAsked = false;
 
   Camera camera;
   DrawOptions draw;
   int width, height;
-  bool paused = false, diverged = false, realTime = false, saving = false;
-  FrameSequence frames;
+  bool help = false;
 
   // Mouse: right-drag turns the camera, left-drag pulls the nearest surface point.
   int lastX = 0, lastY = 0;
@@ -69,7 +123,8 @@ struct Viewer {
   Clock::time_point rateStart = Clock::now();
   long long rateSteps = 0;
   double stepsPerSecond = 0;
-  std::string message;
+  std::string message;   // passing: shown kMessageSeconds
+  std::string standing;  // the run's state while it lasts: diverged, reached its end
   Clock::time_point messageTime;
 
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
@@ -79,16 +134,23 @@ struct Viewer {
         tolerances(run.tolerances),
         lastGood(file.state),
         n(file.world.n),
+        pictures(pictures),
+        stem(worldStem(run.worldPath)),
+        clock(pictures.fps, file.world.n, file.world.dt),
         width(pictures.width),
-        height(pictures.height),
-        frames(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {}
+        height(pictures.height) {}
 
   double time() const { return simulation.time(); }
   const State& state() const { return simulation.state(); }
 
+  // Every message the window shows is echoed on stderr, whole.
   void say(const std::string& text) {
     message = text;
     messageTime = Clock::now();
+    printError(text);
+  }
+  void setStanding(const std::string& text) {
+    standing = text;
     printError(text);
   }
 };
@@ -112,28 +174,131 @@ Image readWindow(int width, int height) {
   return image;
 }
 
-void drawOverlay(Viewer& v) {
-  char line[160];
-  std::snprintf(line, sizeof line, "T=%.3f S  %s  DT=%g  %.0f STEPS/S%s%s", v.time(),
-                integratorName(v.simulation.integrator()), v.simulation.dt(), v.stepsPerSecond,
-                v.realTime ? "  REAL TIME" : "", v.paused ? "  PAUSED" : "");
-  drawText(line, 8, 8, v.width, v.height, 2, 1, 1, 1);
+// ---------------------------------------------------------------------------------------------
+// The overlay.
+
+OverlayText overlayText(const Viewer& v) {
+  OverlayText text;
+  text.status.push_back(textf("T=%.3f S", v.time()));
+  text.status.push_back(
+      textf("%s DT=%g", integratorName(v.simulation.integrator()), v.simulation.dt()));
+  if (!v.paused) text.status.push_back(textf("%.0f STEPS/S", v.stepsPerSecond));
+  if (v.realTime) text.status.push_back("REAL TIME");
+  if (v.paused) text.status.push_back(v.diverged ? "DIVERGED" : "PAUSED");
+  if (!v.help) text.status.push_back("? KEYS");
+  if (v.saving)
+    text.recording = textf("SAVING %d/%d INTO %s/", v.frames->written(), v.frames->maxFrames(),
+                           v.frames->dir().c_str());
+  if (v.draw.coloring != Coloring::Plain)
+    text.colouring =
+        std::string(coloringName(v.draw.coloring)) +
+        (v.draw.colourScale > 0 ? " SCALE HELD (F FREES)" : " SCALE FITS EACH FRAME (F HOLDS)");
+  if (v.help) text.help = keyHelp();
+  text.standing = v.standing;
+  if (seconds(v.messageTime, Clock::now()) < kMessageSeconds) text.message = v.message;
+  return text;
+}
+
+void drawOverlay(const Viewer& v) {
+  const OverlayLayout layout = layoutOverlay(
+      overlayText(v), v.width, v.height, v.draw.springKinds(), v.draw.coloring != Coloring::Plain);
+  // Dark panels behind the longer texts keep them readable over the box's white lines.
+  for (const PixelRect& panel : {layout.help, layout.messages})
+    if (!panel.empty()) drawPanel(panel, v.width, v.height, 0, 0, 0, kPanelAlpha);
+  for (const PlacedLine& line : layout.lines) {
+    float r = 1, g = 1, b = 1;  // status and help: white
+    if (line.role == TextRole::Recording) g = 0.5f, b = 0.45f;
+    if (line.role == TextRole::Message) b = 0.4f;
+    if (line.role == TextRole::Standing && v.diverged) g = 0.45f, b = 0.4f;
+    if (line.role == TextRole::Standing && !v.diverged) r = 0.5f, g = 0.9f;
+    drawText(line.text, line.x, line.y, v.width, v.height, line.scale, r, g, b);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Recording and pictures of the window.
+
+// The folder of a new recording (README: The viewer): the one --frames named; otherwise
+// animation/ while it holds no frames, else a new folder in it named after the world. After a
+// recording that reached --max-frames, a new folder in the first one.
+std::string newRecordingFolder(const Viewer& v) {
+  const std::string& first = v.pictures.framesDir;
+  const bool named = v.pictures.saveFromStart;  // --frames DIR was given
+  if (v.recordings == 0 && (named || v.pictures.overwrite || countFrames(first) == 0)) return first;
+  return makeNewFolder(first, v.stem);
+}
+
+// Starts or resumes saving; a recording that is full gives way to one in a new folder. Throws
+// OutputError or FrameError, saying why not.
+void startRecording(Viewer& v) {
+  if (!v.frames || v.frames->full()) {
+    v.frames.reset();  // its claim on its folder goes first: makeNewFolder claims the parent
+    auto frames = std::make_unique<FrameSequence>(newRecordingFolder(v), v.pictures.maxFrames,
+                                                  v.pictures.overwrite);
+    frames->open();
+    v.frames = std::move(frames);
+    ++v.recordings;
+  }
+  v.saving = true;
+  // This drawn frame is saved first, unless it already was.
+  const long long step = v.simulation.step();
+  v.nextFrame = step == v.savedStep ? v.clock.nextAfter(step) : step;
+  v.say("saving frames into " + v.frames->dir() + "/ (space stops)");
+}
+
+void toggleSaving(Viewer& v) {
   if (v.saving) {
-    std::string mark =
-        "SAVING " + std::to_string(v.frames.written()) + "/" + std::to_string(v.frames.maxFrames());
-    drawText(mark, v.width - textWidth(mark, 2) - 8, 8, v.width, v.height, 2, 1, 0.25f, 0.2f);
+    v.saving = false;
+    v.say(textf("stopped saving: %d frames in %s/ (space saves on into it)", v.frames->written(),
+                v.frames->dir().c_str()));
+    return;
   }
-  if (v.draw.coloring != Coloring::Plain) {
-    drawText(std::string("COLOUR: ") + coloringName(v.draw.coloring), 8, 26, v.width, v.height, 2,
-             1, 1, 1);
+  try {
+    startRecording(v);
+  } catch (const std::exception& e) {
+    v.say(e.what());
   }
-  bool fresh = seconds(v.messageTime, Clock::now()) < kMessageSeconds;
-  if (!v.message.empty() && (fresh || v.diverged)) {
-    if (v.diverged)
-      drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 0.3f, 0.25f);
-    else
-      drawText(v.message, 8, v.height - 24, v.width, v.height, 2, 1, 1, 0.4f);
+}
+
+// The drawn frame, read before the overlay is drawn, so that it is the picture an off-screen run
+// makes of the same state.
+void saveFrame(Viewer& v) {
+  v.savedStep = v.simulation.step();
+  v.nextFrame = v.clock.nextAfter(v.savedStep);
+  try {
+    v.frames->save(readWindow(v.width, v.height));
+  } catch (const std::exception& e) {
+    v.saving = false;
+    v.say(e.what());
+    return;
   }
+  if (v.frames->full()) {
+    v.saving = false;
+    v.say(
+        textf("saved %d frames in %s/, the most --max-frames %d allows (up to %d); space saves "
+              "on into a new folder",
+              v.frames->written(), v.frames->dir().c_str(), v.frames->maxFrames(), kMaxFrames));
+  }
+}
+
+// The window as it is seen, overlay and all, into the first free jello-window-NNN.jpg.
+void saveScreenshot(Viewer& v) {
+  v.screenshotAsked = false;
+  for (int i = 1; i <= kMostScreenshots; ++i) {
+    const std::string path = textf(kScreenshotPattern, i);
+    const WriteCheck check = checkWritable(path, Existing::Refuse);
+    if (check.alreadyExists) continue;
+    try {
+      if (!check.writable()) throw OutputError(path + ": " + check.why);
+      writeJpeg(path, readWindow(v.width, v.height));
+      v.say("saved the window as " + path);
+    } catch (const std::exception& e) {
+      v.say(e.what());
+    }
+    return;
+  }
+  v.say(textf("the current folder holds %d pictures of the window already: none saved",
+              kMostScreenshots));
 }
 
 void display() {
@@ -142,23 +307,10 @@ void display() {
   glGetDoublev(GL_MODELVIEW_MATRIX, v.modelview);
   glGetDoublev(GL_PROJECTION_MATRIX, v.projection);
   glGetIntegerv(GL_VIEWPORT, v.viewport);
-  // The frame is read before the overlay is drawn, so that it is the picture an off-screen
-  // run makes of the same state; one frame per state drawn, none while paused.
-  if (v.saving && v.simulation.step() != v.savedStep) {
-    v.savedStep = v.simulation.step();
-    try {
-      v.frames.save(readWindow(v.width, v.height));
-    } catch (const std::exception& e) {
-      v.saving = false;
-      v.say(e.what());
-    }
-    if (v.frames.full()) {
-      v.saving = false;
-      v.say("saved " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() +
-            "/ (the most allowed)");
-    }
-  }
+  const long long step = v.simulation.step();
+  if (v.saving && step >= v.nextFrame && step != v.savedStep) saveFrame(v);
   drawOverlay(v);
+  if (v.screenshotAsked) saveScreenshot(v);
   glutSwapBuffers();
 }
 
@@ -168,20 +320,75 @@ void reshape(int width, int height) {
   v.height = height;
 }
 
-void advance() {
-  Viewer& v = viewer();
-  if (v.paused || v.diverged) return;
-  int count = v.n;
-  if (v.realTime) {
-    // Simulated time follows the wall clock when the machine keeps up; otherwise it runs as
-    // fast as it can, like the course's viewer.
-    double behind = v.realTimeStartSim + seconds(v.realTimeStart, Clock::now()) - v.time();
-    // Compared before the conversion: a tiny dt (1e-300) asks for more steps than an int holds;
-    // the frame budget below stops the loop long before that many anyway.
-    const double wanted = std::floor(std::min(behind, kMaxCatchUpSeconds) / v.simulation.dt());
-    if (!(wanted >= 1)) return;
-    count = static_cast<int>(std::min(wanted, double(std::numeric_limits<int>::max())));
+// ---------------------------------------------------------------------------------------------
+// Running.
+
+// The diagnosis's line, or why there is none.
+std::string takeDiagnosis(Viewer& v) {
+  try {
+    return v.diagnosis.get();
+  } catch (const std::exception& e) {
+    return v.divergedAt + "; no advice: its diagnosis failed (" + e.what() + ")";
   }
+}
+
+// Pauses on the last sane state and starts the diagnosis on its own thread.
+void diverge(Viewer& v, const RunOutcome& outcome, long long stepBefore) {
+  World world = v.model.world;
+  world.dt = v.simulation.dt();
+  world.integrator = v.simulation.integrator();
+  v.simulation.restore(v.lastGood, stepBefore);
+  v.diverged = v.paused = true;
+  if (outcome.kind == RunOutcome::Kind::ToleranceUnmet) {
+    v.setStanding(toleranceFailure(v.tolerances, outcome.step, world.dt) + " (paused; ESC quits)");
+    return;
+  }
+  v.divergedAt = textf("diverged at step %lld (t=%.6g s): %s", outcome.step, outcome.time,
+                       outcome.reason.c_str());
+  v.setStanding(v.divergedAt + "; diagnosing (finding the stable dt)...");
+  v.diagnosis = std::async(std::launch::async, [world, initial = v.initial, outcome] {
+    return divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason);
+  });
+}
+
+void pollDiagnosis(Viewer& v) {
+  if (!v.diagnosis.valid() ||
+      v.diagnosis.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  v.setStanding(takeDiagnosis(v) + " (paused on the last sane state; ESC quits)");
+}
+
+void reachEnd(Viewer& v) {
+  v.ended = v.paused = true;
+  v.stepsPerSecond = 0;
+  v.setStanding(textf("reached %s (step %lld): paused; ESC quits, p runs on", v.endName.c_str(),
+                      v.simulation.step()));
+}
+
+// Steps the run may take before it must stop and be drawn: at its end, and at the next frame
+// to save.
+long long stepsBeforeStop(const Viewer& v) {
+  long long most = std::numeric_limits<long long>::max();
+  const long long step = v.simulation.step();
+  if (v.endStep) most = std::min(most, *v.endStep - step);
+  if (v.saving) most = std::min(most, v.nextFrame - step);
+  return std::max(0LL, most);
+}
+
+// n, or in real time what the wall clock asks for.
+int stepsThisFrame(const Viewer& v) {
+  if (!v.realTime) return v.n;
+  // Simulated time follows the wall clock when the machine keeps up; otherwise it runs as
+  // fast as it can, like the course's viewer.
+  double behind = v.realTimeStartSim + seconds(v.realTimeStart, Clock::now()) - v.time();
+  // Compared before the conversion: a tiny dt (1e-300) asks for more steps than an int holds;
+  // the frame budget stops the loop long before that many anyway.
+  const double wanted = std::floor(std::min(behind, kMaxCatchUpSeconds) / v.simulation.dt());
+  if (!(wanted >= 1)) return 0;
+  return static_cast<int>(std::min(wanted, double(std::numeric_limits<int>::max())));
+}
+
+void runSteps(Viewer& v, int count) {
   v.lastGood = v.state();
   const long long stepBefore = v.simulation.step();
   const Pull* pull = v.pull.point >= 0 ? &v.pull : nullptr;
@@ -195,20 +402,16 @@ void advance() {
     done += stretch;
   }
   v.rateSteps += v.simulation.step() - stepBefore;
-  if (!outcome.ran()) {
-    World world = v.model.world;
-    world.dt = v.simulation.dt();
-    world.integrator = v.simulation.integrator();
-    v.say((outcome.kind == RunOutcome::Kind::ToleranceUnmet
-               ? toleranceFailure(v.tolerances, outcome.step, world.dt)
-               : divergenceMessage(world, v.initial, outcome.step, outcome.time, outcome.reason)) +
-          " (paused)");
-    v.simulation.restore(v.lastGood, stepBefore);
-    v.diverged = true;
-    v.paused = true;
-  }
+  if (!outcome.ran()) diverge(v, outcome, stepBefore);
+}
+
+void advance(Viewer& v) {
+  if (v.paused) return;
+  const long long count = std::min<long long>(stepsThisFrame(v), stepsBeforeStop(v));
+  if (count > 0) runSteps(v, static_cast<int>(count));
+  if (!v.diverged && v.endStep && v.simulation.step() >= *v.endStep) reachEnd(v);
   double elapsed = seconds(v.rateStart, Clock::now());
-  if (elapsed > 0.5) {
+  if (elapsed > kRateSeconds) {
     v.stepsPerSecond = v.rateSteps / elapsed;
     v.rateSteps = 0;
     v.rateStart = Clock::now();
@@ -216,27 +419,43 @@ void advance() {
 }
 
 void idle() {
-  advance();
+  Viewer& v = viewer();
+  pollDiagnosis(v);
+  advance(v);
+  if (v.paused) std::this_thread::sleep_for(kStillNap);
   glutPostRedisplay();
 }
 
-void toggleSaving(Viewer& v) {
-  if (v.saving) {
-    v.saving = false;
-    v.say("stopped saving: " + std::to_string(v.frames.written()) + " frames in " + v.frames.dir() +
-          "/");
+// ---------------------------------------------------------------------------------------------
+// Keys and the mouse.
+
+void togglePause(Viewer& v) {
+  if (v.diverged) {
+    v.say("a diverged run stays paused: ESC quits");
     return;
   }
-  if (v.frames.full()) {
-    v.say("already saved the most frames allowed (" + std::to_string(v.frames.maxFrames()) + ")");
-    return;
+  if (v.ended) {  // p after the end runs on without one
+    v.ended = false;
+    v.endStep.reset();
+    v.standing.clear();
   }
-  try {
-    v.frames.open();
-    v.saving = true;
-    v.say("saving frames into " + v.frames.dir() + "/");
-  } catch (const std::exception& e) {
-    v.say(e.what());
+  v.paused = !v.paused;
+  v.realTimeStart = Clock::now();
+  v.realTimeStartSim = v.time();
+  v.rateSteps = 0;
+  v.rateStart = Clock::now();
+}
+
+void toggleColourHold(Viewer& v) {
+  if (v.draw.coloring == Coloring::Plain) {
+    v.say("f holds the scale of a coloured surface: c colours it first");
+  } else if (v.draw.colourScale > 0) {
+    v.draw.colourScale = 0;
+    v.say("the colour scale fits each frame again");
+  } else {
+    v.draw.colourScale = fittedColourScale(v.model, v.state(), v.draw.coloring);
+    v.say(textf("colour scale held at %g: a colour means the same value in every frame",
+                v.draw.colourScale));
   }
 }
 
@@ -268,21 +487,29 @@ void keyboard(unsigned char key, int, int) {
       v.draw.bend = !v.draw.bend;
       break;
     case 'p':
-      if (v.diverged) break;  // a diverged run stays paused
-      v.paused = !v.paused;
-      v.realTimeStart = Clock::now();
-      v.realTimeStartSim = v.time();
+      togglePause(v);
       break;
     case ' ':
       toggleSaving(v);
       break;
-    case 'c':
+    case 'c':  // a held scale belongs to the colouring it was held for
       v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % 3);
+      v.draw.colourScale = 0;
+      break;
+    case 'f':
+      toggleColourHold(v);
       break;
     case 'r':
       v.realTime = !v.realTime;
       v.realTimeStart = Clock::now();
       v.realTimeStartSim = v.time();
+      break;
+    case '?':
+    case 'k':
+      v.help = !v.help;
+      break;
+    case 'w':
+      v.screenshotAsked = true;
       break;
     default:
       break;
@@ -322,7 +549,10 @@ void grab(Viewer& v, int x, int y) {
       bestDepth = sz;
     }
   }
-  if (best < 0) return;
+  if (best < 0) {
+    v.say("no point of the cube near the cursor: left-drag from the cube's surface to pull it");
+    return;
+  }
   v.grabDepth = bestDepth;
   v.pull.point = best;
   v.pull.stiffness = std::max(kMinPullStiffness, v.model.world.kElastic);
@@ -346,14 +576,25 @@ void mouse(int button, int buttonState, int x, int y) {
 void motion(int x, int y) {
   Viewer& v = viewer();
   if (v.rotating) {
-    v.camera.phi += (x - v.lastX) * kRadiansPerPixel;
-    v.camera.theta = std::clamp(v.camera.theta + (y - v.lastY) * kRadiansPerPixel, -kMaxElevation,
-                                kMaxElevation);
+    const double perPixel = radiansPerPixel(v.width, v.height);
+    v.camera.phi += (x - v.lastX) * perPixel;
+    v.camera.theta =
+        std::clamp(v.camera.theta + (y - v.lastY) * perPixel, -kMaxElevation, kMaxElevation);
   }
   if (v.pull.point >= 0) v.pull.target = unproject(v, x, y, v.grabDepth);
   v.lastX = x;
   v.lastY = y;
   glutPostRedisplay();
+}
+
+// After the window has closed: a diagnosis still under way is waited for, so that its advice is
+// printed and no thread outlives the run.
+Outcome finish(Viewer& v) {
+  if (!v.diverged) return succeeded();
+  // The window printed its messages as they came (say): only an unfinished diagnosis is left.
+  if (!v.diagnosis.valid()) return diverged("");
+  printError("the window is closed; finishing the diagnosis of the divergence (Ctrl-C skips it)");
+  return diverged(takeDiagnosis(v));
 }
 
 }  // namespace
@@ -362,6 +603,15 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   WorldFile file;
   if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
   Viewer v(file, run, pictures);
+  if (run.steps) {
+    v.endStep = *run.steps;
+    v.endName = textf("--steps %lld", *run.steps);
+  }
+  if (run.time) {
+    v.endStep = stepsForTime(*run.time, file.world.dt);
+    if (!v.endStep) return failed(tooManyStepsMessage(*run.time, file.world.dt));
+    v.endName = textf("--time %g s", *run.time);
+  }
 
   int argc = 1;
   char name[] = "jello";
@@ -379,9 +629,8 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   glutMouseFunc(mouse);
   glutMotionFunc(motion);
   if (pictures.saveFromStart) toggleSaving(v);
-  glutMainLoop();
-  // The window printed its divergence when it happened (say): nothing is left to print.
-  return v.diverged ? Outcome{Ending::Diverged, ""} : succeeded();
+  glutMainLoop();  // returns once the window is closed (freeglut destroys it then)
+  return finish(v);
 }
 
 extern "C" const GraphicsApi* jelloGraphicsApi() {

@@ -5,45 +5,11 @@
 # xdotool is missing.
 set -u
 jello=$1 difference=$2 world=$3
-for tool in Xvfb xdotool; do
-  command -v "$tool" >/dev/null || { echo "skipped: $tool is not installed"; exit 77; }
-done
-
-fail() { echo "FAILED: $*"; [ -f "$work/err" ] && sed 's/^/  jello: /' "$work/err"; exit 1; }
-work=$(mktemp -d)
-cleanup() {
-  [ -n "${app:-}" ] && kill "$app" 2>/dev/null
-  if [ -n "${xvfb:-}" ]; then kill "$xvfb" 2>/dev/null; wait "$xvfb" 2>/dev/null; fi
-  rm -rf "$work"
-}
-trap cleanup EXIT
-
-# Xvfb picks a free display itself and writes its number once it accepts connections.
-exec {displayfd}>"$work/display"
-Xvfb -displayfd "$displayfd" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
-[ -s "$work/display" ] || fail "Xvfb did not start"
-export DISPLAY=":$(head -1 "$work/display")"
-for _ in $(seq 100); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
-xdotool getmouselocation >/dev/null 2>&1 || fail "Xvfb on $DISPLAY does not answer"
-
-# Waits up to 15 s for a shell condition.
-wait_for() { for _ in $(seq 150); do eval "$1" && return 0; sleep 0.1; done; return 1; }
-frames() { ls "$work/animation" 2>/dev/null | grep -c '^[0-9][0-9][0-9][0-9]\.jpg$'; }
+source "$(dirname "$0")/window_support.sh"
+frames() { frames_in "$work/animation"; }
 
 cd "$work"
-# In a sanitized build, the GLX driver that the window dlopens keeps its buffers to exit and is
-# unloaded by then, so LeakSanitizer cannot name (or be told to ignore) it: leaks are checked
-# in the off-screen runs, not in the window's.
-start_jello() {
-  ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$jello" --max-frames 5000 "$world" >out 2>err &
-  app=$!
-  wait_for 'window=$(xdotool search --name "^Jello cube$" 2>/dev/null | head -1); [ -n "$window" ]'
-}
-# Once more if the first start found no window (a display that was still settling, seen once).
-start_jello || { kill "$app" 2>/dev/null; wait "$app" 2>/dev/null; start_jello; } || fail "no window titled 'Jello cube'"
-key() { xdotool key --window "$window" "$@"; }
+start_jello --max-frames 5000 "$world"
 
 # The classic keys, none of which may upset the viewer.
 for k in z x e v v s h b s h b c c c r r; do key "$k"; done
@@ -77,10 +43,6 @@ key space
 pulled=$(printf '%04d.jpg' $(($(frames) - 1)))
 if "$difference" "animation/$pulled" offscreen/0000.jpg 0.3; then fail "left-drag did not move the cube"; fi
 
-key Escape
-wait_for '! kill -0 $app 2>/dev/null' || fail "ESC did not close the window"
-wait "$app"
-status=$?
-app=
+quit_jello
 [ "$status" -eq 0 ] || fail "jello exited with status $status"
 echo "window test passed: $(frames) frames saved, keys and the mouse answered"
