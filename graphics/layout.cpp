@@ -207,4 +207,25 @@ double radiansPerPixel(int width, int height) {
   return kDragTurnDegrees * kPi / 180 / std::max(1, std::min(width, height));
 }
 
+// The keys, as the window's help lists them (the README's table says the same at more length).
+const std::vector<KeyLine>& windowKeys() {
+  static const std::vector<KeyLine> keys = {
+      {"RIGHT-DRAG", "turn the camera"},
+      {"LEFT-DRAG", "pull the cube (start on it)"},
+      {"Z X", "zoom in, out"},
+      {"E", "reset the camera"},
+      {"V", "wireframe"},
+      {"S H B", "springs by kind, as lines"},
+      {"C", "colour by strain, force"},
+      {"F", "hold or free colour scale"},
+      {"P", "pause, run on"},
+      {"R", "real-time pacing"},
+      {"SPACE", "record frames, stop"},
+      {"W", "save the window as a JPEG"},
+      {"? K", "this help"},
+      {"ESC", "quit"},
+  };
+  return keys;
+}
+
 }  // namespace jello

@@ -100,4 +100,8 @@ OverlayLayout layoutOverlay(const OverlayText& text, int width, int height, int 
 constexpr double kDragTurnDegrees = 135;
 double radiansPerPixel(int width, int height);
 
+// The window's keys as its help (? or k) lists them; the README's table says the same at more
+// length.
+const std::vector<KeyLine>& windowKeys();
+
 }  // namespace jello

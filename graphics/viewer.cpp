@@ -53,27 +53,6 @@ constexpr float kPanelAlpha = 0.6f;  // of the panels behind the help and the me
 constexpr const char* kScreenshotPattern = "jello-window-%03d.jpg";  // in the current folder
 constexpr int kMostScreenshots = 999;
 
-// The keys, as the window's help lists them (the README's table says the same at more length).
-const std::vector<KeyLine>& keyHelp() {
-  static const std::vector<KeyLine> keys = {
-      {"RIGHT-DRAG", "turn the camera"},
-      {"LEFT-DRAG", "pull the cube (start on it)"},
-      {"Z X", "zoom in, out"},
-      {"E", "reset the camera"},
-      {"V", "wireframe"},
-      {"S H B", "springs by kind, as lines"},
-      {"C", "colour by strain, force"},
-      {"F", "hold or free colour scale"},
-      {"P", "pause, run on"},
-      {"R", "real-time pacing"},
-      {"SPACE", "record frames, stop"},
-      {"W", "save the window as a JPEG"},
-      {"? K", "this help"},
-      {"ESC", "quit"},
-  };
-  return keys;
-}
-
 double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
@@ -193,7 +172,7 @@ OverlayText overlayText(const Viewer& v) {
     text.colouring =
         std::string(coloringName(v.draw.coloring)) +
         (v.draw.colourScale > 0 ? " SCALE HELD (F FREES)" : " SCALE FITS EACH FRAME (F HOLDS)");
-  if (v.help) text.help = keyHelp();
+  if (v.help) text.help = windowKeys();
   text.standing = v.standing;
   if (seconds(v.messageTime, Clock::now()) < kMessageSeconds) text.message = v.message;
   return text;

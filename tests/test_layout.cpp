@@ -53,20 +53,7 @@ OverlayText everything() {
                  "? KEYS"};
   text.recording = "SAVING 9999/10000 INTO ANIMATION/ROTATE-001/";
   text.colouring = "force SCALE FITS EACH FRAME (F HOLDS)";
-  text.help = {{"RIGHT-DRAG", "turn the camera"},
-               {"LEFT-DRAG", "pull the cube (start on it)"},
-               {"Z X", "zoom in, out"},
-               {"E", "reset the camera"},
-               {"V", "wireframe"},
-               {"S H B", "springs by kind, as lines"},
-               {"C", "colour by strain, force"},
-               {"F", "hold or free colour scale"},
-               {"P", "pause, run on"},
-               {"R", "real-time pacing"},
-               {"SPACE", "record frames, stop"},
-               {"W", "save the window as a JPEG"},
-               {"? K", "this help"},
-               {"ESC", "quit"}};
+  text.help = windowKeys();
   text.standing =
       "diverged at step 2 (t=0.1 s): point p[0][0][0] is more than 100 m from the origin; dt=0.05 "
       "exceeds RK4's stable limit 0.00127 for this world; try --dt 0.001 or --integrator IMPLICIT "
