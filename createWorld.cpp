@@ -406,6 +406,22 @@ jello::ForceField takeField(jello::FieldRecipe& field) {
   return jello::buildField(field);
 }
 
+// A uniform force meant as an acceleration: --field-uniform 0 0 -9.8 pulls 9.8 N on each point
+// of 2 g, 5000 m/s^2, and crushes the cube flat.
+void warnAboutForceAsAcceleration(const Options& o, double mass) {
+  constexpr double kStandardGravity = 9.80665;  // m/s^2
+  constexpr double kMostLikelyGs = 10;          // what a user asks of a field, at most
+  if (!*o.uniformOption) return;
+  const double acceleration = jello::length(toVec3(o.uniform)) / mass;
+  if (!(acceleration > kMostLikelyGs * kStandardGravity)) return;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "--field-uniform is a force on each point, in N: it gives each %.4g m/s^2 (%.0f g) "
+                "at %.9g kg; for an acceleration such as gravity, use --gravity GX GY GZ (m/s^2)",
+                acceleration, acceleration / kStandardGravity, mass);
+  warn(text);
+}
+
 // Checks, writes and announces the world made.
 jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w,
                           const jello::State& initial) {
@@ -413,6 +429,7 @@ jello::Outcome writeWorld(const Options& o, const CLI::App& app, jello::World& w
   if (auto problem = jello::findWorldProblem(w, initial))
     return jello::failed(describeProblem(*problem, app));
   warnAbout(w, initial);
+  warnAboutForceAsAcceleration(o, w.mass);
   try {
     jello::writeWorldFile(o.output, w, initial, o.force);
   } catch (const std::runtime_error& e) {

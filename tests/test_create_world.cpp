@@ -473,6 +473,16 @@ TEST(CreateWorld, GravityIsWrittenAsTheForceMassTimesGAndDescribedAsBoth) {
   // A student's g written as a force is shown for what it does: 5017.6 m/s^2 at 1/512 kg.
   Result force = createWorld("--describe '" + dataPath("gravity.w") + "'");
   EXPECT_NE(force.out.find("a = F/m = (0, 0, -30.722) m/s^2"), std::string::npos) << force.out;
+  EXPECT_EQ(r.err, "") << "no warning for --gravity";
+  Result mistaken = createWorld("--field-uniform 0 0 -9.8 -o '" + dir + "/m.w'");
+  EXPECT_EQ(mistaken.status, 0);
+  EXPECT_NE(mistaken.err.find("warning: --field-uniform is a force on each point, in N: it gives "
+                              "each 5018 m/s^2 (512 g) at 0.001953125 kg; for an acceleration "
+                              "such as gravity, use --gravity"),
+            std::string::npos)
+      << mistaken.err;
+  EXPECT_EQ(createWorld("--field-uniform 0 0 -0.06 -o '" + dir + "/c.w'").err, "")
+      << "the course's gravity.w force, 31 m/s^2, is not taken for a mistake";
   Result both = createWorld("--gravity 0 0 -9.8 --field-uniform 0 0 1 -o '" + dir + "/b.w'");
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.err.find("--gravity"), std::string::npos) << both.err;
