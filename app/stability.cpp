@@ -172,10 +172,13 @@ std::optional<NearShift> slowestModes(const SparseMatrix& stiffness, double rigi
   }
 }
 
-// The modes at both ends of the spectrum, by Lanczos iterations: the fastest set every limit
-// but those of a damping-sensitive integrator on modes damped unlike the rest (explicit Euler's
-// limit is about c / omega^2 for each mode), which the slowest settle at a wall (the cube on its
-// contact springs) or a collapsed cube. Nothing when an iteration does not converge.
+// The modes at both ends of the spectrum, by Lanczos iterations. The fastest set the limits of the
+// integrators stable on undamped modes (RK4's is 2.83 / omega), and every limit where the modes
+// are damped alike. Explicit Euler's and the midpoint rule's follow each mode's damping ratio
+// (Euler's is about c / omega^2), so a mode damped less for its speed than the rest sets them:
+// the slowest, at a wall (the cube on its contact springs) or in a collapsed cube; one in the
+// middle of the spectrum (a strained corner's) is missed (stability.h). Nothing when an
+// iteration does not converge.
 std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
                                                 const SparseMatrix& damping) {
   std::optional<Eigenpairs> fast = largestEigenpairs(stiffness, kFastModes);
