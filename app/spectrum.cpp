@@ -73,7 +73,7 @@ std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int coun
   return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
 }
 
-std::optional<NearShift> eigenpairsNear(const SparseMatrix& matrix, double shift, int count) {
+std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count) {
   JELLO_ASSERT(count > 0 && count < matrix.rows());
   ShiftSolve inverse(matrix);
   // The solver's constructor factorises matrix - shift I.
@@ -81,9 +81,11 @@ std::optional<NearShift> eigenpairsNear(const SparseMatrix& matrix, double shift
                                                  shift);
   if (!inverse.factorised()) return std::nullopt;
   solver.init();
-  solver.compute(Spectra::SortRule::LargestMagn, kMaxRestarts, kTolerance);
+  // 1 / (lambda - shift) is largest for the eigenvalues just above the shift; those below it
+  // give negative values, left out.
+  solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
   if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
-  return NearShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
+  return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
 }
 
 namespace {

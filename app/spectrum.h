@@ -24,17 +24,18 @@ struct Eigenpairs {
 // when the iteration does not converge.
 std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int count);
 
-struct NearShift {
+struct AboveShift {
   Eigenpairs pairs;
   // How many eigenvalues of `matrix` lie below the shift: the negative pivots of the LDL^T
   // factorisation of matrix - shift I (Sylvester's law of inertia), so all of them, not only
-  // those in `pairs`.
+  // those near it.
   int below = 0;
 };
-// The `count` eigenvalues of `matrix` nearest `shift` and their eigenvectors (Lanczos on
-// (matrix - shift I)^-1, factorised once). Nothing when the factorisation breaks down (the shift
-// is an eigenvalue) or the iteration does not converge.
-std::optional<NearShift> eigenpairsNear(const SparseMatrix& matrix, double shift, int count);
+// The `count` smallest eigenvalues of `matrix` above `shift` and their eigenvectors (Lanczos on
+// (matrix - shift I)^-1, factorised once, for its largest eigenvalues: those above the shift and
+// nearest it). Nothing when the factorisation breaks down (the shift is an eigenvalue) or the
+// iteration does not converge.
+std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count);
 
 // All kNumCoords eigenvalues, ascending, of a matrix on the lattice's coordinates that commutes
 // with the three mirror reflections of the lattice through its centre (i -> 7 - i with x -> -x,

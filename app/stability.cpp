@@ -127,8 +127,8 @@ namespace {
 constexpr int kFastModes = 48;
 constexpr int kMostFastModes = 192;
 constexpr double kCluster = 0.98;
-// The slowest oscillating modes taken, beyond the rigid motions (at most 6) and the growing modes
-// near zero, which the same shifted window finds.
+// The slowest oscillating modes taken, beyond the rigid motions (at most 6), which the same
+// window above -rigid finds.
 constexpr int kSlowModes = 24;
 constexpr int kRigidMotions = 6;
 constexpr int kMostSlowModes = 384;
@@ -142,6 +142,17 @@ SparseMatrix negatedSymmetricPart(const SparseMatrix& m) {
 bool allFinite(const SparseMatrix& m) {
   return std::all_of(m.valuePtr(), m.valuePtr() + m.nonZeros(),
                      [](double x) { return std::isfinite(x); });
+}
+
+// The smallest over the rows of a_ii - sum over j != i of |a_ij|: no eigenvalue of the symmetric
+// matrix is smaller (Gershgorin's circles).
+double gershgorinLowerBound(const SparseMatrix& m) {
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(m.rows()), off = diagonal;
+  for (Eigen::Index column = 0; column < m.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(m, column); it; ++it)
+      (it.row() == column ? diagonal[it.row()] : off[it.row()]) +=
+          it.row() == column ? it.value() : std::fabs(it.value());
+  return (diagonal - off).minCoeff();
 }
 
 // Adds the eigenpairs' modes to `out` (omega^2 above `rigid`; the damping rate along each
@@ -160,12 +171,12 @@ void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid
   }
 }
 
-// The slowest oscillating modes: the eigenpairs nearest -rigid, in a window widened until it
-// holds kSlowModes beyond the rigid and growing modes near zero; and the count of growing modes
-// (eigenvalues below -rigid), all of them, from the factorisation's inertia.
-std::optional<NearShift> slowestModes(const SparseMatrix& stiffness, double rigid) {
+// The slowest oscillating modes: the eigenpairs just above -rigid, in a window widened until it
+// holds kSlowModes beyond the rigid motions; and the count of growing modes (eigenvalues below
+// -rigid), all of them, from the factorisation's inertia.
+std::optional<AboveShift> slowestModes(const SparseMatrix& stiffness, double rigid) {
   for (int count = kSlowModes + kRigidMotions;; count *= 2) {
-    std::optional<NearShift> slow = eigenpairsNear(stiffness, -rigid, count);
+    std::optional<AboveShift> slow = eigenpairsAbove(stiffness, -rigid, count);
     if (!slow) return std::nullopt;
     const auto oscillating = (slow->pairs.values.array() > rigid).count();
     if (oscillating >= kSlowModes || 2 * count > kMostSlowModes) return slow;
@@ -186,9 +197,11 @@ std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
   // The dense analysis's threshold: kRigid of the largest eigenvalue in size; a growing mode
   // larger than the fastest is looked for below.
   double rigid = kRigid * std::fabs(fast->values[0]);
-  std::optional<NearShift> slow = slowestModes(stiffness, rigid);
+  std::optional<AboveShift> slow = slowestModes(stiffness, rigid);
   if (!slow) return std::nullopt;
-  if (slow->below > 0) {
+  // No eigenvalue lies below the smallest a_ii - sum |a_ij| of a row (Gershgorin): only when that
+  // is below minus the fastest's can a growing mode be the larger.
+  if (slow->below > 0 && -gershgorinLowerBound(stiffness) > std::fabs(fast->values[0])) {
     std::optional<Eigenpairs> mostNegative = largestEigenpairs(-stiffness, 1);
     if (!mostNegative) return std::nullopt;
     if (mostNegative->values[0] > std::fabs(fast->values[0])) {
@@ -383,11 +396,13 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   Model model = makeModel(world, initial);
   // The two states' analyses are independent (linearise reads the model only): the face on the
   // wall on a second thread halves the wait where a second core is free.
-  std::future<Linearisation> onWall =
-      std::async(std::launch::async, [&model] { return linearise(model, faceOnWallState()); });
+  std::future<Linearisation> onWall = std::async(std::launch::async, [&model, &world] {
+    lineariseAtRest(world);  // the lattice's first solve, on the lighter thread
+    return linearise(model, faceOnWallState());
+  });
   report.initial = linearise(model, initial);
-  report.rest = lineariseAtRest(world);
   Linearisation wall = onWall.get();
+  report.rest = lineariseAtRest(world);
   report.largestStrain = largestStrain(initial);
   report.stableFraction = stableFraction(world, initial);
   for (Integrator integrator : kExplicitIntegrators) {
