@@ -124,9 +124,9 @@ namespace {
 // is still within kCluster of the fastest's omega^2: the set then ends inside a cluster of modes
 // about as fast, each damped its own way (a stiff wall's 64 contact modes, all faster than the
 // springs'), and one just beyond it may limit an integrator more.
-constexpr int kFastModes = 48;
+constexpr int kFastModes = 24;
 constexpr int kMostFastModes = 192;
-constexpr double kCluster = 0.98;
+constexpr double kCluster = 0.97;
 // The slowest oscillating modes taken, beyond the rigid motions (at most 6), which the same
 // window above -rigid finds.
 constexpr int kSlowModes = 24;

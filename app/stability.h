@@ -37,7 +37,7 @@ struct Linearisation {
   // False when the forces' derivatives at the state hold a number that is not finite: no
   // eigen-analysis is run on such a matrix, and there are no modes.
   bool finite = true;
-  // Oscillating modes (omega > 0): the fastest (48, more when they end in a cluster) and the 24
+  // Oscillating modes (omega > 0): the fastest (24, more when they end in a cluster) and the 24
   // slowest of a state (linearise), every one of the rest lattice (lineariseAtRest).
   std::vector<Mode> modes;
   // Modes with negative stiffness (buckling): physical, not numerical. All of them, counted by

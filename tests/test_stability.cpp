@@ -66,7 +66,7 @@ TEST(Stability, ModesOfTheRestLatticeScaleWithStiffnessAndDamping) {
   Model model = makeModel(w, restState());
   Linearisation modes = linearise(model, restState());  // both ends of the spectrum
   EXPECT_EQ(modes.growing, 0);
-  EXPECT_GT(modes.modes.size(), 70u);  // the 48 fastest and at least 24 slowest
+  EXPECT_GE(modes.modes.size(), 48u);  // the 24 fastest and at least 24 slowest
   for (const Mode& m : modes.modes)
     ASSERT_NEAR(m.damping, m.omegaSquared * w.dElastic / w.kElastic, 1e-6 * m.damping);
   // The fast path, from the scaled unit lattice, has every mode, and the same extremes.
