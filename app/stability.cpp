@@ -11,12 +11,15 @@
 #include <complex>
 #include <cstdio>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "app/headless.h"
+#include "app/spectrum.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
@@ -115,41 +118,144 @@ std::string limitTable(const StabilityReport& r) {
 
 }  // namespace
 
-Linearisation linearise(const Model& model, const State& state) {
-  AccelerationJacobian jacobian;
-  accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
-  Eigen::MatrixXd stiffness(jacobian.dAdp), damping(jacobian.dAdv);
-  Linearisation out;
-  // The eigensolver on an inf or a NaN takes minutes to say nothing.
-  if (!stiffness.allFinite() || !damping.allFinite()) {
-    out.finite = false;
-    return out;
-  }
-  stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(stiffness);
-  const Eigen::MatrixXd& phi = solver.eigenvectors();
-  const Eigen::MatrixXd dampingTimesPhi = damping * phi;
-  out.lowestDamping = INFINITY;
-  const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < phi.cols(); ++i) {
-    double w2 = -solver.eigenvalues()[i];
-    if (w2 < -rigid) {
-      ++out.growing;
-      continue;
-    }
+namespace {
+
+// The fastest modes are taken kFastModes at first, and twice as many while the slowest of them
+// is still within kCluster of the fastest's omega^2: the set then ends inside a cluster of modes
+// about as fast, each damped its own way (a stiff wall's 64 contact modes, all faster than the
+// springs'), and one just beyond it may limit an integrator more.
+constexpr int kFastModes = 24;
+constexpr int kMostFastModes = 192;
+constexpr double kCluster = 0.97;
+// The slowest oscillating modes taken, beyond the rigid motions (at most 6), which the same
+// window above -rigid finds.
+constexpr int kSlowModes = 24;
+constexpr int kRigidMotions = 6;
+constexpr int kMostSlowModes = 384;
+
+// -(m + m^T) / 2: the symmetric part of an acceleration Jacobian, negated, so that a restoring
+// stiffness is positive.
+SparseMatrix negatedSymmetricPart(const SparseMatrix& m) {
+  return SparseMatrix(-0.5 * (m + SparseMatrix(m.transpose())));
+}
+
+bool allFinite(const SparseMatrix& m) {
+  return std::all_of(m.valuePtr(), m.valuePtr() + m.nonZeros(),
+                     [](double x) { return std::isfinite(x); });
+}
+
+// The smallest over the rows of a_ii - sum over j != i of |a_ij|: no eigenvalue of the symmetric
+// matrix is smaller (Gershgorin's circles).
+double gershgorinLowerBound(const SparseMatrix& m) {
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(m.rows()), off = diagonal;
+  for (Eigen::Index column = 0; column < m.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(m, column); it; ++it)
+      (it.row() == column ? diagonal[it.row()] : off[it.row()]) +=
+          it.row() == column ? it.value() : std::fabs(it.value());
+  return (diagonal - off).minCoeff();
+}
+
+// Adds the eigenpairs' modes to `out` (omega^2 above `rigid`; the damping rate along each
+// eigenvector), with their highest frequency and damping range.
+void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid,
+              Linearisation* out) {
+  for (Eigen::Index i = 0; i < pairs.values.size(); ++i) {
+    const double w2 = pairs.values[i];
     if (w2 <= rigid) continue;
-    double c = -phi.col(i).dot(dampingTimesPhi.col(i));
-    out.modes.push_back({w2, c});
-    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(w2));
-    out.lowestDamping = std::min(out.lowestDamping, c);
-    out.highestDamping = std::max(out.highestDamping, c);
+    const Eigen::VectorXd phi = pairs.vectors.col(i);
+    const double c = phi.dot(damping * phi);
+    out->modes.push_back({w2, c});
+    out->highestFrequency = std::max(out->highestFrequency, std::sqrt(w2));
+    out->lowestDamping = std::min(out->lowestDamping, c);
+    out->highestDamping = std::max(out->highestDamping, c);
   }
+}
+
+// The slowest oscillating modes: the eigenpairs just above -rigid, in a window widened until it
+// holds kSlowModes beyond the rigid motions; and the count of growing modes (eigenvalues below
+// -rigid), all of them, from the factorisation's inertia.
+std::optional<AboveShift> slowestModes(const SparseMatrix& stiffness, double rigid) {
+  for (int count = kSlowModes + kRigidMotions;; count *= 2) {
+    std::optional<AboveShift> slow = eigenpairsAbove(stiffness, -rigid, count);
+    if (!slow) return std::nullopt;
+    const auto oscillating = (slow->pairs.values.array() > rigid).count();
+    if (oscillating >= kSlowModes || 2 * count > kMostSlowModes) return slow;
+  }
+}
+
+// The modes at both ends of the spectrum, by Lanczos iterations. The fastest set the limits of the
+// integrators stable on undamped modes (RK4's is 2.83 / omega), and every limit where the modes
+// are damped alike. Explicit Euler's and the midpoint rule's follow each mode's damping ratio
+// (Euler's is about c / omega^2), so a mode damped less for its speed than the rest sets them:
+// the slowest, at a wall (the cube on its contact springs) or in a collapsed cube; one in the
+// middle of the spectrum (a strained corner's) is missed (stability.h). Nothing when an
+// iteration does not converge.
+std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
+                                                const SparseMatrix& damping) {
+  std::optional<Eigenpairs> fast = largestEigenpairs(stiffness, kFastModes);
+  if (!fast) return std::nullopt;
+  // The dense analysis's threshold: kRigid of the largest eigenvalue in size; a growing mode
+  // larger than the fastest is looked for below.
+  double rigid = kRigid * std::fabs(fast->values[0]);
+  std::optional<AboveShift> slow = slowestModes(stiffness, rigid);
+  if (!slow) return std::nullopt;
+  // No eigenvalue lies below the smallest a_ii - sum |a_ij| of a row (Gershgorin): only when that
+  // is below minus the fastest's can a growing mode be the larger.
+  if (slow->below > 0 && -gershgorinLowerBound(stiffness) > std::fabs(fast->values[0])) {
+    std::optional<Eigenpairs> mostNegative = largestEigenpairs(-stiffness, 1);
+    if (!mostNegative) return std::nullopt;
+    if (mostNegative->values[0] > std::fabs(fast->values[0])) {
+      rigid = kRigid * mostNegative->values[0];
+      if (!(slow = slowestModes(stiffness, rigid))) return std::nullopt;
+    }
+  }
+  while (fast->values.size() < kMostFastModes &&
+         fast->values[fast->values.size() - 1] > kCluster * fast->values[0]) {
+    fast = largestEigenpairs(stiffness, static_cast<int>(2 * fast->values.size()));
+    if (!fast) return std::nullopt;
+  }
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  addModes(*fast, damping, rigid, &out);
+  addModes(slow->pairs, damping, rigid, &out);
+  out.growing = slow->below;
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;
 }
 
+// The analysis as it was: a dense eigensolver on the whole stiffness (seconds), every mode.
+// Only when a Lanczos iteration fails.
+Linearisation lineariseDensely(const SparseMatrix& stiffness, const SparseMatrix& damping) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(stiffness)};
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
+  out.growing = static_cast<int>((solver.eigenvalues().array() < -rigid).count());
+  addModes({solver.eigenvalues(), solver.eigenvectors()}, damping, rigid, &out);
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
+}  // namespace
+
+Linearisation linearise(const Model& model, const State& state) {
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
+  // An eigensolver on an inf or a NaN takes minutes to say nothing.
+  if (!allFinite(jacobian.dAdp) || !allFinite(jacobian.dAdv)) {
+    Linearisation out;
+    out.finite = false;
+    return out;
+  }
+  const SparseMatrix stiffness = negatedSymmetricPart(jacobian.dAdp);
+  const SparseMatrix damping = negatedSymmetricPart(jacobian.dAdv);
+  std::optional<Linearisation> ends = lineariseByLanczos(stiffness, damping);
+  return ends ? *ends : lineariseDensely(stiffness, damping);
+}
+
 Linearisation lineariseAtRest(const World& world) {
-  // Eigenvalues of the lattice with unit stiffness and unit mass, computed once.
+  // Eigenvalues of the lattice with unit stiffness and unit mass, computed once: all of them,
+  // by the lattice's mirror symmetries (spectrum.h), in milliseconds.
   static const Eigen::VectorXd unitLattice = [] {
     World unit;
     unit.kElastic = 1;
@@ -157,11 +263,7 @@ Linearisation lineariseAtRest(const World& world) {
     Model model = makeModel(unit, restState());
     AccelerationJacobian jacobian;
     accelerationJacobian(model, restState().p(), restState().v(), nullptr, &jacobian);
-    Eigen::MatrixXd stiffness(jacobian.dAdp);
-    stiffness = (0.5 * (stiffness + stiffness.transpose())).eval();
-    return Eigen::VectorXd(
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness, Eigen::EigenvaluesOnly)
-            .eigenvalues());
+    return mirrorSymmetricEigenvalues(negatedSymmetricPart(jacobian.dAdp));
   }();
   Linearisation out;
   if (!std::isfinite(world.kElastic / world.mass) || !std::isfinite(world.dElastic / world.mass)) {
@@ -171,7 +273,7 @@ Linearisation lineariseAtRest(const World& world) {
   out.lowestDamping = INFINITY;
   const double rigid = kRigid * unitLattice.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
-    double mu = -unitLattice[i];
+    double mu = unitLattice[i];
     if (mu <= rigid) continue;
     Mode m{mu * world.kElastic / world.mass, mu * world.dElastic / world.mass};
     if (m.omegaSquared <= 0) continue;
@@ -193,7 +295,10 @@ double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
     distinct.emplace(key, m);
   }
   double limit = kLargestStep;
-  for (const auto& [key, mode] : distinct) {
+  // Fastest first: the fast modes set the limit, and the slower ones, mostly stable at it, are
+  // each passed after one check instead of a bisection.
+  for (auto at = distinct.rbegin(); at != distinct.rend(); ++at) {
+    const Mode& mode = at->second;
     // A mode already stable at the current limit cannot lower it.
     if (stableAt(integrator, mode, limit)) continue;
     limit = std::min(limit, modeLimit(integrator, mode));
@@ -289,9 +394,15 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   report.beyond = beyondDoubles(world, initial);
   if (!report.beyond.empty()) return report;  // nothing to analyse, in microseconds
   Model model = makeModel(world, initial);
+  // The two states' analyses are independent (linearise reads the model only): the face on the
+  // wall on a second thread halves the wait where a second core is free.
+  std::future<Linearisation> onWall = std::async(std::launch::async, [&model, &world] {
+    lineariseAtRest(world);  // the lattice's first solve, on the lighter thread
+    return linearise(model, faceOnWallState());
+  });
   report.initial = linearise(model, initial);
+  Linearisation wall = onWall.get();
   report.rest = lineariseAtRest(world);
-  Linearisation wall = linearise(model, faceOnWallState());
   report.largestStrain = largestStrain(initial);
   report.stableFraction = stableFraction(world, initial);
   for (Integrator integrator : kExplicitIntegrators) {
@@ -306,10 +417,13 @@ StabilityReport analyseStability(const World& world, const State& initial) {
 double predictedLimit(const World& world, const State& initial, Integrator integrator) {
   if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   Model model = makeModel(world, initial);
+  // As in analyseStability, the face on the wall on a second thread.
+  std::future<Linearisation> onWall =
+      std::async(std::launch::async, [&model] { return linearise(model, faceOnWallState()); });
   const Linearisation atStart = linearise(model, initial);
+  const Linearisation wall = onWall.get();
   if (!atStart.finite) return NAN;
-  return std::min(criticalStep(integrator, atStart.modes),
-                  criticalStep(integrator, linearise(model, faceOnWallState()).modes));
+  return std::min(criticalStep(integrator, atStart.modes), criticalStep(integrator, wall.modes));
 }
 
 std::string divergenceMessage(const World& world, const State& initial, long long step, double time,

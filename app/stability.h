@@ -6,6 +6,14 @@
 // (dA/dp phi = -omega^2 phi) and a damping rate c_i = -phi^T dA/dv phi, so that it moves as
 // x'' = -omega^2 x - c x'. An integrator is stable at dt when the one-step map of every such
 // mode, computed by running the integrator itself on it, has spectral radius at most 1.
+//
+// Of a general state only the modes at both ends of the spectrum are found (Lanczos iterations,
+// spectrum.h): the fastest set every limit of the course and stress worlds but explicit Euler's,
+// whose limit is about c / omega^2 for each mode, and the slowest set that one at a wall or in a
+// collapsed cube. A mode in the middle of the spectrum damped less for its speed than all of
+// those (a strained corner's, a contact's) is not found, and the Euler limit is then higher than
+// the dense analysis's of every mode was, by up to 33% on the course's worlds
+// (tests/test_stability_limits.cpp).
 #pragma once
 
 #include <string>
@@ -29,20 +37,27 @@ struct Linearisation {
   // False when the forces' derivatives at the state hold a number that is not finite: no
   // eigen-analysis is run on such a matrix, and there are no modes.
   bool finite = true;
-  std::vector<Mode> modes;      // the oscillating ones, omega > 0
-  int growing = 0;              // modes with negative stiffness (buckling): physical, not numerical
-  double highestFrequency = 0;  // rad/s
-  double lowestDamping = 0, highestDamping = 0;  // 1/s, over the modes
+  // Oscillating modes (omega > 0): the fastest (24, more when they end in a cluster) and the 24
+  // slowest of a state (linearise), every one of the rest lattice (lineariseAtRest).
+  std::vector<Mode> modes;
+  // Modes with negative stiffness (buckling): physical, not numerical. All of them, counted by
+  // the inertia of a factorisation, not only those in `modes`.
+  int growing = 0;
+  double highestFrequency = 0;                   // rad/s
+  double lowestDamping = 0, highestDamping = 0;  // 1/s, over `modes`
 };
 
 // The modes of the world linearised at `state` (its springs, and the collision springs active
-// there). Takes about a second: a dense symmetric eigensolver on 1536 unknowns.
+// there), at both ends of the spectrum. Takes about 0.2 s: Lanczos iterations on the sparse
+// 1536 x 1536 stiffness, one of them on its factorisation; a dense eigensolver (seconds) only when
+// an iteration does not converge.
 Linearisation linearise(const Model& model, const State& state);
 
-// The modes of the rest lattice (restState()) for the world's springs. At rest every spring's
-// stiffness and damping act along the same direction, so the damping is the stiffness times
-// dElastic/kElastic and one eigenvalue solve of the lattice, done once and scaled, gives them:
-// milliseconds after the first call.
+// The modes of the rest lattice (restState()) for the world's springs, all of them. At rest every
+// spring's stiffness and damping act along the same direction, so the damping is the stiffness
+// times dElastic/kElastic and one eigenvalue solve of the lattice, done once and scaled, gives
+// them: tens of milliseconds the first time (the lattice's mirror symmetries split it into 8
+// blocks, spectrum.h), microseconds after.
 Linearisation lineariseAtRest(const World& world);
 
 // The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT; 0 when
@@ -106,7 +121,7 @@ struct StabilityReport {
   double verdictLimit(Integrator integrator) const;
 };
 
-// The whole analysis of a world (about three seconds).
+// The whole analysis of a world (about 0.3 s; the two states' on two threads).
 StabilityReport analyseStability(const World& world, const State& initial);
 
 enum class Verdict { Stable, NearLimit, Unstable };
@@ -123,7 +138,7 @@ std::string stabilityJson(const std::string& worldPath, const World& world,
                           const StabilityReport& report);
 
 // The limit that matters when a run has diverged: the smaller of the limits at the initial
-// state and with a face on a wall (two eigensolves, a few seconds). NaN when the forces'
+// state and with a face on a wall (two linearisations, about 0.3 s). NaN when the forces'
 // derivatives there are not finite (no analysis is run then).
 double predictedLimit(const World& world, const State& initial, Integrator integrator);
 

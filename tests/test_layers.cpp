@@ -1,5 +1,5 @@
-// The code's layers (README, Code): every #include points down them, and Eigen and GL appear
-// only where they are needed.
+// The code's layers (README, Code): every #include points down them, and Eigen, Spectra and GL
+// appear only where they are needed.
 //
 //   core/ < world.h, vec3.h, input.cpp, physics.*, forces/ < solver/ < app/, grader/
 //         < graphics/, showCube.* < jello.cpp, createWorld.cpp
@@ -67,13 +67,16 @@ std::vector<std::string> breaches(const std::string& path) {
     if (std::optional<int> theirs = layerOf(target); theirs && *theirs > own)
       out.push_back(where + "includes " + target + ", a layer above");
     if (target.rfind("Eigen/", 0) == 0 && !eigenAllowed) out.push_back(where + "includes Eigen");
+    // Spectra (the Lanczos eigensolvers) is linked to app/ alone.
+    if (target.rfind("Spectra/", 0) == 0 && !(eigenAllowed && path.rfind("app/", 0) == 0))
+      out.push_back(where + "includes Spectra");
     if ((target.rfind("GL/", 0) == 0 || target.rfind("GLUT/", 0) == 0) && !glAllowed)
       out.push_back(where + "includes GL");
   }
   return out;
 }
 
-TEST(Layers, EveryIncludePointsDownAndEigenAndGlStayWhereNeeded) {
+TEST(Layers, EveryIncludePointsDownAndEigenSpectraAndGlStayWhereNeeded) {
   const std::vector<std::string> sources = projectSources();
   EXPECT_GT(sources.size(), 60u);
   std::vector<std::string> found;

@@ -1,0 +1,175 @@
+// spectrum.cpp: Lanczos iterations through Spectra, and the mirror-symmetric block solve.
+
+#include "app/spectrum.h"
+
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "core/assert.h"
+
+namespace jello {
+
+namespace {
+
+// Spectra's defaults: a Ritz value has converged when its residual is below kTolerance times its
+// size. Restarts are cheap here (one sparse product per basis vector): kMaxRestarts only stops a
+// run that would never converge.
+constexpr double kTolerance = 1e-10;
+constexpr int kMaxRestarts = 1000;
+
+// The Krylov basis Spectra keeps: twice the eigenvalues wanted and some, as its manual advises;
+// fewer restarts for a little more memory.
+int basisSize(int count, Eigen::Index n) {
+  return static_cast<int>(std::min<Eigen::Index>(n, 2 * count + 20));
+}
+
+// Spectra's shift-solve operation, y = (matrix - shift I)^-1 x, by a sparse LDL^T factorisation
+// (about twice as fast here as Spectra's own SparseLU, and its pivots give the inertia).
+class ShiftSolve {
+ public:
+  using Scalar = double;
+  explicit ShiftSolve(const SparseMatrix& matrix) : matrix_(matrix) {}
+  Eigen::Index rows() const { return matrix_.rows(); }
+  Eigen::Index cols() const { return matrix_.cols(); }
+  void set_shift(double shift) {
+    SparseMatrix identity(rows(), cols());
+    identity.setIdentity();
+    factor_.compute(SparseMatrix(matrix_ - shift * identity));
+  }
+  void perform_op(const double* in, double* out) const {
+    Eigen::Map<Eigen::VectorXd>(out, rows()) =
+        factor_.solve(Eigen::Map<const Eigen::VectorXd>(in, rows()));
+  }
+  // False when a pivot was zero or not finite: the shift is (numerically) an eigenvalue.
+  bool factorised() const {
+    return factor_.info() == Eigen::Success && factor_.vectorD().allFinite() &&
+           (factor_.vectorD().array() != 0).all();
+  }
+  int negativePivots() const { return static_cast<int>((factor_.vectorD().array() < 0).count()); }
+
+ private:
+  const SparseMatrix& matrix_;
+  Eigen::SimplicialLDLT<SparseMatrix> factor_;
+};
+
+}  // namespace
+
+std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int count) {
+  JELLO_ASSERT(count > 0 && count < matrix.rows());
+  Spectra::SparseSymMatProd<double> product(matrix);
+  Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, count,
+                                                                   basisSize(count, matrix.rows()));
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
+  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
+  return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
+}
+
+std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count) {
+  JELLO_ASSERT(count > 0 && count < matrix.rows());
+  ShiftSolve inverse(matrix);
+  // The solver's constructor factorises matrix - shift I.
+  Spectra::SymEigsShiftSolver<ShiftSolve> solver(inverse, count, basisSize(count, matrix.rows()),
+                                                 shift);
+  if (!inverse.factorised()) return std::nullopt;
+  solver.init();
+  // 1 / (lambda - shift) is largest for the eigenvalues just above the shift; those below it
+  // give negative values, left out.
+  solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
+  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
+  return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
+}
+
+namespace {
+
+constexpr int kMirrors = 3;                         // x, y, z
+constexpr int kSectors = 1 << kMirrors;             // even or odd under each mirror
+constexpr int kHalf = kLatticeSize / 2;             // an orbit's representative: i, j, k < kHalf
+constexpr int kSectorSize = kNumCoords / kSectors;  // 192 unknowns a block
+static_assert(kLatticeSize % 2 == 0, "no point lies on a mirror: every orbit has 8 points");
+
+// A basis vector: kSectors entries of +-1/sqrt(kSectors), one on each mirror image of a point.
+struct MirrorVector {
+  std::array<int, kSectors> coordinate;
+  std::array<double, kSectors> value;
+};
+
+// The orthonormal basis, kSectorSize vectors a sector, one per (representative point, axis):
+// the sum over the 8 mirror images g of chi(g) g(e), where e moves the representative along the
+// axis, g(e) moves its image (negated along each of g's mirrors' axes) and chi(g) = -1 for each
+// of g's mirrors the sector is odd under. Each vector is even or odd under every mirror, so a
+// matrix commuting with the mirrors maps it into its own sector.
+std::vector<MirrorVector> mirrorBasis(int sector) {
+  std::vector<MirrorVector> basis;
+  const double scale = 1 / std::sqrt(double(kSectors));
+  for (int i = 0; i < kHalf; ++i)
+    for (int j = 0; j < kHalf; ++j)
+      for (int k = 0; k < kHalf; ++k)
+        for (int axis = 0; axis < 3; ++axis) {
+          MirrorVector v;
+          for (int mirrors = 0; mirrors < kSectors; ++mirrors) {
+            const std::array<int, 3> at = {i, j, k};
+            std::array<int, 3> image = at;
+            double sign = scale;
+            for (int m = 0; m < kMirrors; ++m) {
+              if (!(mirrors >> m & 1)) continue;
+              image[m] = kLatticeSize - 1 - at[m];
+              if (m == axis) sign = -sign;        // the displacement is mirrored too
+              if (sector >> m & 1) sign = -sign;  // odd under this mirror
+            }
+            v.coordinate[mirrors] = coordIndex(pointIndex(image[0], image[1], image[2]), axis);
+            v.value[mirrors] = sign;
+          }
+          basis.push_back(v);
+        }
+  return basis;
+}
+
+// basis^T matrix basis, dense: each column from the matrix times one basis vector (8 of the
+// matrix's sparse columns), dotted with every basis vector of the sector.
+Eigen::MatrixXd projected(const SparseMatrix& matrix, const std::vector<MirrorVector>& basis) {
+  const int size = static_cast<int>(basis.size());
+  Eigen::MatrixXd block(size, size);
+  Eigen::VectorXd image = Eigen::VectorXd::Zero(matrix.rows());
+  for (int c = 0; c < size; ++c) {
+    image.setZero();
+    for (int e = 0; e < kSectors; ++e)
+      for (SparseMatrix::InnerIterator it(matrix, basis[c].coordinate[e]); it; ++it)
+        image[it.row()] += it.value() * basis[c].value[e];
+    for (int r = 0; r < size; ++r) {
+      double sum = 0;
+      for (int e = 0; e < kSectors; ++e) sum += basis[r].value[e] * image[basis[r].coordinate[e]];
+      block(r, c) = sum;
+    }
+  }
+  return block;
+}
+
+}  // namespace
+
+Eigen::VectorXd mirrorSymmetricEigenvalues(const SparseMatrix& matrix) {
+  JELLO_ASSERT(matrix.rows() == kNumCoords && matrix.cols() == kNumCoords);
+  Eigen::VectorXd values(kNumCoords);
+  double inBlocks = 0;
+  for (int s = 0; s < kSectors; ++s) {
+    const Eigen::MatrixXd block = projected(matrix, mirrorBasis(s));
+    inBlocks += block.squaredNorm();
+    values.segment(s * kSectorSize, kSectorSize) =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(block, Eigen::EigenvaluesOnly).eigenvalues();
+  }
+  // The basis is orthonormal and the matrix commutes with the mirrors: the blocks hold all of it
+  // (the squared norms agree to rounding).
+  JELLO_ASSERT(std::fabs(matrix.squaredNorm() - inBlocks) <= 1e-10 * matrix.squaredNorm());
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+}  // namespace jello

@@ -1,0 +1,47 @@
+// spectrum.h: a few eigenpairs of the sparse, symmetric kNumCoords x kNumCoords matrices of the
+// stability analysis (stability.h), without a dense eigensolver on all of them (seconds each):
+// Lanczos iterations (Spectra) for the largest eigenvalues and for those nearest a shift, and
+// the rest lattice's mirror symmetries for all of its eigenvalues.
+//
+// Every function takes a symmetric matrix (only its lower triangle is read where said) and
+// returns eigenvalues in the matrix's units, eigenvectors as unit columns. Nothing is kept
+// between calls.
+#pragma once
+
+#include <optional>
+
+#include "solver/jacobian.h"  // Eigen, and the SparseMatrix of the Jacobians
+
+namespace jello {
+
+struct Eigenpairs {
+  Eigen::VectorXd values;   // descending
+  Eigen::MatrixXd vectors;  // kNumCoords rows, one unit column per value
+};
+
+// The `count` algebraically largest eigenvalues of `matrix` and their eigenvectors (implicitly
+// restarted Lanczos, from Spectra's fixed starting vector: the same answer every run). Nothing
+// when the iteration does not converge.
+std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int count);
+
+struct AboveShift {
+  Eigenpairs pairs;
+  // How many eigenvalues of `matrix` lie below the shift: the negative pivots of the LDL^T
+  // factorisation of matrix - shift I (Sylvester's law of inertia), so all of them, not only
+  // those near it.
+  int below = 0;
+};
+// The `count` smallest eigenvalues of `matrix` above `shift` and their eigenvectors (Lanczos on
+// (matrix - shift I)^-1, factorised once, for its largest eigenvalues: those above the shift and
+// nearest it). Nothing when the factorisation breaks down (the shift is an eigenvalue) or the
+// iteration does not converge.
+std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count);
+
+// All kNumCoords eigenvalues, ascending, of a matrix on the lattice's coordinates that commutes
+// with the three mirror reflections of the lattice through its centre (i -> 7 - i with x -> -x,
+// and the same for j, y and k, z): the rest lattice's stiffness. In the basis of displacements
+// even or odd under each reflection the matrix falls apart into 8 blocks of kNumCoords / 8, each
+// solved densely: about 60 times less work than the whole matrix.
+Eigen::VectorXd mirrorSymmetricEigenvalues(const SparseMatrix& matrix);
+
+}  // namespace jello
