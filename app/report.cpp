@@ -91,19 +91,43 @@ double rms(const State& a, const State& b, double* largest) {
   return std::sqrt(sum / kNumPoints);
 }
 
-// The report's progress line: what runs now, and how many of the report's runs have begun.
+// RK45 sweeps its tolerance, not its step, and so needs no search for a largest stable step.
+bool sweepsTolerance(Integrator integrator) { return integrator == Integrator::RK45; }
+
+// The items the progress line counts: each integrator's search for its largest stable step
+// (one item, however many halvings it takes), its sweep's runs, the world's own setting (an
+// item even when a sweep has measured it) and the reference.
+int reportItemCount(const std::vector<Integrator>& integrators) {
+  int items = 2;
+  for (Integrator integrator : integrators)
+    items += kSweepLength + (sweepsTolerance(integrator) ? 0 : 1);
+  return items;
+}
+
+// The report's progress line: what runs now, and how many of the reportItemCount() items
+// have begun. The count ends on its total, and the last line stays (finish).
 class ReportProgress {
  public:
-  explicit ReportProgress(int total) : total_(total) {}
-  void finish() { line_.finish(); }
-  void show(const std::string& what) {
-    ++done_;
-    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) +
-               ")");
+  explicit ReportProgress(int total) : total_(total), begin_(Clock::now()) {}
+  // The next item begins.
+  void next(const std::string& what) {
+    ++begun_;
+    update(what);
+  }
+  // What the current item does now (a search's next halving), with the same count.
+  void update(const std::string& what) { line_.show("report: " + what + " (" + count() + ")"); }
+  // "report: done, 45/45 in 12 s" and a newline, before the summary on stdout.
+  void finish() {
+    const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
+    char took[32];
+    std::snprintf(took, sizeof took, "%.0f s", seconds);
+    line_.finish("report: done, " + count() + " in " + took);
   }
 
  private:
-  int total_, done_ = 0;
+  std::string count() const { return std::to_string(begun_) + "/" + std::to_string(total_); }
+  int total_, begun_ = 0;
+  Clock::time_point begin_;
   Progress line_;
 };
 
@@ -227,8 +251,8 @@ double largestStableStep(const Study& s, Integrator integrator) {
   Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
   for (int k = 0; k < kSearchHalvings; ++k) {
     double dt = s.T / (kLargestStepDivisor << k);
-    s.progress.show(std::string("finding ") + integratorName(integrator) +
-                    "'s largest stable step, dt=" + number(dt));
+    s.progress.update(std::string("finding ") + integratorName(integrator) +
+                      "'s largest stable step, dt=" + number(dt));
     Run half = simulate(s.model, s.start, integrator, dt / 2, s.T);
     double ignored;
     if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd)
@@ -241,12 +265,17 @@ double largestStableStep(const Study& s, Integrator integrator) {
 // One integrator's sweep: its largest stable step, then halvings; RK45 sweeps its tolerance
 // instead.
 void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
-  const double largest = integrator == Integrator::RK45 ? 0 : largestStableStep(s, integrator);
+  double largest = 0;
+  if (!sweepsTolerance(integrator)) {
+    s.progress.next(std::string("finding ") + integratorName(integrator) +
+                    "'s largest stable step");
+    largest = largestStableStep(s, integrator);
+  }
   for (int i = 0; i < kSweepLength; ++i) {
     ReportRow row;
     row.integrator = integrator;
     Tolerances tolerances;
-    if (integrator == Integrator::RK45) {
+    if (sweepsTolerance(integrator)) {
       // Its largest step as large as anyone's first try, so that the tolerance alone
       // decides the steps it takes.
       row.dt = s.T / kLargestStepDivisor;
@@ -256,7 +285,7 @@ void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
       row.dt = largest / (1 << i);
       m->smallestStep = std::min(m->smallestStep, row.dt);
     }
-    s.progress.show(describeSetting(row));
+    s.progress.next(describeSetting(row));
     m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
     m->rows.push_back(row);
   }
@@ -270,9 +299,10 @@ void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tole
   });
   if (own != m->rows.end()) {
     own->worldsOwn = true;
+    s.progress.next("the world's own setting: measured in its sweep");
     return;
   }
-  s.progress.show(std::string("the world's own ") + integratorName(world.integrator));
+  s.progress.next(std::string("the world's own ") + integratorName(world.integrator));
   ReportRow row;
   row.integrator = world.integrator;
   row.dt = world.dt;
@@ -298,7 +328,7 @@ Reference runReference(const Study& s, double smallestStep) {
          s.T / reference.steps > smallestStep / kReferenceRefinement)
     reference.steps *= 2;
   reference.step = s.T / reference.steps;
-  s.progress.show("the reference, RK4 dt=" + number(reference.step) +
+  s.progress.next("the reference, RK4 dt=" + number(reference.step) +
                   " and dt=" + number(reference.step / 2));
   // The reference and its check run at once, one on each core, after the timed runs.
   Run run, check;
@@ -493,7 +523,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
     return failed(std::string("--report: ") + e.what());
   }
 
-  ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+  ReportProgress progress(reportItemCount(integrators));
   const Study study{model, file.state, T, progress};
   Measured measured;
   measured.smallestStep = world.dt;

@@ -1,7 +1,10 @@
 // progress.h: the one progress line of a long piece of work (a headless run, a report, a
 // stability map) on stderr. It is rewritten in place (a carriage return, no newline) and shown
-// only when stderr is a terminal: a log or a pipe never holds one. It is wiped when the
-// Progress object goes, so the object lives exactly as long as the work it reports on.
+// only when stderr is a terminal: a log or a pipe never holds one. It is cut to the terminal's
+// width, since a carriage return goes back to the start of the last screen row only and a
+// wrapped line would leave its first rows behind. It is wiped when the Progress object goes
+// (or ended with a newline by finish(lastLine)), so the object lives exactly as long as the
+// work it reports on.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +25,9 @@ class Progress {
   void show(const std::string& line);
   // Wipes the line now, before the work prints its results; the destructor does it otherwise.
   void finish();
+  // Replaces the line with `lastLine` and ends it with a newline, so that it stays on the
+  // terminal above what the work prints next (a report's summary on stdout).
+  void finish(const std::string& lastLine);
 
  private:
   bool enabled_;

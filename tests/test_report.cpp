@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "app/report.h"
@@ -144,6 +145,72 @@ TEST(ReportFunctions, FittedOrderOfAnExactPowerLaw) {
   rows[0].diverged = true;
   rows[1].rmsError = 1e-20;  // below the reference's floor: left out
   EXPECT_TRUE(std::isnan(fittedOrder(rows, Integrator::Midpoint, 1e-15)));
+}
+
+// jello.w made stiff (kElastic 30000 N/m): RK4's search for its largest stable step halves T/8
+// five times, each halving a line of progress.
+std::string writeStiffJello(const std::string& dir) {
+  WorldFile file = readWorldFile(test::dataPath("jello.w"));
+  file.world.kElastic = 30000;
+  const std::string path = dir + "/stiff.w";
+  writeWorldFile(path, file.world, file.state);
+  return path;
+}
+
+// On a terminal the progress line counts the report's items: however many halvings a search
+// takes, the count never passes its total and ends on it, and its last line ends with a newline
+// before the summary.
+TEST(ReportProgress, CountsToItsTotalNeverPastItAndEndsItsLineBeforeTheSummary) {
+  const std::string dir = test::makeTempDir(), world = writeStiffJello(dir);
+  int status = -1;
+  const std::string seen = test::runJelloOnTerminal(
+      {"--report", dir + "/out", "--time", "0.02", "--integrators", "RK4", world}, 200, &status);
+  ASSERT_EQ(status, 0) << seen;
+
+  const std::regex counter(R"(\((\d+)/(\d+)\))");
+  std::vector<std::pair<int, int>> counts;
+  for (auto it = std::sregex_iterator(seen.begin(), seen.end(), counter);
+       it != std::sregex_iterator(); ++it)
+    counts.emplace_back(std::stoi((*it)[1]), std::stoi((*it)[2]));
+  ASSERT_GT(counts.size(), 9u) << "the search's halvings show too";
+  const int total = 1 + 6 + 1 + 1;  // RK4's search, its sweep, the world's own, the reference
+  for (const auto& [begun, shown] : counts) {
+    EXPECT_EQ(shown, total);
+    EXPECT_LE(begun, total);
+  }
+  EXPECT_EQ(counts.back().first, total);
+
+  // The last progress line stays, on a line of its own, and the summary starts on the next.
+  const std::size_t summary = seen.find(world + ": report in");
+  ASSERT_NE(summary, std::string::npos) << seen;
+  const std::string before = seen.substr(0, summary);
+  ASSERT_GE(before.size(), 2u);
+  EXPECT_EQ(before.substr(before.size() - 2), "\r\n") << "a terminal turns \\n into \\r\\n";
+  const std::string lastLine = before.substr(before.rfind('\r', before.size() - 3) + 1);
+  EXPECT_EQ(lastLine.rfind("report: done, 9/9 in ", 0), 0u) << lastLine;
+  EXPECT_EQ(seen.find("report: ", summary), std::string::npos) << "no progress after the summary";
+  test::removeTree(dir);
+}
+
+// A line wider than the terminal would wrap, and a carriage return would leave its first rows
+// behind: every line is cut to the terminal's width less one.
+TEST(ReportProgress, LinesFitANarrowTerminal) {
+  const std::string dir = test::makeTempDir();
+  int status = -1;
+  const std::string seen =
+      test::runJelloOnTerminal({"--report", dir + "/out", "--time", "0.01", "--integrators", "RK45",
+                                test::dataPath("rotate.w")},
+                               40, &status);
+  ASSERT_EQ(status, 0) << seen;
+  const std::string progress = seen.substr(0, seen.find(test::dataPath("rotate.w") + ":"));
+  std::size_t lines = 0;
+  std::stringstream in(progress);
+  for (std::string line; std::getline(in, line, '\r'); ++lines) {
+    if (!line.empty() && line[0] == '\n') line.erase(0, 1);
+    EXPECT_LE(line.size(), 39u) << line;
+  }
+  EXPECT_GT(lines, 6u);
+  test::removeTree(dir);
 }
 
 }  // namespace
