@@ -137,18 +137,6 @@ std::string number(double x) {
   return text;
 }
 
-// "3.2 times as fast as the world's own", or "... slower than ...".
-std::string speedup(double ratio) {
-  return ratio >= 1 ? number(ratio) + " times as fast as the world's own"
-                    : number(1 / ratio) + " times slower than the world's own";
-}
-
-std::string describeSetting(const ReportRow& r) {
-  std::string s = std::string(integratorName(r.integrator)) + " dt=" + number(r.dt);
-  if (r.integrator == Integrator::RK45) s += " tolerance=" + number(r.tolerance);
-  return s;
-}
-
 std::string gnuplotScript(const std::vector<ReportRow>& rows,
                           const std::vector<Integrator>& integrators, double floor,
                           double visualTolerance, const std::string& title) {
@@ -167,12 +155,9 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
       }
     gp << "EOD\n";
     if (points == 0) continue;
-    double order = fittedOrder(rows, integrator, floor);
-    std::string label =
-        name + (std::isnan(order) ? std::string()
-                                  : " (order " + number(std::round(order * 100) / 100) + ")");
     plots += (plots.empty() ? "" : ", ") + std::string("$") + name +
-             " using 1:2 with linespoints lw 2 pt 7 title '" + label + "'";
+             " using 1:2 with linespoints lw 2 pt 7 title " +
+             gnuplotString(legendLabel(integrator, fittedOrder(rows, integrator, floor)));
   }
   gp << "$OWN << EOD\n";
   for (const ReportRow& r : rows)
@@ -182,7 +167,7 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"
      << "set output png\n"
-     << "set title " << gnuplotString(title) << "\n"
+     << "set title " << gnuplotString(title) << " noenhanced\n"
      << "set logscale xy\n"
      << "set format x '10^{%L}'\nset format y '10^{%L}'\n"
      << "set xlabel 'wall time of the run (s)'\n"
@@ -201,11 +186,11 @@ std::string reportCsv(const std::vector<ReportRow>& rows) {
   csv << "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status\n";
   for (const ReportRow& r : rows) {
     char line[256];
-    std::snprintf(line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n",
-                  integratorName(r.integrator), r.dt,
-                  r.integrator == Integrator::RK45 ? number(r.tolerance).c_str() : "", r.steps,
-                  r.evaluations, r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
-                  r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
+    std::snprintf(
+        line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n", integratorName(r.integrator),
+        r.dt, r.integrator == Integrator::RK45 ? number(r.tolerances.rtol).c_str() : "", r.steps,
+        r.evaluations, r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
+        r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
     csv << line;
   }
   return csv.str();
@@ -215,7 +200,7 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const ReportRow& r : rows) {
     if (r.integrator != integrator || r.diverged || r.worldsOwn || !(r.rmsError > floor)) continue;
-    double x = std::log(integrator == Integrator::RK45 ? r.tolerance : r.dt),
+    double x = std::log(integrator == Integrator::RK45 ? r.tolerances.rtol : r.dt),
            y = std::log(r.rmsError);
     n += 1;
     sx += x;
@@ -279,13 +264,13 @@ void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
       // Its largest step as large as anyone's first try, so that the tolerance alone
       // decides the steps it takes.
       row.dt = s.T / kLargestStepDivisor;
-      row.tolerance = kRk45Tolerances[i];
-      tolerances = {row.tolerance, row.tolerance};
+      tolerances = {kRk45Tolerances[i], kRk45Tolerances[i]};
+      row.tolerances = tolerances;
     } else {
       row.dt = largest / (1 << i);
       m->smallestStep = std::min(m->smallestStep, row.dt);
     }
-    s.progress.next(describeSetting(row));
+    s.progress.next(settingText(row));
     m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
     m->rows.push_back(row);
   }
@@ -306,7 +291,7 @@ void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tole
   ReportRow row;
   row.integrator = world.integrator;
   row.dt = world.dt;
-  row.tolerance = world.integrator == Integrator::RK45 ? tolerances.rtol : 0;
+  if (world.integrator == Integrator::RK45) row.tolerances = tolerances;
   row.worldsOwn = true;
   m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
   m->rows.push_back(row);
@@ -351,28 +336,86 @@ Reference runReference(const Study& s, double smallestStep) {
   return reference;
 }
 
+// One recommendation: the cheapest run within an error and, when no world file can hold its
+// setting (RK45's tolerances), the cheapest run within that error one can. Into the rows; null
+// when there is none.
+struct Choice {
+  const ReportRow* best = nullptr;
+  const ReportRow* inWorldFile = nullptr;  // only when best is not worldFileHolds
+};
+
 // What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
-// within the visual tolerance. Pointers into the rows; null when there is none.
+// within the visual tolerance.
 struct Recommendations {
   const ReportRow* own = nullptr;
-  const ReportRow* asAccurate = nullptr;
-  const ReportRow* looksSame = nullptr;
+  Choice asAccurate, looksSame;
 };
+
+Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit) {
+  auto cheapest = [&](bool inWorldFile) {
+    const ReportRow* best = nullptr;
+    for (const ReportRow& row : rows)
+      if (!row.diverged && row.rmsError <= limit && (!inWorldFile || worldFileHolds(row)) &&
+          (!best || row.wallSeconds < best->wallSeconds))
+        best = &row;
+    return best;
+  };
+  Choice choice;
+  choice.best = cheapest(false);
+  if (choice.best && !worldFileHolds(*choice.best)) choice.inWorldFile = cheapest(true);
+  return choice;
+}
 
 Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance) {
   Recommendations r;
   for (const ReportRow& row : rows)
     if (row.worldsOwn) r.own = &row;
-  auto cheapest = [&](double limit) {
-    const ReportRow* best = nullptr;
-    for (const ReportRow& row : rows)
-      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds))
-        best = &row;
-    return best;
-  };
-  r.asAccurate = r.own && !r.own->diverged ? cheapest(r.own->rmsError) : nullptr;
-  r.looksSame = cheapest(visualTolerance);
+  if (r.own && !r.own->diverged) r.asAccurate = cheapestWithin(rows, r.own->rmsError);
+  r.looksSame = cheapestWithin(rows, visualTolerance);
   return r;
+}
+
+// What to tell about one recommended run: its setting and figures, the command that runs it,
+// and the one that keeps it in a world file ("" when no world file can).
+struct Advice {
+  std::string setting;  // "MIDPOINT dt=0.00078125: 0.0141 s, error 8.11e-08 m, 2.3 times ..."
+  std::string run, keep;
+};
+
+Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own) {
+  Advice advice;
+  advice.setting = settingText(row) + ": " + number(row.wallSeconds) + " s, error " +
+                   number(row.rmsError) + " m";
+  if (own && !own->diverged && own->wallSeconds > 0 && row.wallSeconds > 0)
+    advice.setting += ", " + speedAgainstOwn(own->wallSeconds, row.wallSeconds);
+  advice.run = shellLine(runCommand(worldPath, row));
+  const std::vector<std::string> keep = worldFileCommand(worldPath, row);
+  if (!keep.empty()) advice.keep = shellLine(keep);
+  return advice;
+}
+
+// Why a recommended RK45 run has no createWorld command.
+std::string noWorldFileNote() {
+  const Tolerances defaults;
+  return "a world file holds RK45 and its dt but not its tolerances (RK45 from a world file runs "
+         "at rtol=" +
+         exactNumber(defaults.rtol) + " atol=" + exactNumber(defaults.atol) +
+         "): give --rtol and --atol each time";
+}
+
+// `text` as a Markdown code span, whatever backquotes it holds.
+std::string codeSpan(const std::string& text) {
+  std::size_t longest = 0, run = 0;
+  for (char c : text) longest = std::max(longest, run = c == '`' ? run + 1 : 0);
+  const std::string fence(longest + 1, '`');
+  return fence + (longest ? " " + text + " " : text) + fence;
+}
+
+// RK45's tolerances in report.md's table: "1e-06" when rtol = atol, as the sweep sets them.
+std::string toleranceCell(const ReportRow& r) {
+  if (r.integrator != Integrator::RK45) return "";
+  const Tolerances& t = r.tolerances;
+  return t.rtol == t.atol ? number(t.rtol) : "rtol " + number(t.rtol) + ", atol " + number(t.atol);
 }
 
 // report.md's head and its table of runs.
@@ -397,65 +440,80 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const ReportRow& r : rows) {
     md << "| " << integratorName(r.integrator) << (r.worldsOwn ? " (the world's own)" : "") << " | "
-       << number(r.dt) << " | " << (r.integrator == Integrator::RK45 ? number(r.tolerance) : "")
-       << " | " << r.steps << " | " << r.evaluations << " | " << number(r.wallSeconds) << " | "
+       << exactNumber(r.dt) << " | " << toleranceCell(r) << " | " << r.steps << " | "
+       << r.evaluations << " | " << number(r.wallSeconds) << " | "
        << (r.diverged ? "" : number(r.rmsError)) << " | " << (r.diverged ? "" : number(r.maxError))
        << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
   }
   return md.str();
 }
 
-// report.md's fitted orders.
+// report.md's fitted orders: each integrator's law, error ∝ dt^p (RK45: tolerance^p).
 std::string markdownOrders(const std::vector<ReportRow>& rows,
                            const std::vector<Integrator>& integrators, double floor) {
   std::ostringstream md;
-  md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against "
-        "log(tolerance)).\n\n"
-     << "| integrator | fitted order | theory |\n|---|---|---|\n";
+  md << "\n## Fitted orders\n\nThe slope p of log(error) against log(dt): error \u221d dt^p. "
+        "RK45 sweeps its tolerance at one largest step, so its slope is against log(tolerance), "
+        "error \u221d tolerance^p, and says nothing of an order in dt.\n\n"
+     << "| integrator | fitted | theory |\n|---|---|---|\n";
   for (Integrator integrator : integrators) {
-    double order = fittedOrder(rows, integrator, floor);
     md << "| " << integratorName(integrator) << " | "
-       << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
-       << (integrator == Integrator::RK45 ? std::string("(tolerance)")
-                                          : std::to_string(orderOf(integrator)))
+       << fittedLaw(integrator, fittedOrder(rows, integrator, floor)) << " | "
+       << (integrator == Integrator::RK45
+               ? std::string("none in the tolerance")
+               : "error \u221d dt^" + std::to_string(orderOf(integrator)))
        << " |\n";
   }
   return md.str();
 }
 
+// report.md's lines for one recommended run, as a list under its item.
+void markdownAdvice(const std::string& worldPath, const ReportRow& row, const ReportRow* own,
+                    std::ostringstream& md) {
+  const Advice advice = advise(worldPath, row, own);
+  md << advice.setting << ".\n  - Run it: " << codeSpan(advice.run) << "\n";
+  if (!advice.keep.empty()) md << "  - Keep it in a world file: " << codeSpan(advice.keep) << "\n";
+}
+
 // report.md's recommendations.
-std::string markdownRecommendations(const Recommendations& recommended, double visualTolerance) {
-  const ReportRow* ownRow = recommended.own;
+std::string markdownRecommendations(const std::string& worldPath,
+                                    const Recommendations& recommended, double visualTolerance) {
+  const ReportRow* own = recommended.own;
   std::ostringstream md;
   md << "\n## Recommendations\n\n";
-  if (ownRow) {
-    md << "The world's own setting, " << describeSetting(*ownRow) << ", "
-       << (ownRow->diverged ? std::string("diverges before T.")
-                            : "takes " + number(ownRow->wallSeconds) + " s for an error of " +
-                                  number(ownRow->rmsError) + " m.")
+  if (own) {
+    md << "The world's own setting, " << settingText(*own) << ", "
+       << (own->diverged ? std::string("diverges before T.")
+                         : "takes " + number(own->wallSeconds) + " s for an error of " +
+                               number(own->rmsError) + " m.")
        << "\n\n";
   }
-  auto recommendation = [&](const char* what, const ReportRow* r) {
+  auto recommendation = [&](const std::string& what, const Choice& choice) {
     md << "- **" << what << "**: ";
-    if (!r) {
+    if (!choice.best) {
       md << "none of the runs.\n";
-      return;
-    }
-    if (r == ownRow) {
+    } else if (choice.best == own) {
       md << "the world's own setting; nothing cheaper is as accurate.\n";
-      return;
+    } else {
+      markdownAdvice(worldPath, *choice.best, own, md);
     }
-    md << describeSetting(*r) << ": " << number(r->wallSeconds) << " s, error "
-       << number(r->rmsError) << " m";
-    if (ownRow && !ownRow->diverged && r->wallSeconds > 0)
-      md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
-    md << ".\n";
+    if (!choice.best || worldFileHolds(*choice.best)) return;
+    md << "  - " << noWorldFileNote() << ". The cheapest setting a world file can hold: ";
+    if (!choice.inWorldFile)
+      md << "none of the runs.\n";
+    else if (choice.inWorldFile == own)
+      md << "the world's own.\n";
+    else
+      markdownAdvice(worldPath, *choice.inWorldFile, own, md);
   };
-  recommendation("The cheapest setting at least as accurate as the world's own",
-                 recommended.asAccurate);
+  if (own && own->diverged)
+    md << "- **The cheapest setting at least as accurate as the world's own**: the world's own "
+          "diverges, so any run that does not is more accurate; see the next.\n";
+  else
+    recommendation("The cheapest setting at least as accurate as the world's own",
+                   recommended.asAccurate);
   recommendation(
-      ("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)")
-          .c_str(),
+      "The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)",
       recommended.looksSame);
   return md.str();
 }
@@ -470,33 +528,58 @@ void writeReportFiles(const std::string& worldPath, const ReportOptions& options
   const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
   const std::string md = markdownRuns(worldPath, T, reference, rows) +
                          markdownOrders(rows, integrators, floor) +
-                         markdownRecommendations(recommended, options.visualTolerance);
+                         markdownRecommendations(worldPath, recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
   writeFileWhole(options.dir + "/report.gp",
                  gnuplotScript(rows, integrators, floor, options.visualTolerance, title), existing);
 }
 
+// The lines on stdout for one recommendation ("as accurate as the world's own"): the setting,
+// the command that runs it, and the one that keeps it in a world file.
+void printChoice(const std::string& what, const std::string& worldPath, const Choice& choice,
+                 const ReportRow* own) {
+  if (!choice.best) {
+    std::printf("%s: none of the runs\n", what.c_str());
+    return;
+  }
+  if (choice.best == own) {
+    std::printf("%s: nothing cheaper than the world's own setting\n", what.c_str());
+    return;
+  }
+  auto print = [&](const ReportRow& row) {
+    const Advice advice = advise(worldPath, row, own);
+    std::printf("  run it:  %s\n", advice.run.c_str());
+    if (!advice.keep.empty()) std::printf("  keep it: %s\n", advice.keep.c_str());
+  };
+  std::printf("%s: %s\n", what.c_str(), advise(worldPath, *choice.best, own).setting.c_str());
+  print(*choice.best);
+  if (worldFileHolds(*choice.best)) return;
+  std::printf("  (%s)\n", noWorldFileNote().c_str());
+  if (!choice.inWorldFile || choice.inWorldFile == own) {
+    std::printf("  the cheapest setting a world file can hold: %s\n",
+                choice.inWorldFile ? "the world's own" : "none of the runs");
+    return;
+  }
+  std::printf("  the cheapest setting a world file can hold: %s\n",
+              advise(worldPath, *choice.inWorldFile, own).setting.c_str());
+  print(*choice.inWorldFile);
+}
+
 // The lines on stdout: where the report is, and what it recommends.
 void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn,
                         std::size_t runs, const Reference& reference,
                         const Recommendations& recommended) {
-  const ReportRow *ownRow = recommended.own, *asAccurate = recommended.asAccurate,
-                  *looksSame = recommended.looksSame;
   std::printf(
       "%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its "
       "error %.3g m\n",
       worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
       reference.step, reference.error);
-  if (asAccurate == ownRow && ownRow)
-    std::printf("as accurate as the world's own: nothing cheaper than the world's own setting\n");
-  else if (asAccurate && ownRow && asAccurate->wallSeconds > 0)
-    std::printf("as accurate as the world's own: %s, %s\n", describeSetting(*asAccurate).c_str(),
-                speedup(ownRow->wallSeconds / asAccurate->wallSeconds).c_str());
-  if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
-    std::printf("within %g m: %s, %s\n", options.visualTolerance,
-                describeSetting(*looksSame).c_str(),
-                speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
+  if (recommended.own && !recommended.own->diverged)
+    printChoice("as accurate as the world's own", worldPath, recommended.asAccurate,
+                recommended.own);
+  printChoice("within " + number(options.visualTolerance) + " m", worldPath, recommended.looksSame,
+              recommended.own);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // report.h: error against run time for a world (jello --report): a work-precision study of
-// every integrator, written as CSV, a log-log plot (gnuplot) and a Markdown summary.
+// every integrator, written as CSV, a log-log plot (gnuplot) and a Markdown summary, with
+// recommendations a user can run as printed.
 #pragma once
 
 #include <string>
@@ -20,8 +21,8 @@ struct ReportOptions {
 // One run of the study.
 struct ReportRow {
   Integrator integrator;
-  double dt = 0;         // s; for RK45 the first and largest step
-  double tolerance = 0;  // RK45 only (rtol = atol)
+  double dt = 0;            // s; for RK45 the first and largest step
+  Tolerances tolerances{};  // RK45 only: its rtol and atol (the sweep sets them equal)
   long long steps = 0, evaluations = 0;
   double wallSeconds = 0;
   double rmsError = 0, maxError = 0;  // m, positions at the end against the reference
@@ -29,16 +30,67 @@ struct ReportRow {
   bool worldsOwn = false;  // the world's own integrator and dt
 };
 
-// The CSV of the report (README: Error against run time), header included.
+// The CSV of the report (README: Error against run time), header included. Its tolerance
+// column is RK45's rtol.
 std::string reportCsv(const std::vector<ReportRow>& rows);
 
-// Least-squares slope of log(error) against log(dt) (RK45: against log(tolerance)) over the
-// rows of one integrator that did not diverge and whose error is above `floor`; NaN with
-// fewer than two such rows.
+// Least-squares slope of log(error) against log(dt) (RK45: against log(rtol), see
+// fittedAgainst) over the rows of one integrator that did not diverge and whose error is above
+// `floor`; NaN with fewer than two such rows.
 double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, double floor);
 
+// What an integrator's fitted slope is against: "dt", or "tolerance" for RK45, whose sweep is
+// of its tolerance at one largest step (so that its slope is no order in dt).
+const char* fittedAgainst(Integrator integrator);
+
+// An integrator's fitted law in words: "error ∝ dt^4.07", "error ∝ tolerance^0.90" (RK45), or
+// "n/a" when `order` is NaN.
+std::string fittedLaw(Integrator integrator, double order);
+
+// The plot's legend entry for an integrator's line: "RK4: error ∝ dt^{4.07}" or "RK45: error ∝
+// tolerance^{0.90}" (gnuplot's enhanced text: ^{} is an exponent), or the name alone when
+// `order` is NaN.
+std::string legendLabel(Integrator integrator, double order);
+
+// Run times closer than this, as a fraction, are "the same speed": the timings of runs of a
+// few milliseconds vary by about that much from one report to the next.
+constexpr double kSameSpeedWithin = 0.10;
+
+// A run of `seconds` against the world's own run of `ownSeconds` (both > 0): "the same speed as
+// the world's own", "2.3 times as fast as the world's own" or "takes 2.3 times as long as the
+// world's own".
+std::string speedAgainstOwn(double ownSeconds, double seconds);
+
+// The shortest text that reads back as exactly `x` ("0.00078125", "1e-06"): a command given
+// it runs the very setting measured.
+std::string exactNumber(double x);
+
+// A setting as the report names it: "RK4 dt=0.00078125", "RK45 dt=0.025 rtol=atol=1e-06".
+// Numbers in shortest round-trip form, as the commands below give them.
+std::string settingText(const ReportRow& row);
+
+// Whether a world file can hold the setting: a world file stores the integrator and dt, not
+// RK45's tolerances, which a world file's RK45 runs at their defaults (Tolerances{}).
+bool worldFileHolds(const ReportRow& row);
+
+// The command, as its words, that runs `worldPath` with the row's setting:
+// {"./jello", "--integrator", "RK4", "--dt", "0.002", worldPath} (RK45 adds --rtol and --atol).
+std::vector<std::string> runCommand(const std::string& worldPath, const ReportRow& row);
+
+// The createWorld command, as its words, that writes a copy of `worldPath` holding the row's
+// setting beside it (world/rotate.w, MIDPOINT: world/rotate-midpoint.w); empty when a world file
+// cannot hold it (worldFileHolds).
+std::vector<std::string> worldFileCommand(const std::string& worldPath, const ReportRow& row);
+
+// One word for a POSIX shell: as it is when it holds only characters no shell treats
+// specially, otherwise in single quotes (a quote within as '\''). A word that starts with '-'
+// and is the world's path is given as ./WORD by the commands above, never as an option.
+std::string shellWord(const std::string& word);
+// The words as one command line, each through shellWord.
+std::string shellLine(const std::vector<std::string>& words);
+
 // Runs the study, writes DIR/report.csv, DIR/report.png and DIR/report.md, prints where they
-// are on stdout, and says how it went (outcome.h).
+// are and what they recommend on stdout, and says how it went (outcome.h).
 Outcome runReport(const RunOptions& run, const ReportOptions& report);
 
 }  // namespace jello

@@ -1,7 +1,10 @@
 // jello --report: the CSV, the plot, the summary and its recommendations.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -63,6 +66,14 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
     ASSERT_GT(png.size(), 1000u) << "no plot";
     EXPECT_EQ(png.substr(1, 3), "PNG");
   }
+
+  // The legend and the fitted orders name what each fit is against: RK45's tolerance, the
+  // others' dt; nothing reads as an "order" of RK45.
+  const std::string gp = test::readText(out + "/report.gp");
+  EXPECT_NE(gp.find("title 'RK45: error \u221d tolerance^{0."), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'RK4: error \u221d dt^{4."), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("order"), std::string::npos) << gp;
+  EXPECT_NE(md.find("| RK45 | error \u221d tolerance^0."), std::string::npos) << md;
 
   // A well-formed CSV.
   const std::string csv = test::readText(out + "/report.csv");
@@ -146,6 +157,185 @@ TEST(ReportFunctions, FittedOrderOfAnExactPowerLaw) {
   rows[1].rmsError = 1e-20;  // below the reference's floor: left out
   EXPECT_TRUE(std::isnan(fittedOrder(rows, Integrator::Midpoint, 1e-15)));
 }
+
+// The words of a POSIX shell command line made of plain words and single-quoted ones, as
+// shellLine writes them ('\'' inside quotes is a quote).
+std::vector<std::string> shellWords(const std::string& line) {
+  std::vector<std::string> words;
+  std::string word;
+  bool inWord = false, quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '\'')
+        quoted = false;
+      else
+        word += c;
+    } else if (c == '\'') {
+      quoted = inWord = true;
+    } else if (c == '\\' && i + 1 < line.size()) {
+      word += line[++i];
+      inWord = true;
+    } else if (c == ' ') {
+      if (inWord) words.push_back(word);
+      word.clear();
+      inWord = false;
+    } else {
+      word += c;
+      inWord = true;
+    }
+  }
+  if (inWord) words.push_back(word);
+  return words;
+}
+
+// The lines of `text` that start with `prefix`, less the prefix.
+std::vector<std::string> linesAfter(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> found;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) found.push_back(line.substr(prefix.size()));
+  return found;
+}
+
+TEST(ReportWords, SpeedsWithinTenPercentAreTheSameSpeedOthersARatio) {
+  EXPECT_EQ(kSameSpeedWithin, 0.10);
+  EXPECT_EQ(speedAgainstOwn(1.05, 1), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1, 1.05), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1.0, 1.0), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1.12796, 1), "1.1 times as fast as the world's own");
+  EXPECT_EQ(speedAgainstOwn(2.30019, 1), "2.3 times as fast as the world's own");
+  EXPECT_EQ(speedAgainstOwn(0.0233606, 0.280915), "takes 12 times as long as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1, 1.5), "takes 1.5 times as long as the world's own");
+}
+
+TEST(ReportWords, RK45IsLabelledByItsToleranceTheOthersByTheirStep) {
+  EXPECT_EQ(legendLabel(Integrator::RK45, 0.899009), "RK45: error \u221d tolerance^{0.90}");
+  EXPECT_EQ(legendLabel(Integrator::RK4, 4.07143), "RK4: error \u221d dt^{4.07}");
+  EXPECT_EQ(legendLabel(Integrator::Euler, NAN), "EULER");
+  EXPECT_EQ(fittedLaw(Integrator::RK45, 0.899009), "error \u221d tolerance^0.90");
+  EXPECT_EQ(fittedLaw(Integrator::Midpoint, 2.00201), "error \u221d dt^2.00");
+  EXPECT_EQ(fittedLaw(Integrator::Midpoint, NAN), "n/a");
+}
+
+TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
+  EXPECT_EQ(shellWord("world/rotate.w"), "world/rotate.w");
+  EXPECT_EQ(shellWord("my world.w"), "'my world.w'");
+  EXPECT_EQ(shellWord("it's.w"), "'it'\\''s.w'");
+  EXPECT_EQ(shellWord("$HOME/a.w"), "'$HOME/a.w'");
+  EXPECT_EQ(shellWord("~/a.w"), "'~/a.w'");
+  EXPECT_EQ(shellWord(""), "''");
+
+  ReportRow rk4;
+  rk4.integrator = Integrator::RK4;
+  rk4.dt = 0.001953125;
+  EXPECT_EQ(settingText(rk4), "RK4 dt=0.001953125");
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk4)),
+            "./jello --integrator RK4 --dt 0.001953125 world/rotate.w");
+  EXPECT_EQ(shellLine(worldFileCommand("my worlds/rotate.w", rk4)),
+            "./createWorld --from 'my worlds/rotate.w' --integrator RK4 --dt 0.001953125 -o "
+            "'my worlds/rotate-rk4.w'");
+  EXPECT_EQ(shellLine(runCommand("-odd.w", rk4)),
+            "./jello --integrator RK4 --dt 0.001953125 ./-odd.w")
+      << "a world named like an option";
+
+  ReportRow rk45;
+  rk45.integrator = Integrator::RK45;
+  rk45.dt = 0.025;
+  rk45.tolerances = {1e-7, 1e-7};
+  EXPECT_EQ(settingText(rk45), "RK45 dt=0.025 rtol=atol=1e-07");
+  EXPECT_FALSE(worldFileHolds(rk45));
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
+            "./jello --integrator RK45 --dt 0.025 --rtol 1e-07 --atol 1e-07 world/rotate.w");
+  EXPECT_TRUE(worldFileCommand("world/rotate.w", rk45).empty()) << "no world file holds rtol";
+  rk45.tolerances = Tolerances{};
+  EXPECT_TRUE(worldFileHolds(rk45)) << "a world file's RK45 runs at the default tolerances";
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
+            "./jello --integrator RK45 --dt 0.025 world/rotate.w");
+}
+
+// Every recommended command, run as printed (parsed into its words, never through a shell),
+// ends where the report's run of that setting ended: its error against the reference, run the
+// same way, is the reported error; and the createWorld command writes a world with that
+// integrator and dt. The world sits in a folder whose name needs quoting.
+class RecommendedCommands : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
+  const std::string dir = test::makeTempDir(), folder = dir + "/the student's worlds";
+  ASSERT_EQ(::mkdir(folder.c_str(), 0700), 0);
+  const std::string world = folder + "/rotate.w", T = "0.02";
+  test::writeText(world, test::readText(test::dataPath("rotate.w")));
+  // The world's own overridden by a costly one, RK4 at 0.1 ms, so that a cheaper setting is
+  // recommended.
+  test::CommandResult report = test::runJelloArgs({"--report", dir + "/out", "--time", T, "--dt",
+                                                   "0.0001", "--integrators", GetParam(), world});
+  ASSERT_EQ(report.status, 0) << report.err;
+  const std::vector<std::string> runs = linesAfter(report.out, "  run it:  ");
+  ASSERT_FALSE(runs.empty()) << report.out;
+  EXPECT_EQ(runs[0].find(std::string("--integrator ") + GetParam()), 8u) << runs[0];
+  if (std::string(GetParam()) == "RK45") {
+    EXPECT_NE(report.out.find("  (a world file holds RK45 and its dt but not its tolerances (RK45 "
+                              "from a world file runs at rtol=1e-06 atol=1e-09): give --rtol and "
+                              "--atol each time)\n"),
+              std::string::npos)
+        << report.out;
+    EXPECT_TRUE(linesAfter(report.out, "  keep it: ").empty()) << report.out;
+  } else {
+    EXPECT_FALSE(linesAfter(report.out, "  keep it: ").empty()) << report.out;
+  }
+
+  // The reference, as report.md gives it: RK4 at T / steps.
+  const std::string md = test::readText(dir + "/out/report.md");
+  const std::size_t at = md.find(" steps); its own error");
+  ASSERT_NE(at, std::string::npos) << md;
+  const long long steps = std::stoll(md.substr(md.rfind('(', at) + 1));
+  char referenceDt[40];
+  std::snprintf(referenceDt, sizeof referenceDt, "%.17g", std::stod(T) / steps);
+  ASSERT_EQ(test::runJelloArgs({"--headless", "--time", T, "--integrator", "RK4", "--dt",
+                                referenceDt, "--dump", dir + "/reference.w", world})
+                .status,
+            0);
+  const State reference = readWorldFile(dir + "/reference.w").state;
+
+  const std::vector<CsvRow> rows = parseRows(test::readText(dir + "/out/report.csv"));
+  for (const std::string& line : runs) {
+    std::vector<std::string> words = shellWords(line);
+    ASSERT_GE(words.size(), 6u) << line;
+    EXPECT_EQ(words.front(), "./jello");
+    EXPECT_EQ(words.back(), world) << "the world's path, as given, unquoted again";
+    words.erase(words.begin());
+    words.insert(words.end() - 1, {"--headless", "--time", T, "--dump", dir + "/end.w"});
+    test::CommandResult run = test::runJelloArgs(words);
+    ASSERT_EQ(run.status, 0) << line << "\n" << run.err;
+    const double error = test::rmsDistance(readWorldFile(dir + "/end.w").state.p(), reference.p());
+    const double dt = std::stod(words[3]);  // --integrator NAME --dt DT [--rtol R --atol R]
+    const bool rk45 = words[4] == "--rtol";
+    EXPECT_EQ(rk45, words[1] == "RK45");
+    const CsvRow* measured = nullptr;
+    for (const CsvRow& r : rows)
+      if (r.integrator == words[1] && r.dt == dt && (!rk45 || r.tolerance == std::stod(words[5])))
+        measured = &r;
+    ASSERT_NE(measured, nullptr) << line;
+    EXPECT_NEAR(error, measured->rms, 1e-5 * measured->rms) << line;
+    EXPECT_EQ(::unlink((dir + "/end.w").c_str()), 0);
+  }
+
+  for (const std::string& line : linesAfter(report.out, "  keep it: ")) {
+    std::vector<std::string> words = shellWords(line);
+    ASSERT_EQ(words.size(), 9u) << line;
+    EXPECT_EQ(words[0], "./createWorld");
+    words[0] = JELLO_CREATE_WORLD;
+    ASSERT_EQ(test::runProgram(words).status, 0) << line;
+    const WorldFile made = readWorldFile(words[8]);
+    EXPECT_EQ(integratorName(made.world.integrator), words[4]);
+    EXPECT_EQ(made.world.dt, std::stod(words[6]));
+    EXPECT_EQ(words[8], folder + "/rotate-rk4.w");
+  }
+  test::removeTree(dir);
+}
+
+// RK4: settings a world file holds; RK45: tolerances it does not.
+INSTANTIATE_TEST_SUITE_P(Report, RecommendedCommands, ::testing::Values("RK4", "RK45"));
 
 // jello.w made stiff (kElastic 30000 N/m): RK4's search for its largest stable step halves T/8
 // five times, each halving a line of progress.
