@@ -212,6 +212,41 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
+OrderCheck checkOrder(const std::vector<ReportRow>& rows, Integrator integrator,
+                      double referenceError, const ContactActivity& contacts) {
+  OrderCheck check;
+  check.integrator = integrator;
+  check.theory = orderOf(integrator);
+  check.referenceError = referenceError;
+  const double floor = kFitFloor * referenceError;
+  check.fitted = fittedOrder(rows, integrator, floor);
+  if (sweepsTolerance(integrator) || std::isnan(check.fitted)) return check;
+  check.far = std::fabs(check.fitted - check.theory) > kOrderSlack;
+  if (!check.far) return check;
+  check.contacts = contacts.inContact > 0;
+  // The sweep's runs in the fit, and the largest of their steps.
+  std::vector<ReportRow> fitted;
+  for (const ReportRow& r : rows) {
+    if (r.integrator != integrator || r.worldsOwn) continue;
+    if (r.diverged)
+      check.divergedSteps = true;
+    else if (r.rmsError > floor)
+      fitted.push_back(r);
+  }
+  // fittedOrder found two runs or more above the floor: `fitted` is not empty.
+  check.finestError = fitted[0].rmsError;
+  for (const ReportRow& r : fitted) check.finestError = std::min(check.finestError, r.rmsError);
+  auto largest =
+      std::max_element(fitted.begin(), fitted.end(),
+                       [](const ReportRow& a, const ReportRow& b) { return a.dt < b.dt; });
+  check.largestStep = largest->dt;
+  fitted.erase(largest);
+  check.withoutLargest = fittedOrder(fitted, integrator, floor);
+  check.edgeOfStability = std::fabs(check.withoutLargest - check.theory) <= kOrderSlack;
+  check.nearReference = check.finestError < kReferenceMargin * referenceError;
+  return check;
+}
+
 namespace {
 
 // What every run of the study shares.
@@ -304,7 +339,39 @@ struct Reference {
   bool diverged = false;  // the reference or its check diverged: there is no report
   State end;
   double error = 0;  // m RMS: the reference's own, estimated against the run at half its step
+  ContactActivity contacts;
 };
+
+// The reference run: RK4 at T / steps, stepped one step at a time so that every state is looked
+// at for contacts; the same steps as simulate's advanceTo(T), since the step divides T.
+Run referenceRun(const Study& s, double dt, long long steps, ContactActivity* contacts) {
+  const auto& terms = s.model.scene.terms;
+  std::vector<char> pushed(terms.size(), 0);
+  auto look = [&](const State& state, double time) {
+    bool any = false;
+    for (std::size_t t = 0; t < terms.size(); ++t)
+      if (terms[t]->pointsInContact(state.p()) > 0) pushed[t] = any = true;
+    ++contacts->steps;
+    if (!any) return;
+    ++contacts->inContact;
+    if (std::isnan(contacts->firstContact)) contacts->firstContact = time;
+  };
+  Simulation simulation(s.model, s.start, Integrator::RK4, dt);
+  look(s.start, 0);
+  bool ran = true;
+  for (long long k = 1; ran && k < steps; ++k) {
+    ran = simulation.advance(1).ran();
+    if (ran) look(simulation.state(), simulation.time());
+  }
+  if (ran) ran = simulation.advanceTo(s.T).ran();
+  if (ran) look(simulation.state(), simulation.time());
+  for (std::size_t t = 0; t < terms.size(); ++t)
+    if (pushed[t]) contacts->touched.push_back(terms[t]->describe(s.start.p()).at(0).label);
+  Run run;
+  run.diverged = !ran;
+  run.end = simulation.state();
+  return run;
+}
 
 Reference runReference(const Study& s, double smallestStep) {
   Reference reference;
@@ -326,7 +393,7 @@ Reference runReference(const Study& s, double smallestStep) {
   } catch (const std::system_error&) {  // no thread to be had: the same work, one after the other
     runCheck();
   }
-  run = simulate(s.model, s.start, Integrator::RK4, reference.step, s.T);
+  run = referenceRun(s, reference.step, reference.steps, &reference.contacts);
   if (other.joinable()) other.join();
   reference.diverged = run.diverged || check.diverged;
   if (reference.diverged) return reference;
@@ -432,7 +499,7 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
      << "Reference: RK4 at dt = " << number(reference.step) << " s (" << reference.steps
      << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2)
      << " s, is " << number(reference.error) << " m RMS. Errors below "
-     << number(10 * reference.error)
+     << number(kFitFloor * reference.error)
      << " m are at the reference's limit and are left out of the fitted orders.\n\n"
      << "![error against run time](report.png)\n\n"
      << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max "
@@ -448,22 +515,23 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
   return md.str();
 }
 
-// report.md's fitted orders: each integrator's law, error ∝ dt^p (RK45: tolerance^p).
-std::string markdownOrders(const std::vector<ReportRow>& rows,
-                           const std::vector<Integrator>& integrators, double floor) {
+// report.md's fitted orders: each integrator's law, error ∝ dt^p (RK45: tolerance^p), and why a
+// fit far from its theory is, as far as the runs show.
+std::string markdownOrders(const std::vector<OrderCheck>& orders, const ContactActivity& contacts) {
   std::ostringstream md;
   md << "\n## Fitted orders\n\nThe slope p of log(error) against log(dt): error \u221d dt^p. "
         "RK45 sweeps its tolerance at one largest step, so its slope is against log(tolerance), "
         "error \u221d tolerance^p, and says nothing of an order in dt.\n\n"
      << "| integrator | fitted | theory |\n|---|---|---|\n";
-  for (Integrator integrator : integrators) {
-    md << "| " << integratorName(integrator) << " | "
-       << fittedLaw(integrator, fittedOrder(rows, integrator, floor)) << " | "
-       << (integrator == Integrator::RK45
-               ? std::string("none in the tolerance")
-               : "error \u221d dt^" + std::to_string(orderOf(integrator)))
+  for (const OrderCheck& c : orders) {
+    md << "| " << integratorName(c.integrator) << " | " << fittedLaw(c.integrator, c.fitted)
+       << (c.far ? " (far from its theory: see below)" : "") << " | "
+       << (sweepsTolerance(c.integrator) ? std::string("none in the tolerance")
+                                         : "error \u221d dt^" + std::to_string(c.theory))
        << " |\n";
   }
+  for (const OrderCheck& c : orders)
+    if (c.far) md << "\n" << orderWarning(c, contacts);
   return md.str();
 }
 
@@ -522,12 +590,12 @@ std::string markdownRecommendations(const std::string& worldPath,
 void writeReportFiles(const std::string& worldPath, const ReportOptions& options,
                       const std::vector<Integrator>& integrators,
                       const std::vector<ReportRow>& rows, const Reference& reference,
-                      const Recommendations& recommended) {
+                      const std::vector<OrderCheck>& orders, const Recommendations& recommended) {
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
-  const double T = options.time, floor = 10 * reference.error;
+  const double T = options.time, floor = kFitFloor * reference.error;
   const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
   const std::string md = markdownRuns(worldPath, T, reference, rows) +
-                         markdownOrders(rows, integrators, floor) +
+                         markdownOrders(orders, reference.contacts) +
                          markdownRecommendations(worldPath, recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
@@ -569,12 +637,14 @@ void printChoice(const std::string& what, const std::string& worldPath, const Ch
 // The lines on stdout: where the report is, and what it recommends.
 void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn,
                         std::size_t runs, const Reference& reference,
-                        const Recommendations& recommended) {
+                        const std::vector<OrderCheck>& orders, const Recommendations& recommended) {
   std::printf(
       "%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its "
       "error %.3g m\n",
       worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
       reference.step, reference.error);
+  for (const OrderCheck& c : orders)
+    if (c.far) std::printf("note: %s\n", orderWarningLine(c, reference.contacts).c_str());
   if (recommended.own && !recommended.own->diverged)
     printChoice("as accurate as the world's own", worldPath, recommended.asAccurate,
                 recommended.own);
@@ -622,16 +692,21 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
       rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
   }
   const Recommendations recommended = recommend(rows, options.visualTolerance);
+  std::vector<OrderCheck> orders;
+  for (Integrator integrator : integrators)
+    orders.push_back(checkOrder(rows, integrator, reference.error, reference.contacts));
   progress.finish();
 
   try {
-    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, recommended);
+    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, orders,
+                     recommended);
   } catch (const OutputError& e) {
     return failed(e.what());
   }
   const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
   const bool drawn = whyNotDrawn.empty();
-  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, recommended);
+  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, orders,
+                     recommended);
   if (drawn) return succeeded();
   // Without gnuplot the data files are the report; a gnuplot that failed is a failure.
   const std::string notDrawn = "report.png was not drawn: " + whyNotDrawn;

@@ -3,6 +3,7 @@
 // recommendations a user can run as printed.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,54 @@ std::string reportCsv(const std::vector<ReportRow>& rows);
 // fittedAgainst) over the rows of one integrator that did not diverge and whose error is above
 // `floor`; NaN with fewer than two such rows.
 double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, double floor);
+
+// The contacts (walls, plane: ForceTerm::pointsInContact) seen after every step of the
+// reference run, from the start to T. Where a contact switches on the force has a kink, and
+// no integrator keeps its order in dt across it.
+struct ContactActivity {
+  long long steps = 0;               // states looked at: the start and the end of every step
+  long long inContact = 0;           // of them, those with a point in contact
+  double firstContact = NAN;         // s: the first such state's time; NaN: none
+  std::vector<std::string> touched;  // the terms that pushed, as they name themselves: "plane"
+};
+
+// Errors below this many times the reference's own error are at the reference's limit and
+// left out of the fitted orders.
+constexpr double kFitFloor = 10;
+// A fitted order further than this from the theory's is flagged, with its likely reasons.
+constexpr double kOrderSlack = 0.5;
+// The finest runs' errors within this factor of the reference's own error are measured with
+// too blunt a ruler: the reference's error flattens the fitted line.
+constexpr double kReferenceMargin = 100;
+
+// An integrator's fitted order against the table's (integrators.h), and what the runs show of
+// why it is far from it. RK45 has no order in its tolerance: never far.
+struct OrderCheck {
+  Integrator integrator;
+  double fitted = NAN;  // fittedOrder; NaN with too few runs
+  int theory = 0;       // orderOf
+  bool far = false;     // |fitted - theory| > kOrderSlack
+  // The likely reasons, looked for only when far:
+  bool contacts = false;         // contacts acted during the run (ContactActivity)
+  bool divergedSteps = false;    // some of its sweep's steps diverged
+  bool edgeOfStability = false;  // without its largest step the fit is within kOrderSlack
+  double withoutLargest = NAN;   // the fit without its largest step
+  double largestStep = NAN;      // s
+  bool nearReference = false;    // its finest fitted error < kReferenceMargin * the reference's
+  double finestError = NAN;      // m: the smallest error in the fit
+  double referenceError = NAN;   // m: the reference's own
+};
+
+// The fit of `integrator` over `rows` (errors above kFitFloor * referenceError) against its
+// theory, with the reasons looked for when it is far.
+OrderCheck checkOrder(const std::vector<ReportRow>& rows, Integrator integrator,
+                      double referenceError, const ContactActivity& contacts);
+
+// For a student: why `check`'s fit is far from its theory, one paragraph of Markdown (the
+// reasons as a list); "" when it is not far. `contacts` names the surfaces and when.
+std::string orderWarning(const OrderCheck& check, const ContactActivity& contacts);
+// The same in one line for the summary on stdout: "RK4's fitted order is 0.99, not 4: ...".
+std::string orderWarningLine(const OrderCheck& check, const ContactActivity& contacts);
 
 // What an integrator's fitted slope is against: "dt", or "tolerance" for RK45, whose sweep is
 // of its tolerance at one largest step (so that its slope is no order in dt).

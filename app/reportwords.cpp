@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string_view>
+#include <vector>
 
 #include "app/report.h"
 #include "solver/integrators.h"
@@ -55,11 +56,115 @@ bool plainInShell(char c) {
          std::string_view("_-./:=@%+,").find(c) != std::string_view::npos;
 }
 
+// "the plane", "the walls and the plane".
+std::string surfacesText(const std::vector<std::string>& touched) {
+  std::string text;
+  for (std::size_t i = 0; i < touched.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == touched.size() ? " and " : ", ") + ("the " + touched[i]);
+  return text.empty() ? "a wall or the plane" : text;
+}
+
+// "41%", or "under 1%" for a contact of a few steps.
+std::string shareText(long long part, long long whole) {
+  const double percent = 100.0 * static_cast<double>(part) / static_cast<double>(whole);
+  if (percent < 1) return "under 1%";
+  char text[16];
+  std::snprintf(text, sizeof text, "%.0f%%", percent);
+  return text;
+}
+
+// A time just before `t` in two significant digits (0.0312 -> 0.031), for a --time that ends
+// before the first contact.
+std::string timeBefore(double t) {
+  const double unit = std::pow(10.0, std::floor(std::log10(t)) - 1);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", std::floor(t / unit) * unit);
+  return text;
+}
+
+// A figure in two significant digits: "1.2e-05", "0.031".
+std::string shortNumber(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", x);
+  return text;
+}
+
+// The contact reason of an order warning: where and when, why it matters, what to do.
+std::string contactReason(const OrderCheck& c, const ContactActivity& contacts) {
+  std::string text = "The cube touched " + surfacesText(contacts.touched) + " during " +
+                     shareText(contacts.inContact, contacts.steps) + " of the run";
+  if (contacts.firstContact > 0)
+    text += ", first at t = " + shortNumber(contacts.firstContact) + " s";
+  else
+    text += ", from the start";
+  text +=
+      ". A contact's force switches on abruptly when a point crosses the surface (a kink in the "
+      "force, and a jump where the contact has damping), and an integrator keeps its order only "
+      "while the forces are smooth: across contacts every integrator does about as well as a "
+      "first-order one. This is the physics of the world, not a fault of ";
+  text += integratorName(c.integrator);
+  if (contacts.firstContact > 0)
+    text += std::string(": to see its order, end the report before the first contact, ") +
+            "`--time " + timeBefore(contacts.firstContact) + "`";
+  return text + ".";
+}
+
 }  // namespace
+
+std::string orderWarning(const OrderCheck& c, const ContactActivity& contacts) {
+  if (!c.far) return "";
+  const std::string name = integratorName(c.integrator), theory = std::to_string(c.theory);
+  std::string text = "**" + name + ": " + fittedLaw(c.integrator, c.fitted) +
+                     ", where its theory says error \u221d dt^" + theory + ".** " + name +
+                     " is most likely not broken; the runs show why its errors do not shrink as "
+                     "dt^" +
+                     theory + ":\n\n";
+  if (c.contacts) text += "- " + contactReason(c, contacts) + "\n";
+  if (c.divergedSteps)
+    text +=
+        "- Some of its largest steps diverged (they are left out of the fit): the steps "
+        "swept reach its stability limit, near which the error grows faster than any power "
+        "of dt.\n";
+  if (c.edgeOfStability)
+    text += "- Its largest step, dt = " + exactNumber(c.largestStep) +
+            " s, is close to its stability limit, where the error grows faster than dt^" + theory +
+            ": without that run the fit is " + fittedLaw(c.integrator, c.withoutLargest) + ".\n";
+  if (c.nearReference)
+    text += "- Its smallest errors (down to " + shortNumber(c.finestError) + " m) are within " +
+            std::to_string(static_cast<int>(kReferenceMargin)) +
+            " times the reference's own error (" + shortNumber(c.referenceError) +
+            " m): the reference is too coarse a ruler for them, which flattens the line. A "
+            "shorter --time lets the reference take finer steps.\n";
+  if (!c.contacts && !c.divergedSteps && !c.edgeOfStability && !c.nearReference)
+    text +=
+        "- None of the usual causes (contacts, steps near the stability limit, the "
+        "reference's own error) shows in these runs: the steps swept may still be too large "
+        "for the error to follow dt^" +
+        theory + ".\n";
+  return text;
+}
+
+std::string orderWarningLine(const OrderCheck& c, const ContactActivity& contacts) {
+  if (!c.far) return "";
+  std::vector<std::string> reasons;
+  if (c.contacts)
+    reasons.push_back("the cube touched " + surfacesText(contacts.touched) + " during " +
+                      shareText(contacts.inContact, contacts.steps) +
+                      " of the run, and contacts are not smooth");
+  if (c.divergedSteps || c.edgeOfStability)
+    reasons.push_back("its largest steps are near its stability limit");
+  if (c.nearReference) reasons.push_back("its smallest errors are near the reference's own");
+  std::string line = std::string(integratorName(c.integrator)) + "'s fitted order is " +
+                     orderText(c.fitted) + ", not " + std::to_string(c.theory);
+  for (std::size_t i = 0; i < reasons.size(); ++i) line += (i == 0 ? ": " : "; ") + reasons[i];
+  return line + " (report.md says more)";
+}
 
 std::string exactNumber(double x) {
   char text[32];
-  const std::to_chars_result end = std::to_chars(text, text + sizeof text, x);
+  // The general format reads like %g (0.0005, 9.765625e-05), in the fewest digits that read back.
+  const std::to_chars_result end =
+      std::to_chars(text, text + sizeof text, x, std::chars_format::general);
   return std::string(text, end.ptr);
 }
 

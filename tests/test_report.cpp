@@ -337,6 +337,135 @@ TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
 // RK4: settings a world file holds; RK45: tolerances it does not.
 INSTANTIATE_TEST_SUITE_P(Report, RecommendedCommands, ::testing::Values("RK4", "RK45"));
 
+// A soft, spinning cube (createWorld's recipe), `where`: by a wall it hits, or in the middle of
+// the box. Soft, so that RK4 is stable at T/8 and the report takes a second or two.
+std::string writeSpinningCube(const std::string& dir, const std::vector<std::string>& where) {
+  const std::string path = dir + "/spinning.w";
+  std::vector<std::string> argv = {JELLO_CREATE_WORLD,
+                                   "--k-elastic",
+                                   "5",
+                                   "--d-elastic",
+                                   "0.02",
+                                   "--k-collision",
+                                   "50",
+                                   "--d-collision",
+                                   "0.25",
+                                   "--spin",
+                                   "0",
+                                   "0",
+                                   "6",
+                                   "-o",
+                                   path};
+  argv.insert(argv.end(), where.begin(), where.end());
+  EXPECT_EQ(test::runProgram(argv).status, 0);
+  return path;
+}
+
+// The fitted p of report.md's "| NAME | error ∝ dt^p" row; NaN without one.
+double fittedInTable(const std::string& md, const std::string& name) {
+  const std::string row = "| " + name + " | error \u221d dt^";
+  const std::size_t at = md.find(row);
+  return at == std::string::npos ? NAN : std::stod(md.substr(at + row.size()));
+}
+
+// A cube that hits a wall: RK4's errors shrink about as dt^1, and the report says that the
+// contacts are why, when they began, and what --time ends before them; the same cube in the
+// middle of the box fits dt^4 and gets no such note.
+TEST(ReportOrders, AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun) {
+  const std::string dir = test::makeTempDir();
+  const std::string world =
+      writeSpinningCube(dir, {"--center", "1.45", "0", "0", "--velocity", "2", "0", "0"});
+  test::CommandResult r = test::runJelloArgs(
+      {"--report", dir + "/out", "--time", "0.05", "--integrators", "RK4", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: RK4's fitted order is "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", not 4: the cube touched the walls during "), std::string::npos) << r.out;
+  const std::string md = test::readText(dir + "/out/report.md");
+  EXPECT_LT(fittedInTable(md, "RK4"), 2) << md;
+  EXPECT_NE(md.find("**RK4: error \u221d dt^1."), std::string::npos) << md;
+  EXPECT_NE(md.find("- The cube touched the walls during "), std::string::npos) << md;
+  EXPECT_NE(md.find("not a fault of RK4"), std::string::npos) << md;
+  EXPECT_EQ(md.find("The cube touched the plane"), std::string::npos) << "this world has none";
+  test::removeTree(dir + "/out");
+
+  const std::string smooth = writeSpinningCube(dir, {"--force", "--center", "0", "0", "0"});
+  r = test::runJelloArgs(
+      {"--report", dir + "/out", "--time", "0.05", "--integrators", "RK4", smooth});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;
+  const std::string smoothMd = test::readText(dir + "/out/report.md");
+  EXPECT_NEAR(fittedInTable(smoothMd, "RK4"), 4, kOrderSlack) << smoothMd;
+  EXPECT_EQ(smoothMd.find("touched"), std::string::npos) << smoothMd;
+  test::removeTree(dir);
+}
+
+// Rows of one integrator's sweep with errors E dt^order from dt = 0.01 down by halves.
+std::vector<ReportRow> sweep(Integrator integrator, const std::vector<double>& errors) {
+  std::vector<ReportRow> rows;
+  double dt = 0.01;
+  for (double error : errors) {
+    ReportRow r;
+    r.integrator = integrator;
+    r.dt = dt;
+    r.rmsError = error;
+    rows.push_back(r);
+    dt /= 2;
+  }
+  return rows;
+}
+
+TEST(ReportOrders, TheReasonsForAFarFitAreTheOnesTheRunsShow) {
+  const ContactActivity none{100, 0, NAN, {}};
+  const ContactActivity walls{100, 41, 0.0312, {"walls", "plane"}};
+  // RK4 at dt^4: not far, no words.
+  OrderCheck c = checkOrder(sweep(Integrator::RK4, {1e-2, 6.25e-4, 3.9e-5, 2.44e-6}),
+                            Integrator::RK4, 1e-15, walls);
+  EXPECT_NEAR(c.fitted, 4, 0.01);
+  EXPECT_FALSE(c.far);
+  EXPECT_EQ(orderWarning(c, walls), "");
+  // RK4 at dt^1 with contacts: contacts, and a --time before the first.
+  c = checkOrder(sweep(Integrator::RK4, {8e-3, 4e-3, 2e-3, 1e-3}), Integrator::RK4, 1e-15, walls);
+  EXPECT_NEAR(c.fitted, 1, 1e-9);
+  EXPECT_TRUE(c.far && c.contacts);
+  EXPECT_FALSE(c.edgeOfStability || c.nearReference || c.divergedSteps);
+  std::string words = orderWarning(c, walls);
+  EXPECT_NE(words.find("- The cube touched the walls and the plane during 41% of the run, first "
+                       "at t = 0.031 s."),
+            std::string::npos)
+      << words;
+  EXPECT_NE(words.find("`--time 0.031`"), std::string::npos) << words;
+  EXPECT_EQ(orderWarningLine(c, walls),
+            "RK4's fitted order is 1.00, not 4: the cube touched the walls and the plane during "
+            "41% of the run, and contacts are not smooth (report.md says more)");
+  // EULER whose largest step is near its limit: 16 times the next error, then dt^1.
+  c = checkOrder(sweep(Integrator::Euler, {0.16, 1e-2, 5e-3, 2.5e-3}), Integrator::Euler, 1e-15,
+                 none);
+  EXPECT_TRUE(c.far && c.edgeOfStability);
+  EXPECT_FALSE(c.contacts || c.nearReference);
+  EXPECT_EQ(c.largestStep, 0.01);
+  EXPECT_NEAR(c.withoutLargest, 1, 1e-9);
+  EXPECT_NE(orderWarning(c, none).find("- Its largest step, dt = 0.01 s, is close to its "
+                                       "stability limit"),
+            std::string::npos);
+  // MIDPOINT flattened by a reference only 10 to 100 times below its errors.
+  c = checkOrder(sweep(Integrator::Midpoint, {4e-6, 2e-6, 1.2e-6, 1e-6}), Integrator::Midpoint,
+                 5e-8, none);
+  EXPECT_TRUE(c.far && c.nearReference);
+  EXPECT_EQ(c.finestError, 1e-6);
+  EXPECT_NE(orderWarning(c, none).find("within 100 times the reference's own error (5e-08 m)"),
+            std::string::npos)
+      << orderWarning(c, none);
+  // None of them: said so.
+  c = checkOrder(sweep(Integrator::Verlet, {1e-2, 9e-3, 8e-3, 7e-3}), Integrator::Verlet, 1e-15,
+                 none);
+  EXPECT_NE(orderWarning(c, none).find("- None of the usual causes"), std::string::npos);
+  // RK45's slope is against its tolerance: never held against an order.
+  std::vector<ReportRow> rk45 = sweep(Integrator::RK45, {1e-3, 9e-4});
+  rk45[0].tolerances = {1e-2, 1e-2};
+  rk45[1].tolerances = {1e-3, 1e-3};
+  EXPECT_FALSE(checkOrder(rk45, Integrator::RK45, 1e-15, walls).far);
+}
+
 // jello.w made stiff (kElastic 30000 N/m): RK4's search for its largest stable step halves T/8
 // five times, each halving a line of progress.
 std::string writeStiffJello(const std::string& dir) {
