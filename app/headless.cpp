@@ -57,8 +57,9 @@ class RunProgress {
   // The last line says the run is done, then ends: the summary starts a line of its own.
   void finish(long long total) {
     if (line_.shown())
-      line_.show(textf("step %lld/%lld (100%%) in %.1f s", total, total, secondsSince(start_)));
-    line_.finish();
+      line_.finish(textf("step %lld/%lld (100%%) in %.1f s", total, total, secondsSince(start_)));
+    else
+      line_.finish();
   }
 
  private:

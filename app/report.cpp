@@ -91,19 +91,43 @@ double rms(const State& a, const State& b, double* largest) {
   return std::sqrt(sum / kNumPoints);
 }
 
-// The report's progress line: what runs now, and how many of the report's runs have begun.
+// RK45 sweeps its tolerance, not its step, and so needs no search for a largest stable step.
+bool sweepsTolerance(Integrator integrator) { return integrator == Integrator::RK45; }
+
+// The items the progress line counts: each integrator's search for its largest stable step
+// (one item, however many halvings it takes), its sweep's runs, the world's own setting (an
+// item even when a sweep has measured it) and the reference.
+int reportItemCount(const std::vector<Integrator>& integrators) {
+  int items = 2;
+  for (Integrator integrator : integrators)
+    items += kSweepLength + (sweepsTolerance(integrator) ? 0 : 1);
+  return items;
+}
+
+// The report's progress line: what runs now, and how many of the reportItemCount() items
+// have begun. The count ends on its total, and the last line stays (finish).
 class ReportProgress {
  public:
-  explicit ReportProgress(int total) : total_(total) {}
-  void finish() { line_.finish(); }
-  void show(const std::string& what) {
-    ++done_;
-    line_.show("report: " + what + " (" + std::to_string(done_) + "/" + std::to_string(total_) +
-               ")");
+  explicit ReportProgress(int total) : total_(total), begin_(Clock::now()) {}
+  // The next item begins.
+  void next(const std::string& what) {
+    ++begun_;
+    update(what);
+  }
+  // What the current item does now (a search's next halving), with the same count.
+  void update(const std::string& what) { line_.show("report: " + what + " (" + count() + ")"); }
+  // "report: done, 45/45 in 12 s" and a newline, before the summary on stdout.
+  void finish() {
+    const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
+    char took[32];
+    std::snprintf(took, sizeof took, "%.0f s", seconds);
+    line_.finish("report: done, " + count() + " in " + took);
   }
 
  private:
-  int total_, done_ = 0;
+  std::string count() const { return std::to_string(begun_) + "/" + std::to_string(total_); }
+  int total_, begun_ = 0;
+  Clock::time_point begin_;
   Progress line_;
 };
 
@@ -111,18 +135,6 @@ std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", x);
   return text;
-}
-
-// "3.2 times as fast as the world's own", or "... slower than ...".
-std::string speedup(double ratio) {
-  return ratio >= 1 ? number(ratio) + " times as fast as the world's own"
-                    : number(1 / ratio) + " times slower than the world's own";
-}
-
-std::string describeSetting(const ReportRow& r) {
-  std::string s = std::string(integratorName(r.integrator)) + " dt=" + number(r.dt);
-  if (r.integrator == Integrator::RK45) s += " tolerance=" + number(r.tolerance);
-  return s;
 }
 
 std::string gnuplotScript(const std::vector<ReportRow>& rows,
@@ -143,12 +155,9 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
       }
     gp << "EOD\n";
     if (points == 0) continue;
-    double order = fittedOrder(rows, integrator, floor);
-    std::string label =
-        name + (std::isnan(order) ? std::string()
-                                  : " (order " + number(std::round(order * 100) / 100) + ")");
     plots += (plots.empty() ? "" : ", ") + std::string("$") + name +
-             " using 1:2 with linespoints lw 2 pt 7 title '" + label + "'";
+             " using 1:2 with linespoints lw 2 pt 7 title " +
+             gnuplotString(legendLabel(integrator, fittedOrder(rows, integrator, floor)));
   }
   gp << "$OWN << EOD\n";
   for (const ReportRow& r : rows)
@@ -158,7 +167,7 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"
      << "set output png\n"
-     << "set title " << gnuplotString(title) << "\n"
+     << "set title " << gnuplotString(title) << " noenhanced\n"
      << "set logscale xy\n"
      << "set format x '10^{%L}'\nset format y '10^{%L}'\n"
      << "set xlabel 'wall time of the run (s)'\n"
@@ -177,11 +186,11 @@ std::string reportCsv(const std::vector<ReportRow>& rows) {
   csv << "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status\n";
   for (const ReportRow& r : rows) {
     char line[256];
-    std::snprintf(line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n",
-                  integratorName(r.integrator), r.dt,
-                  r.integrator == Integrator::RK45 ? number(r.tolerance).c_str() : "", r.steps,
-                  r.evaluations, r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
-                  r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
+    std::snprintf(
+        line, sizeof line, "%s,%.9g,%s,%lld,%lld,%.6g,%s,%s,%s\n", integratorName(r.integrator),
+        r.dt, r.integrator == Integrator::RK45 ? number(r.tolerances.rtol).c_str() : "", r.steps,
+        r.evaluations, r.wallSeconds, r.diverged ? "" : number(r.rmsError).c_str(),
+        r.diverged ? "" : number(r.maxError).c_str(), r.diverged ? "diverged" : "ok");
     csv << line;
   }
   return csv.str();
@@ -191,7 +200,7 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const ReportRow& r : rows) {
     if (r.integrator != integrator || r.diverged || r.worldsOwn || !(r.rmsError > floor)) continue;
-    double x = std::log(integrator == Integrator::RK45 ? r.tolerance : r.dt),
+    double x = std::log(integrator == Integrator::RK45 ? r.tolerances.rtol : r.dt),
            y = std::log(r.rmsError);
     n += 1;
     sx += x;
@@ -201,6 +210,41 @@ double fittedOrder(const std::vector<ReportRow>& rows, Integrator integrator, do
   }
   if (n < 2 || n * sxx - sx * sx == 0) return NAN;
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+OrderCheck checkOrder(const std::vector<ReportRow>& rows, Integrator integrator,
+                      double referenceError, const ContactActivity& contacts) {
+  OrderCheck check;
+  check.integrator = integrator;
+  check.theory = orderOf(integrator);
+  check.referenceError = referenceError;
+  const double floor = kFitFloor * referenceError;
+  check.fitted = fittedOrder(rows, integrator, floor);
+  if (sweepsTolerance(integrator) || std::isnan(check.fitted)) return check;
+  check.far = std::fabs(check.fitted - check.theory) > kOrderSlack;
+  if (!check.far) return check;
+  check.contacts = contacts.inContact > 0;
+  // The sweep's runs in the fit, and the largest of their steps.
+  std::vector<ReportRow> fitted;
+  for (const ReportRow& r : rows) {
+    if (r.integrator != integrator || r.worldsOwn) continue;
+    if (r.diverged)
+      check.divergedSteps = true;
+    else if (r.rmsError > floor)
+      fitted.push_back(r);
+  }
+  // fittedOrder found two runs or more above the floor: `fitted` is not empty.
+  check.finestError = fitted[0].rmsError;
+  for (const ReportRow& r : fitted) check.finestError = std::min(check.finestError, r.rmsError);
+  auto largest =
+      std::max_element(fitted.begin(), fitted.end(),
+                       [](const ReportRow& a, const ReportRow& b) { return a.dt < b.dt; });
+  check.largestStep = largest->dt;
+  fitted.erase(largest);
+  check.withoutLargest = fittedOrder(fitted, integrator, floor);
+  check.edgeOfStability = std::fabs(check.withoutLargest - check.theory) <= kOrderSlack;
+  check.nearReference = check.finestError < kReferenceMargin * referenceError;
+  return check;
 }
 
 namespace {
@@ -227,8 +271,8 @@ double largestStableStep(const Study& s, Integrator integrator) {
   Run previous = simulate(s.model, s.start, integrator, s.T / kLargestStepDivisor, s.T);
   for (int k = 0; k < kSearchHalvings; ++k) {
     double dt = s.T / (kLargestStepDivisor << k);
-    s.progress.show(std::string("finding ") + integratorName(integrator) +
-                    "'s largest stable step, dt=" + number(dt));
+    s.progress.update(std::string("finding ") + integratorName(integrator) +
+                      "'s largest stable step, dt=" + number(dt));
     Run half = simulate(s.model, s.start, integrator, dt / 2, s.T);
     double ignored;
     if (!previous.diverged && !half.diverged && rms(previous.end, half.end, &ignored) < kSameEnd)
@@ -241,22 +285,27 @@ double largestStableStep(const Study& s, Integrator integrator) {
 // One integrator's sweep: its largest stable step, then halvings; RK45 sweeps its tolerance
 // instead.
 void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
-  const double largest = integrator == Integrator::RK45 ? 0 : largestStableStep(s, integrator);
+  double largest = 0;
+  if (!sweepsTolerance(integrator)) {
+    s.progress.next(std::string("finding ") + integratorName(integrator) +
+                    "'s largest stable step");
+    largest = largestStableStep(s, integrator);
+  }
   for (int i = 0; i < kSweepLength; ++i) {
     ReportRow row;
     row.integrator = integrator;
     Tolerances tolerances;
-    if (integrator == Integrator::RK45) {
+    if (sweepsTolerance(integrator)) {
       // Its largest step as large as anyone's first try, so that the tolerance alone
       // decides the steps it takes.
       row.dt = s.T / kLargestStepDivisor;
-      row.tolerance = kRk45Tolerances[i];
-      tolerances = {row.tolerance, row.tolerance};
+      tolerances = {kRk45Tolerances[i], kRk45Tolerances[i]};
+      row.tolerances = tolerances;
     } else {
       row.dt = largest / (1 << i);
       m->smallestStep = std::min(m->smallestStep, row.dt);
     }
-    s.progress.show(describeSetting(row));
+    s.progress.next(settingText(row));
     m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
     m->rows.push_back(row);
   }
@@ -270,13 +319,14 @@ void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tole
   });
   if (own != m->rows.end()) {
     own->worldsOwn = true;
+    s.progress.next("the world's own setting: measured in its sweep");
     return;
   }
-  s.progress.show(std::string("the world's own ") + integratorName(world.integrator));
+  s.progress.next(std::string("the world's own ") + integratorName(world.integrator));
   ReportRow row;
   row.integrator = world.integrator;
   row.dt = world.dt;
-  row.tolerance = world.integrator == Integrator::RK45 ? tolerances.rtol : 0;
+  if (world.integrator == Integrator::RK45) row.tolerances = tolerances;
   row.worldsOwn = true;
   m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
   m->rows.push_back(row);
@@ -289,7 +339,39 @@ struct Reference {
   bool diverged = false;  // the reference or its check diverged: there is no report
   State end;
   double error = 0;  // m RMS: the reference's own, estimated against the run at half its step
+  ContactActivity contacts;
 };
+
+// The reference run: RK4 at T / steps, stepped one step at a time so that every state is looked
+// at for contacts; the same steps as simulate's advanceTo(T), since the step divides T.
+Run referenceRun(const Study& s, double dt, long long steps, ContactActivity* contacts) {
+  const auto& terms = s.model.scene.terms;
+  std::vector<char> pushed(terms.size(), 0);
+  auto look = [&](const State& state, double time) {
+    bool any = false;
+    for (std::size_t t = 0; t < terms.size(); ++t)
+      if (terms[t]->pointsInContact(state.p()) > 0) pushed[t] = any = true;
+    ++contacts->steps;
+    if (!any) return;
+    ++contacts->inContact;
+    if (std::isnan(contacts->firstContact)) contacts->firstContact = time;
+  };
+  Simulation simulation(s.model, s.start, Integrator::RK4, dt);
+  look(s.start, 0);
+  bool ran = true;
+  for (long long k = 1; ran && k < steps; ++k) {
+    ran = simulation.advance(1).ran();
+    if (ran) look(simulation.state(), simulation.time());
+  }
+  if (ran) ran = simulation.advanceTo(s.T).ran();
+  if (ran) look(simulation.state(), simulation.time());
+  for (std::size_t t = 0; t < terms.size(); ++t)
+    if (pushed[t]) contacts->touched.push_back(terms[t]->describe(s.start.p()).at(0).label);
+  Run run;
+  run.diverged = !ran;
+  run.end = simulation.state();
+  return run;
+}
 
 Reference runReference(const Study& s, double smallestStep) {
   Reference reference;
@@ -298,7 +380,7 @@ Reference runReference(const Study& s, double smallestStep) {
          s.T / reference.steps > smallestStep / kReferenceRefinement)
     reference.steps *= 2;
   reference.step = s.T / reference.steps;
-  s.progress.show("the reference, RK4 dt=" + number(reference.step) +
+  s.progress.next("the reference, RK4 dt=" + number(reference.step) +
                   " and dt=" + number(reference.step / 2));
   // The reference and its check run at once, one on each core, after the timed runs.
   Run run, check;
@@ -311,7 +393,7 @@ Reference runReference(const Study& s, double smallestStep) {
   } catch (const std::system_error&) {  // no thread to be had: the same work, one after the other
     runCheck();
   }
-  run = simulate(s.model, s.start, Integrator::RK4, reference.step, s.T);
+  run = referenceRun(s, reference.step, reference.steps, &reference.contacts);
   if (other.joinable()) other.join();
   reference.diverged = run.diverged || check.diverged;
   if (reference.diverged) return reference;
@@ -321,28 +403,86 @@ Reference runReference(const Study& s, double smallestStep) {
   return reference;
 }
 
+// One recommendation: the cheapest run within an error and, when no world file can hold its
+// setting (RK45's tolerances), the cheapest run within that error one can. Into the rows; null
+// when there is none.
+struct Choice {
+  const ReportRow* best = nullptr;
+  const ReportRow* inWorldFile = nullptr;  // only when best is not worldFileHolds
+};
+
 // What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
-// within the visual tolerance. Pointers into the rows; null when there is none.
+// within the visual tolerance.
 struct Recommendations {
   const ReportRow* own = nullptr;
-  const ReportRow* asAccurate = nullptr;
-  const ReportRow* looksSame = nullptr;
+  Choice asAccurate, looksSame;
 };
+
+Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit) {
+  auto cheapest = [&](bool inWorldFile) {
+    const ReportRow* best = nullptr;
+    for (const ReportRow& row : rows)
+      if (!row.diverged && row.rmsError <= limit && (!inWorldFile || worldFileHolds(row)) &&
+          (!best || row.wallSeconds < best->wallSeconds))
+        best = &row;
+    return best;
+  };
+  Choice choice;
+  choice.best = cheapest(false);
+  if (choice.best && !worldFileHolds(*choice.best)) choice.inWorldFile = cheapest(true);
+  return choice;
+}
 
 Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance) {
   Recommendations r;
   for (const ReportRow& row : rows)
     if (row.worldsOwn) r.own = &row;
-  auto cheapest = [&](double limit) {
-    const ReportRow* best = nullptr;
-    for (const ReportRow& row : rows)
-      if (!row.diverged && row.rmsError <= limit && (!best || row.wallSeconds < best->wallSeconds))
-        best = &row;
-    return best;
-  };
-  r.asAccurate = r.own && !r.own->diverged ? cheapest(r.own->rmsError) : nullptr;
-  r.looksSame = cheapest(visualTolerance);
+  if (r.own && !r.own->diverged) r.asAccurate = cheapestWithin(rows, r.own->rmsError);
+  r.looksSame = cheapestWithin(rows, visualTolerance);
   return r;
+}
+
+// What to tell about one recommended run: its setting and figures, the command that runs it,
+// and the one that keeps it in a world file ("" when no world file can).
+struct Advice {
+  std::string setting;  // "MIDPOINT dt=0.00078125: 0.0141 s, error 8.11e-08 m, 2.3 times ..."
+  std::string run, keep;
+};
+
+Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own) {
+  Advice advice;
+  advice.setting = settingText(row) + ": " + number(row.wallSeconds) + " s, error " +
+                   number(row.rmsError) + " m";
+  if (own && !own->diverged && own->wallSeconds > 0 && row.wallSeconds > 0)
+    advice.setting += ", " + speedAgainstOwn(own->wallSeconds, row.wallSeconds);
+  advice.run = shellLine(runCommand(worldPath, row));
+  const std::vector<std::string> keep = worldFileCommand(worldPath, row);
+  if (!keep.empty()) advice.keep = shellLine(keep);
+  return advice;
+}
+
+// Why a recommended RK45 run has no createWorld command.
+std::string noWorldFileNote() {
+  const Tolerances defaults;
+  return "a world file holds RK45 and its dt but not its tolerances (RK45 from a world file runs "
+         "at rtol=" +
+         exactNumber(defaults.rtol) + " atol=" + exactNumber(defaults.atol) +
+         "): give --rtol and --atol each time";
+}
+
+// `text` as a Markdown code span, whatever backquotes it holds.
+std::string codeSpan(const std::string& text) {
+  std::size_t longest = 0, run = 0;
+  for (char c : text) longest = std::max(longest, run = c == '`' ? run + 1 : 0);
+  const std::string fence(longest + 1, '`');
+  return fence + (longest ? " " + text + " " : text) + fence;
+}
+
+// RK45's tolerances in report.md's table: "1e-06" when rtol = atol, as the sweep sets them.
+std::string toleranceCell(const ReportRow& r) {
+  if (r.integrator != Integrator::RK45) return "";
+  const Tolerances& t = r.tolerances;
+  return t.rtol == t.atol ? number(t.rtol) : "rtol " + number(t.rtol) + ", atol " + number(t.atol);
 }
 
 // report.md's head and its table of runs.
@@ -359,7 +499,7 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
      << "Reference: RK4 at dt = " << number(reference.step) << " s (" << reference.steps
      << " steps); its own error, estimated against RK4 at dt = " << number(reference.step / 2)
      << " s, is " << number(reference.error) << " m RMS. Errors below "
-     << number(10 * reference.error)
+     << number(kFitFloor * reference.error)
      << " m are at the reference's limit and are left out of the fitted orders.\n\n"
      << "![error against run time](report.png)\n\n"
      << "| integrator | dt (s) | tolerance | steps | evaluations | wall (s) | RMS error (m) | max "
@@ -367,65 +507,81 @@ std::string markdownRuns(const std::string& worldPath, double T, const Reference
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const ReportRow& r : rows) {
     md << "| " << integratorName(r.integrator) << (r.worldsOwn ? " (the world's own)" : "") << " | "
-       << number(r.dt) << " | " << (r.integrator == Integrator::RK45 ? number(r.tolerance) : "")
-       << " | " << r.steps << " | " << r.evaluations << " | " << number(r.wallSeconds) << " | "
+       << exactNumber(r.dt) << " | " << toleranceCell(r) << " | " << r.steps << " | "
+       << r.evaluations << " | " << number(r.wallSeconds) << " | "
        << (r.diverged ? "" : number(r.rmsError)) << " | " << (r.diverged ? "" : number(r.maxError))
        << " | " << (r.diverged ? "diverged" : "ok") << " |\n";
   }
   return md.str();
 }
 
-// report.md's fitted orders.
-std::string markdownOrders(const std::vector<ReportRow>& rows,
-                           const std::vector<Integrator>& integrators, double floor) {
+// report.md's fitted orders: each integrator's law, error ∝ dt^p (RK45: tolerance^p), and why a
+// fit far from its theory is, as far as the runs show.
+std::string markdownOrders(const std::vector<OrderCheck>& orders, const ContactActivity& contacts) {
   std::ostringstream md;
-  md << "\n## Fitted orders\n\nThe slope of log(error) against log(dt) (RK45: against "
-        "log(tolerance)).\n\n"
-     << "| integrator | fitted order | theory |\n|---|---|---|\n";
-  for (Integrator integrator : integrators) {
-    double order = fittedOrder(rows, integrator, floor);
-    md << "| " << integratorName(integrator) << " | "
-       << (std::isnan(order) ? std::string("n/a") : number(order)) << " | "
-       << (integrator == Integrator::RK45 ? std::string("(tolerance)")
-                                          : std::to_string(orderOf(integrator)))
+  md << "\n## Fitted orders\n\nThe slope p of log(error) against log(dt): error \u221d dt^p. "
+        "RK45 sweeps its tolerance at one largest step, so its slope is against log(tolerance), "
+        "error \u221d tolerance^p, and says nothing of an order in dt.\n\n"
+     << "| integrator | fitted | theory |\n|---|---|---|\n";
+  for (const OrderCheck& c : orders) {
+    md << "| " << integratorName(c.integrator) << " | " << fittedLaw(c.integrator, c.fitted)
+       << (c.far ? " (far from its theory: see below)" : "") << " | "
+       << (sweepsTolerance(c.integrator) ? std::string("none in the tolerance")
+                                         : "error \u221d dt^" + std::to_string(c.theory))
        << " |\n";
   }
+  for (const OrderCheck& c : orders)
+    if (c.far) md << "\n" << orderWarning(c, contacts);
   return md.str();
 }
 
+// report.md's lines for one recommended run, as a list under its item.
+void markdownAdvice(const std::string& worldPath, const ReportRow& row, const ReportRow* own,
+                    std::ostringstream& md) {
+  const Advice advice = advise(worldPath, row, own);
+  md << advice.setting << ".\n  - Run it: " << codeSpan(advice.run) << "\n";
+  if (!advice.keep.empty()) md << "  - Keep it in a world file: " << codeSpan(advice.keep) << "\n";
+}
+
 // report.md's recommendations.
-std::string markdownRecommendations(const Recommendations& recommended, double visualTolerance) {
-  const ReportRow* ownRow = recommended.own;
+std::string markdownRecommendations(const std::string& worldPath,
+                                    const Recommendations& recommended, double visualTolerance) {
+  const ReportRow* own = recommended.own;
   std::ostringstream md;
   md << "\n## Recommendations\n\n";
-  if (ownRow) {
-    md << "The world's own setting, " << describeSetting(*ownRow) << ", "
-       << (ownRow->diverged ? std::string("diverges before T.")
-                            : "takes " + number(ownRow->wallSeconds) + " s for an error of " +
-                                  number(ownRow->rmsError) + " m.")
+  if (own) {
+    md << "The world's own setting, " << settingText(*own) << ", "
+       << (own->diverged ? std::string("diverges before T.")
+                         : "takes " + number(own->wallSeconds) + " s for an error of " +
+                               number(own->rmsError) + " m.")
        << "\n\n";
   }
-  auto recommendation = [&](const char* what, const ReportRow* r) {
+  auto recommendation = [&](const std::string& what, const Choice& choice) {
     md << "- **" << what << "**: ";
-    if (!r) {
+    if (!choice.best) {
       md << "none of the runs.\n";
-      return;
-    }
-    if (r == ownRow) {
+    } else if (choice.best == own) {
       md << "the world's own setting; nothing cheaper is as accurate.\n";
-      return;
+    } else {
+      markdownAdvice(worldPath, *choice.best, own, md);
     }
-    md << describeSetting(*r) << ": " << number(r->wallSeconds) << " s, error "
-       << number(r->rmsError) << " m";
-    if (ownRow && !ownRow->diverged && r->wallSeconds > 0)
-      md << ", " << speedup(ownRow->wallSeconds / r->wallSeconds);
-    md << ".\n";
+    if (!choice.best || worldFileHolds(*choice.best)) return;
+    md << "  - " << noWorldFileNote() << ". The cheapest setting a world file can hold: ";
+    if (!choice.inWorldFile)
+      md << "none of the runs.\n";
+    else if (choice.inWorldFile == own)
+      md << "the world's own.\n";
+    else
+      markdownAdvice(worldPath, *choice.inWorldFile, own, md);
   };
-  recommendation("The cheapest setting at least as accurate as the world's own",
-                 recommended.asAccurate);
+  if (own && own->diverged)
+    md << "- **The cheapest setting at least as accurate as the world's own**: the world's own "
+          "diverges, so any run that does not is more accurate; see the next.\n";
+  else
+    recommendation("The cheapest setting at least as accurate as the world's own",
+                   recommended.asAccurate);
   recommendation(
-      ("The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)")
-          .c_str(),
+      "The cheapest setting within the visual tolerance (" + number(visualTolerance) + " m RMS)",
       recommended.looksSame);
   return md.str();
 }
@@ -434,39 +590,66 @@ std::string markdownRecommendations(const Recommendations& recommended, double v
 void writeReportFiles(const std::string& worldPath, const ReportOptions& options,
                       const std::vector<Integrator>& integrators,
                       const std::vector<ReportRow>& rows, const Reference& reference,
-                      const Recommendations& recommended) {
+                      const std::vector<OrderCheck>& orders, const Recommendations& recommended) {
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
-  const double T = options.time, floor = 10 * reference.error;
+  const double T = options.time, floor = kFitFloor * reference.error;
   const std::string title = worldPath + ": error at T = " + number(T) + " s against run time";
   const std::string md = markdownRuns(worldPath, T, reference, rows) +
-                         markdownOrders(rows, integrators, floor) +
-                         markdownRecommendations(recommended, options.visualTolerance);
+                         markdownOrders(orders, reference.contacts) +
+                         markdownRecommendations(worldPath, recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
   writeFileWhole(options.dir + "/report.gp",
                  gnuplotScript(rows, integrators, floor, options.visualTolerance, title), existing);
 }
 
+// The lines on stdout for one recommendation ("as accurate as the world's own"): the setting,
+// the command that runs it, and the one that keeps it in a world file.
+void printChoice(const std::string& what, const std::string& worldPath, const Choice& choice,
+                 const ReportRow* own) {
+  if (!choice.best) {
+    std::printf("%s: none of the runs\n", what.c_str());
+    return;
+  }
+  if (choice.best == own) {
+    std::printf("%s: nothing cheaper than the world's own setting\n", what.c_str());
+    return;
+  }
+  auto print = [&](const ReportRow& row) {
+    const Advice advice = advise(worldPath, row, own);
+    std::printf("  run it:  %s\n", advice.run.c_str());
+    if (!advice.keep.empty()) std::printf("  keep it: %s\n", advice.keep.c_str());
+  };
+  std::printf("%s: %s\n", what.c_str(), advise(worldPath, *choice.best, own).setting.c_str());
+  print(*choice.best);
+  if (worldFileHolds(*choice.best)) return;
+  std::printf("  (%s)\n", noWorldFileNote().c_str());
+  if (!choice.inWorldFile || choice.inWorldFile == own) {
+    std::printf("  the cheapest setting a world file can hold: %s\n",
+                choice.inWorldFile ? "the world's own" : "none of the runs");
+    return;
+  }
+  std::printf("  the cheapest setting a world file can hold: %s\n",
+              advise(worldPath, *choice.inWorldFile, own).setting.c_str());
+  print(*choice.inWorldFile);
+}
+
 // The lines on stdout: where the report is, and what it recommends.
 void printReportSummary(const std::string& worldPath, const ReportOptions& options, bool drawn,
                         std::size_t runs, const Reference& reference,
-                        const Recommendations& recommended) {
-  const ReportRow *ownRow = recommended.own, *asAccurate = recommended.asAccurate,
-                  *looksSame = recommended.looksSame;
+                        const std::vector<OrderCheck>& orders, const Recommendations& recommended) {
   std::printf(
       "%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its "
       "error %.3g m\n",
       worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
       reference.step, reference.error);
-  if (asAccurate == ownRow && ownRow)
-    std::printf("as accurate as the world's own: nothing cheaper than the world's own setting\n");
-  else if (asAccurate && ownRow && asAccurate->wallSeconds > 0)
-    std::printf("as accurate as the world's own: %s, %s\n", describeSetting(*asAccurate).c_str(),
-                speedup(ownRow->wallSeconds / asAccurate->wallSeconds).c_str());
-  if (looksSame && ownRow && !ownRow->diverged && looksSame->wallSeconds > 0)
-    std::printf("within %g m: %s, %s\n", options.visualTolerance,
-                describeSetting(*looksSame).c_str(),
-                speedup(ownRow->wallSeconds / looksSame->wallSeconds).c_str());
+  for (const OrderCheck& c : orders)
+    if (c.far) std::printf("note: %s\n", orderWarningLine(c, reference.contacts).c_str());
+  if (recommended.own && !recommended.own->diverged)
+    printChoice("as accurate as the world's own", worldPath, recommended.asAccurate,
+                recommended.own);
+  printChoice("within " + number(options.visualTolerance) + " m", worldPath, recommended.looksSame,
+              recommended.own);
 }
 
 }  // namespace
@@ -493,7 +676,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
     return failed(std::string("--report: ") + e.what());
   }
 
-  ReportProgress progress(static_cast<int>(integrators.size()) * (kSweepLength + 2) + 3);
+  ReportProgress progress(reportItemCount(integrators));
   const Study study{model, file.state, T, progress};
   Measured measured;
   measured.smallestStep = world.dt;
@@ -509,16 +692,21 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
       rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
   }
   const Recommendations recommended = recommend(rows, options.visualTolerance);
+  std::vector<OrderCheck> orders;
+  for (Integrator integrator : integrators)
+    orders.push_back(checkOrder(rows, integrator, reference.error, reference.contacts));
   progress.finish();
 
   try {
-    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, recommended);
+    writeReportFiles(runOptions.worldPath, options, integrators, rows, reference, orders,
+                     recommended);
   } catch (const OutputError& e) {
     return failed(e.what());
   }
   const std::string whyNotDrawn = drawWithGnuplot(options.dir, "report.gp", "report.png", existing);
   const bool drawn = whyNotDrawn.empty();
-  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, recommended);
+  printReportSummary(runOptions.worldPath, options, drawn, rows.size(), reference, orders,
+                     recommended);
   if (drawn) return succeeded();
   // Without gnuplot the data files are the report; a gnuplot that failed is a failure.
   const std::string notDrawn = "report.png was not drawn: " + whyNotDrawn;

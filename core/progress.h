@@ -1,8 +1,10 @@
 // progress.h: the one progress line of a long piece of work (a headless run, a report, a
 // stability map) on stderr. It is rewritten in place (a carriage return, no newline) and shown
-// only when stderr is a terminal: a log or a pipe never holds one. It ends with a newline when
-// the Progress object goes (or at finish()), so what the work prints next starts a line of its
-// own, and the last state of the work stays readable above it.
+// only when stderr is a terminal: a log or a pipe never holds one. It is cut to the terminal's
+// width, since a carriage return goes back to the start of the last screen row only and a
+// wrapped line would leave its first rows behind. It is wiped when the Progress object goes
+// (or ended with a newline by finish(lastLine)), so the object lives exactly as long as the
+// work it reports on.
 #pragma once
 
 #include <cstddef>
@@ -21,11 +23,14 @@ class Progress {
   bool enabled() const { return enabled_; }
   // Replaces the line shown with `line` (one line, no newline).
   void show(const std::string& line);
-  // Ends the line shown (if any) with a newline, before the work prints its results; the
-  // destructor does it otherwise. Show the work's final state first.
+  // Wipes the line now (work that stops with an error message); the destructor does it
+  // otherwise.
   void finish();
   // True when a line is shown and not yet ended.
   bool shown() const { return width_ > 0; }
+  // Replaces the line with `lastLine` and ends it with a newline, so that it stays on the
+  // terminal above what the work prints next (a report's summary on stdout).
+  void finish(const std::string& lastLine);
 
  private:
   bool enabled_;

@@ -63,6 +63,10 @@ class PlaneTerm final : public ForceTerm {
   int pointsAcross(const double* p) const;
 
   bool mayReach(const Bounds& box) const override { return mayCrossPlane(plane_, side_, box); }
+  // pointsAcross(p), when the plane's spring pushes at all.
+  int pointsInContact(const double* p) const override {
+    return spring_.k == 0 && spring_.d == 0 ? 0 : pointsAcross(p);
+  }
   void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;
   void addEnergy(const double* p, double* energy) const override;

@@ -69,6 +69,12 @@ class ForceTerm {
 
   // Whether the term may act on some point inside `box`. Conservative: true when unsure.
   virtual bool mayReach(const Bounds& box) const = 0;
+  // How many of the points at positions p the term pushes as a contact (walls, plane). A contact
+  // switches on where a point crosses a surface: its force has a kink there (a jump with
+  // damping), across which no integrator keeps its order in dt (jello --report says so when a
+  // fit shows it). 0 for the
+  // terms whose force is smooth (springs, field) and for a contact that pushes with k = d = 0.
+  virtual int pointsInContact(const double* /*p*/) const { return 0; }
   // Adds the term's force on every point to `force`. `box` bounds the positions, so that the
   // term can skip its parts out of reach; null makes it compute every part (the reference).
   virtual void addForces(const double* p, const double* v, const Bounds* box,

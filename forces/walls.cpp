@@ -43,6 +43,13 @@ bool WallsTerm::mayReach(const Bounds& box) const {
   return reached[0] || reached[1] || reached[2];
 }
 
+int WallsTerm::pointsInContact(const double* p) const {
+  if (spring_.k == 0 && spring_.d == 0) return 0;
+  int outside = 0;
+  for (int q = 0; q < kNumPoints; ++q) outside += !insideBox(load(p, q));
+  return outside;
+}
+
 // A wall pair out of reach adds nothing and is left out; the loop over the points vectorises.
 void WallsTerm::addForces(const double* p, const double* v, const Bounds* box,
                           double* force) const {

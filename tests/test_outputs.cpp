@@ -203,11 +203,15 @@ TEST(NoCrash, BenchReadsAWorldFromAPipeOnce) {
 
 // ---- Item 7: a full disk leaves nothing behind and says so ----------------------------------
 
-void smallFiles() {
+void limitFileSize(rlim_t bytes) {
   ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG, as on a full disk
-  rlimit limit{2048, 2048};
+  rlimit limit{bytes, bytes};
   ::setrlimit(RLIMIT_FSIZE, &limit);
 }
+void smallFiles() { limitFileSize(2048); }
+// Room for a report's text files (its report.md, with commands to run, is about 2-4 KB), not
+// for its picture (about 30 KB).
+void reportTextSizedFiles() { limitFileSize(8192); }
 
 TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
   std::string dir = test::makeTempDir();
@@ -226,7 +230,7 @@ TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) 
   std::string dir = test::makeTempDir();
   test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.002",
                                               "--integrators", "EULER", test::dataPath("rotate.w")},
-                                             {"", 0, smallFiles});
+                                             {"", 0, reportTextSizedFiles});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("report.png was not drawn"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("report.png"), std::string::npos) << "named as drawn: " << r.out;

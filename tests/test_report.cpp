@@ -1,8 +1,12 @@
 // jello --report: the CSV, the plot, the summary and its recommendations.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "app/report.h"
@@ -62,6 +66,14 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
     ASSERT_GT(png.size(), 1000u) << "no plot";
     EXPECT_EQ(png.substr(1, 3), "PNG");
   }
+
+  // The legend and the fitted orders name what each fit is against: RK45's tolerance, the
+  // others' dt; nothing reads as an "order" of RK45.
+  const std::string gp = test::readText(out + "/report.gp");
+  EXPECT_NE(gp.find("title 'RK45: error \u221d tolerance^{0."), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'RK4: error \u221d dt^{4."), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("order"), std::string::npos) << gp;
+  EXPECT_NE(md.find("| RK45 | error \u221d tolerance^0."), std::string::npos) << md;
 
   // A well-formed CSV.
   const std::string csv = test::readText(out + "/report.csv");
@@ -144,6 +156,380 @@ TEST(ReportFunctions, FittedOrderOfAnExactPowerLaw) {
   rows[0].diverged = true;
   rows[1].rmsError = 1e-20;  // below the reference's floor: left out
   EXPECT_TRUE(std::isnan(fittedOrder(rows, Integrator::Midpoint, 1e-15)));
+}
+
+// The words of a POSIX shell command line made of plain words and single-quoted ones, as
+// shellLine writes them ('\'' inside quotes is a quote).
+std::vector<std::string> shellWords(const std::string& line) {
+  std::vector<std::string> words;
+  std::string word;
+  bool inWord = false, quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '\'')
+        quoted = false;
+      else
+        word += c;
+    } else if (c == '\'') {
+      quoted = inWord = true;
+    } else if (c == '\\' && i + 1 < line.size()) {
+      word += line[++i];
+      inWord = true;
+    } else if (c == ' ') {
+      if (inWord) words.push_back(word);
+      word.clear();
+      inWord = false;
+    } else {
+      word += c;
+      inWord = true;
+    }
+  }
+  if (inWord) words.push_back(word);
+  return words;
+}
+
+// The lines of `text` that start with `prefix`, less the prefix.
+std::vector<std::string> linesAfter(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> found;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) found.push_back(line.substr(prefix.size()));
+  return found;
+}
+
+TEST(ReportWords, SpeedsWithinTenPercentAreTheSameSpeedOthersARatio) {
+  EXPECT_EQ(kSameSpeedWithin, 0.10);
+  EXPECT_EQ(speedAgainstOwn(1.05, 1), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1, 1.05), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1.0, 1.0), "the same speed as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1.12796, 1), "1.1 times as fast as the world's own");
+  EXPECT_EQ(speedAgainstOwn(2.30019, 1), "2.3 times as fast as the world's own");
+  EXPECT_EQ(speedAgainstOwn(0.0233606, 0.280915), "takes 12 times as long as the world's own");
+  EXPECT_EQ(speedAgainstOwn(1, 1.5), "takes 1.5 times as long as the world's own");
+}
+
+TEST(ReportWords, RK45IsLabelledByItsToleranceTheOthersByTheirStep) {
+  EXPECT_EQ(legendLabel(Integrator::RK45, 0.899009), "RK45: error \u221d tolerance^{0.90}");
+  EXPECT_EQ(legendLabel(Integrator::RK4, 4.07143), "RK4: error \u221d dt^{4.07}");
+  EXPECT_EQ(legendLabel(Integrator::Euler, NAN), "EULER");
+  EXPECT_EQ(fittedLaw(Integrator::RK45, 0.899009), "error \u221d tolerance^0.90");
+  EXPECT_EQ(fittedLaw(Integrator::Midpoint, 2.00201), "error \u221d dt^2.00");
+  EXPECT_EQ(fittedLaw(Integrator::Midpoint, NAN), "n/a");
+}
+
+TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
+  EXPECT_EQ(shellWord("world/rotate.w"), "world/rotate.w");
+  EXPECT_EQ(shellWord("my world.w"), "'my world.w'");
+  EXPECT_EQ(shellWord("it's.w"), "'it'\\''s.w'");
+  EXPECT_EQ(shellWord("$HOME/a.w"), "'$HOME/a.w'");
+  EXPECT_EQ(shellWord("~/a.w"), "'~/a.w'");
+  EXPECT_EQ(shellWord(""), "''");
+
+  ReportRow rk4;
+  rk4.integrator = Integrator::RK4;
+  rk4.dt = 0.001953125;
+  EXPECT_EQ(settingText(rk4), "RK4 dt=0.001953125");
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk4)),
+            "./jello --integrator RK4 --dt 0.001953125 world/rotate.w");
+  EXPECT_EQ(shellLine(worldFileCommand("my worlds/rotate.w", rk4)),
+            "./createWorld --from 'my worlds/rotate.w' --integrator RK4 --dt 0.001953125 -o "
+            "'my worlds/rotate-rk4.w'");
+  EXPECT_EQ(shellLine(runCommand("-odd.w", rk4)),
+            "./jello --integrator RK4 --dt 0.001953125 ./-odd.w")
+      << "a world named like an option";
+
+  ReportRow rk45;
+  rk45.integrator = Integrator::RK45;
+  rk45.dt = 0.025;
+  rk45.tolerances = {1e-7, 1e-7};
+  EXPECT_EQ(settingText(rk45), "RK45 dt=0.025 rtol=atol=1e-07");
+  EXPECT_FALSE(worldFileHolds(rk45));
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
+            "./jello --integrator RK45 --dt 0.025 --rtol 1e-07 --atol 1e-07 world/rotate.w");
+  EXPECT_TRUE(worldFileCommand("world/rotate.w", rk45).empty()) << "no world file holds rtol";
+  rk45.tolerances = Tolerances{};
+  EXPECT_TRUE(worldFileHolds(rk45)) << "a world file's RK45 runs at the default tolerances";
+  EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
+            "./jello --integrator RK45 --dt 0.025 world/rotate.w");
+}
+
+// Every recommended command, run as printed (parsed into its words, never through a shell),
+// ends where the report's run of that setting ended: its error against the reference, run the
+// same way, is the reported error; and the createWorld command writes a world with that
+// integrator and dt. The world sits in a folder whose name needs quoting.
+class RecommendedCommands : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
+  const std::string dir = test::makeTempDir(), folder = dir + "/the student's worlds";
+  ASSERT_EQ(::mkdir(folder.c_str(), 0700), 0);
+  const std::string world = folder + "/rotate.w", T = "0.02";
+  test::writeText(world, test::readText(test::dataPath("rotate.w")));
+  // The world's own overridden by a costly one, RK4 at 0.1 ms, so that a cheaper setting is
+  // recommended.
+  test::CommandResult report = test::runJelloArgs({"--report", dir + "/out", "--time", T, "--dt",
+                                                   "0.0001", "--integrators", GetParam(), world});
+  ASSERT_EQ(report.status, 0) << report.err;
+  const std::vector<std::string> runs = linesAfter(report.out, "  run it:  ");
+  ASSERT_FALSE(runs.empty()) << report.out;
+  EXPECT_EQ(runs[0].find(std::string("--integrator ") + GetParam()), 8u) << runs[0];
+  if (std::string(GetParam()) == "RK45") {
+    EXPECT_NE(report.out.find("  (a world file holds RK45 and its dt but not its tolerances (RK45 "
+                              "from a world file runs at rtol=1e-06 atol=1e-09): give --rtol and "
+                              "--atol each time)\n"),
+              std::string::npos)
+        << report.out;
+    EXPECT_TRUE(linesAfter(report.out, "  keep it: ").empty()) << report.out;
+  } else {
+    EXPECT_FALSE(linesAfter(report.out, "  keep it: ").empty()) << report.out;
+  }
+
+  // The reference, as report.md gives it: RK4 at T / steps.
+  const std::string md = test::readText(dir + "/out/report.md");
+  const std::size_t at = md.find(" steps); its own error");
+  ASSERT_NE(at, std::string::npos) << md;
+  const long long steps = std::stoll(md.substr(md.rfind('(', at) + 1));
+  char referenceDt[40];
+  std::snprintf(referenceDt, sizeof referenceDt, "%.17g", std::stod(T) / steps);
+  ASSERT_EQ(test::runJelloArgs({"--headless", "--time", T, "--integrator", "RK4", "--dt",
+                                referenceDt, "--dump", dir + "/reference.w", world})
+                .status,
+            0);
+  const State reference = readWorldFile(dir + "/reference.w").state;
+
+  const std::vector<CsvRow> rows = parseRows(test::readText(dir + "/out/report.csv"));
+  for (const std::string& line : runs) {
+    std::vector<std::string> words = shellWords(line);
+    ASSERT_GE(words.size(), 6u) << line;
+    EXPECT_EQ(words.front(), "./jello");
+    EXPECT_EQ(words.back(), world) << "the world's path, as given, unquoted again";
+    words.erase(words.begin());
+    words.insert(words.end() - 1, {"--headless", "--time", T, "--dump", dir + "/end.w"});
+    test::CommandResult run = test::runJelloArgs(words);
+    ASSERT_EQ(run.status, 0) << line << "\n" << run.err;
+    const double error = test::rmsDistance(readWorldFile(dir + "/end.w").state.p(), reference.p());
+    const double dt = std::stod(words[3]);  // --integrator NAME --dt DT [--rtol R --atol R]
+    const bool rk45 = words[4] == "--rtol";
+    EXPECT_EQ(rk45, words[1] == "RK45");
+    const CsvRow* measured = nullptr;
+    for (const CsvRow& r : rows)
+      if (r.integrator == words[1] && r.dt == dt && (!rk45 || r.tolerance == std::stod(words[5])))
+        measured = &r;
+    ASSERT_NE(measured, nullptr) << line;
+    EXPECT_NEAR(error, measured->rms, 1e-5 * measured->rms) << line;
+    EXPECT_EQ(::unlink((dir + "/end.w").c_str()), 0);
+  }
+
+  for (const std::string& line : linesAfter(report.out, "  keep it: ")) {
+    std::vector<std::string> words = shellWords(line);
+    ASSERT_EQ(words.size(), 9u) << line;
+    EXPECT_EQ(words[0], "./createWorld");
+    words[0] = JELLO_CREATE_WORLD;
+    ASSERT_EQ(test::runProgram(words).status, 0) << line;
+    const WorldFile made = readWorldFile(words[8]);
+    EXPECT_EQ(integratorName(made.world.integrator), words[4]);
+    EXPECT_EQ(made.world.dt, std::stod(words[6]));
+    EXPECT_EQ(words[8], folder + "/rotate-rk4.w");
+  }
+  test::removeTree(dir);
+}
+
+// RK4: settings a world file holds; RK45: tolerances it does not.
+INSTANTIATE_TEST_SUITE_P(Report, RecommendedCommands, ::testing::Values("RK4", "RK45"));
+
+// A soft, spinning cube (createWorld's recipe), `where`: by a wall it hits, or in the middle of
+// the box. Soft, so that RK4 is stable at T/8 and the report takes a second or two.
+std::string writeSpinningCube(const std::string& dir, const std::vector<std::string>& where) {
+  const std::string path = dir + "/spinning.w";
+  std::vector<std::string> argv = {JELLO_CREATE_WORLD,
+                                   "--k-elastic",
+                                   "5",
+                                   "--d-elastic",
+                                   "0.02",
+                                   "--k-collision",
+                                   "50",
+                                   "--d-collision",
+                                   "0.25",
+                                   "--spin",
+                                   "0",
+                                   "0",
+                                   "6",
+                                   "-o",
+                                   path};
+  argv.insert(argv.end(), where.begin(), where.end());
+  EXPECT_EQ(test::runProgram(argv).status, 0);
+  return path;
+}
+
+// The fitted p of report.md's "| NAME | error ∝ dt^p" row; NaN without one.
+double fittedInTable(const std::string& md, const std::string& name) {
+  const std::string row = "| " + name + " | error \u221d dt^";
+  const std::size_t at = md.find(row);
+  return at == std::string::npos ? NAN : std::stod(md.substr(at + row.size()));
+}
+
+// A cube that hits a wall: RK4's errors shrink about as dt^1, and the report says that the
+// contacts are why, when they began, and what --time ends before them; the same cube in the
+// middle of the box fits dt^4 and gets no such note.
+TEST(ReportOrders, AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun) {
+  const std::string dir = test::makeTempDir();
+  const std::string world =
+      writeSpinningCube(dir, {"--center", "1.45", "0", "0", "--velocity", "2", "0", "0"});
+  test::CommandResult r = test::runJelloArgs(
+      {"--report", dir + "/out", "--time", "0.05", "--integrators", "RK4", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: RK4's fitted order is "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", not 4: the cube touched the walls during "), std::string::npos) << r.out;
+  const std::string md = test::readText(dir + "/out/report.md");
+  EXPECT_LT(fittedInTable(md, "RK4"), 2) << md;
+  EXPECT_NE(md.find("**RK4: error \u221d dt^1."), std::string::npos) << md;
+  EXPECT_NE(md.find("- The cube touched the walls during "), std::string::npos) << md;
+  EXPECT_NE(md.find("not a fault of RK4"), std::string::npos) << md;
+  EXPECT_EQ(md.find("The cube touched the plane"), std::string::npos) << "this world has none";
+  test::removeTree(dir + "/out");
+
+  const std::string smooth = writeSpinningCube(dir, {"--force", "--center", "0", "0", "0"});
+  r = test::runJelloArgs(
+      {"--report", dir + "/out", "--time", "0.05", "--integrators", "RK4", smooth});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;
+  const std::string smoothMd = test::readText(dir + "/out/report.md");
+  EXPECT_NEAR(fittedInTable(smoothMd, "RK4"), 4, kOrderSlack) << smoothMd;
+  EXPECT_EQ(smoothMd.find("touched"), std::string::npos) << smoothMd;
+  test::removeTree(dir);
+}
+
+// Rows of one integrator's sweep with errors E dt^order from dt = 0.01 down by halves.
+std::vector<ReportRow> sweep(Integrator integrator, const std::vector<double>& errors) {
+  std::vector<ReportRow> rows;
+  double dt = 0.01;
+  for (double error : errors) {
+    ReportRow r;
+    r.integrator = integrator;
+    r.dt = dt;
+    r.rmsError = error;
+    rows.push_back(r);
+    dt /= 2;
+  }
+  return rows;
+}
+
+TEST(ReportOrders, TheReasonsForAFarFitAreTheOnesTheRunsShow) {
+  const ContactActivity none{100, 0, NAN, {}};
+  const ContactActivity walls{100, 41, 0.0312, {"walls", "plane"}};
+  // RK4 at dt^4: not far, no words.
+  OrderCheck c = checkOrder(sweep(Integrator::RK4, {1e-2, 6.25e-4, 3.9e-5, 2.44e-6}),
+                            Integrator::RK4, 1e-15, walls);
+  EXPECT_NEAR(c.fitted, 4, 0.01);
+  EXPECT_FALSE(c.far);
+  EXPECT_EQ(orderWarning(c, walls), "");
+  // RK4 at dt^1 with contacts: contacts, and a --time before the first.
+  c = checkOrder(sweep(Integrator::RK4, {8e-3, 4e-3, 2e-3, 1e-3}), Integrator::RK4, 1e-15, walls);
+  EXPECT_NEAR(c.fitted, 1, 1e-9);
+  EXPECT_TRUE(c.far && c.contacts);
+  EXPECT_FALSE(c.edgeOfStability || c.nearReference || c.divergedSteps);
+  std::string words = orderWarning(c, walls);
+  EXPECT_NE(words.find("- The cube touched the walls and the plane during 41% of the run, first "
+                       "at t = 0.031 s."),
+            std::string::npos)
+      << words;
+  EXPECT_NE(words.find("`--time 0.031`"), std::string::npos) << words;
+  EXPECT_EQ(orderWarningLine(c, walls),
+            "RK4's fitted order is 1.00, not 4: the cube touched the walls and the plane during "
+            "41% of the run, and contacts are not smooth (report.md says more)");
+  // EULER whose largest step is near its limit: 16 times the next error, then dt^1.
+  c = checkOrder(sweep(Integrator::Euler, {0.16, 1e-2, 5e-3, 2.5e-3}), Integrator::Euler, 1e-15,
+                 none);
+  EXPECT_TRUE(c.far && c.edgeOfStability);
+  EXPECT_FALSE(c.contacts || c.nearReference);
+  EXPECT_EQ(c.largestStep, 0.01);
+  EXPECT_NEAR(c.withoutLargest, 1, 1e-9);
+  EXPECT_NE(orderWarning(c, none).find("- Its largest step, dt = 0.01 s, is close to its "
+                                       "stability limit"),
+            std::string::npos);
+  // MIDPOINT flattened by a reference only 10 to 100 times below its errors.
+  c = checkOrder(sweep(Integrator::Midpoint, {4e-6, 2e-6, 1.2e-6, 1e-6}), Integrator::Midpoint,
+                 5e-8, none);
+  EXPECT_TRUE(c.far && c.nearReference);
+  EXPECT_EQ(c.finestError, 1e-6);
+  EXPECT_NE(orderWarning(c, none).find("within 100 times the reference's own error (5e-08 m)"),
+            std::string::npos)
+      << orderWarning(c, none);
+  // None of them: said so.
+  c = checkOrder(sweep(Integrator::Verlet, {1e-2, 9e-3, 8e-3, 7e-3}), Integrator::Verlet, 1e-15,
+                 none);
+  EXPECT_NE(orderWarning(c, none).find("- None of the usual causes"), std::string::npos);
+  // RK45's slope is against its tolerance: never held against an order.
+  std::vector<ReportRow> rk45 = sweep(Integrator::RK45, {1e-3, 9e-4});
+  rk45[0].tolerances = {1e-2, 1e-2};
+  rk45[1].tolerances = {1e-3, 1e-3};
+  EXPECT_FALSE(checkOrder(rk45, Integrator::RK45, 1e-15, walls).far);
+}
+
+// jello.w made stiff (kElastic 30000 N/m): RK4's search for its largest stable step halves T/8
+// five times, each halving a line of progress.
+std::string writeStiffJello(const std::string& dir) {
+  WorldFile file = readWorldFile(test::dataPath("jello.w"));
+  file.world.kElastic = 30000;
+  const std::string path = dir + "/stiff.w";
+  writeWorldFile(path, file.world, file.state);
+  return path;
+}
+
+// On a terminal the progress line counts the report's items: however many halvings a search
+// takes, the count never passes its total and ends on it, and its last line ends with a newline
+// before the summary.
+TEST(ReportProgress, CountsToItsTotalNeverPastItAndEndsItsLineBeforeTheSummary) {
+  const std::string dir = test::makeTempDir(), world = writeStiffJello(dir);
+  int status = -1;
+  const std::string seen = test::runJelloOnTerminal(
+      {"--report", dir + "/out", "--time", "0.02", "--integrators", "RK4", world}, 200, &status);
+  ASSERT_EQ(status, 0) << seen;
+
+  const std::regex counter(R"(\((\d+)/(\d+)\))");
+  std::vector<std::pair<int, int>> counts;
+  for (auto it = std::sregex_iterator(seen.begin(), seen.end(), counter);
+       it != std::sregex_iterator(); ++it)
+    counts.emplace_back(std::stoi((*it)[1]), std::stoi((*it)[2]));
+  ASSERT_GT(counts.size(), 9u) << "the search's halvings show too";
+  const int total = 1 + 6 + 1 + 1;  // RK4's search, its sweep, the world's own, the reference
+  for (const auto& [begun, shown] : counts) {
+    EXPECT_EQ(shown, total);
+    EXPECT_LE(begun, total);
+  }
+  EXPECT_EQ(counts.back().first, total);
+
+  // The last progress line stays, on a line of its own, and the summary starts on the next.
+  const std::size_t summary = seen.find(world + ": report in");
+  ASSERT_NE(summary, std::string::npos) << seen;
+  const std::string before = seen.substr(0, summary);
+  ASSERT_GE(before.size(), 2u);
+  EXPECT_EQ(before.substr(before.size() - 2), "\r\n") << "a terminal turns \\n into \\r\\n";
+  const std::string lastLine = before.substr(before.rfind('\r', before.size() - 3) + 1);
+  EXPECT_EQ(lastLine.rfind("report: done, 9/9 in ", 0), 0u) << lastLine;
+  EXPECT_EQ(seen.find("report: ", summary), std::string::npos) << "no progress after the summary";
+  test::removeTree(dir);
+}
+
+// A line wider than the terminal would wrap, and a carriage return would leave its first rows
+// behind: every line is cut to the terminal's width less one.
+TEST(ReportProgress, LinesFitANarrowTerminal) {
+  const std::string dir = test::makeTempDir();
+  int status = -1;
+  const std::string seen =
+      test::runJelloOnTerminal({"--report", dir + "/out", "--time", "0.01", "--integrators", "RK45",
+                                test::dataPath("rotate.w")},
+                               40, &status);
+  ASSERT_EQ(status, 0) << seen;
+  const std::string progress = seen.substr(0, seen.find(test::dataPath("rotate.w") + ":"));
+  std::size_t lines = 0;
+  std::stringstream in(progress);
+  for (std::string line; std::getline(in, line, '\r'); ++lines) {
+    if (!line.empty() && line[0] == '\n') line.erase(0, 1);
+    EXPECT_LE(line.size(), 39u) << line;
+  }
+  EXPECT_GT(lines, 6u);
+  test::removeTree(dir);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <fcntl.h>
+#include <pty.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -143,6 +144,38 @@ CommandResult runJelloArgs(const std::vector<std::string>& args, const ProgramSe
   std::vector<std::string> argv = {JELLO_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
   return runProgram(argv, setup);
+}
+
+std::string runJelloOnTerminal(const std::vector<std::string>& args, int columns, int* status) {
+  *status = -1;
+  std::vector<std::string> argv = {JELLO_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> pointers;
+  for (const std::string& a : argv) pointers.push_back(const_cast<char*>(a.c_str()));
+  pointers.push_back(nullptr);
+  int terminal = -1, side = -1;
+  winsize size{};
+  size.ws_row = 24;
+  size.ws_col = static_cast<unsigned short>(columns);
+  if (::openpty(&terminal, &side, nullptr, nullptr, &size) != 0) return "";
+  pid_t child = ::fork();
+  if (child == 0) {
+    int in = ::open("/dev/null", O_RDONLY);
+    if (in < 0 || ::dup2(in, 0) < 0 || ::dup2(side, 1) < 0 || ::dup2(side, 2) < 0) ::_exit(126);
+    ::close(terminal);
+    ::alarm(120);  // a hang ends as a failed test
+    ::execv(pointers[0], pointers.data());
+    ::_exit(127);
+  }
+  ::close(side);
+  // Read until the child has gone and the terminal is drained (EIO once no one holds its side).
+  std::string received;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) received.append(buffer, n);
+  ::close(terminal);
+  int raw = 0;
+  if (child > 0 && ::waitpid(child, &raw, 0) == child && WIFEXITED(raw)) *status = WEXITSTATUS(raw);
+  return received;
 }
 
 namespace {

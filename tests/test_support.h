@@ -61,6 +61,12 @@ CommandResult runProgram(const std::vector<std::string>& argv, const ProgramSetu
 // runProgram of the jello binary under test with these arguments.
 CommandResult runJelloArgs(const std::vector<std::string>& args, const ProgramSetup& setup = {});
 
+// Runs the jello binary under test with these arguments on a pseudo-terminal `columns` wide,
+// its stdout and stderr both, as a user at a terminal sees it (progress lines show only there).
+// Returns all the terminal received (the terminal's output processing makes "\n" "\r\n") and
+// the exit status in `status` (-1 when it did not exit normally).
+std::string runJelloOnTerminal(const std::vector<std::string>& args, int columns, int* status);
+
 // Removes a directory tree made by makeTempDir.
 void removeTree(const std::string& dir);
 

@@ -182,5 +182,31 @@ TEST(ForceTerms, AReachTestThatSaysNoMeansNoForce) {
   }
 }
 
+// Contacts count the points they push: the walls those beyond one, the plane those across it;
+// the smooth terms and a contact without spring or damper, none.
+TEST(ForceTerms, ContactsCountThePointsTheyPushAndTheSmoothTermsNone) {
+  World w = everyTermWorld();
+  const State touching = contactState(), rest = test::restLattice();
+  int beyondWall = 0;
+  for (int q = 0; q < kNumPoints; ++q) {
+    const Vec3 p = load(touching.p(), q);
+    beyondWall += std::fabs(p.x) > 2 || std::fabs(p.y) > 2 || std::fabs(p.z) > 2;
+  }
+  ASSERT_GT(beyondWall, 0);
+  const Model model = makeModel(w, touching, KernelChoice::General);
+  const int acrossPlane = pointsAcrossPlane(model, touching);
+  ASSERT_GT(acrossPlane, 0);
+  for (const auto& term : model.scene.terms) {
+    const std::string label = term->describe(touching.p())[0].label;
+    const int expected = label == "walls" ? beyondWall : label == "plane" ? acrossPlane : 0;
+    EXPECT_EQ(term->pointsInContact(touching.p()), expected) << label;
+    EXPECT_EQ(term->pointsInContact(rest.p()), 0) << label;
+  }
+  w.kCollision = w.dCollision = 0;
+  const Model without = makeModel(w, touching, KernelChoice::General);
+  for (const auto& term : without.scene.terms)
+    EXPECT_EQ(term->pointsInContact(touching.p()), 0) << term->describe(touching.p())[0].label;
+}
+
 }  // namespace
 }  // namespace jello
