@@ -256,6 +256,15 @@ void prepareAttempt(const fs::path& source, const fs::path& build, const Attempt
   if (attempt.coursePhysics) writeText(build / "physics.h", kCoursePhysicsH);
 }
 
+// The submission's header an attempt needs and the folder lacks, or nullptr: the probe includes
+// jello.h and physics.h, so without them the attempt fails at its first line, after a second of
+// compiling (a submission with neither header saves two such attempts).
+const char* missingHeader(const fs::path& source, const Attempt& attempt) {
+  if (!attempt.courseJello && !fs::exists(source / "jello.h")) return "jello.h";
+  if (!attempt.coursePhysics && !fs::exists(source / "physics.h")) return "physics.h";
+  return nullptr;
+}
+
 }  // namespace
 
 std::string whyNotSubmission(const std::string& path) {
@@ -317,6 +326,11 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
                               {"its physics.h with the course API's jello.h", true, false},
                               {"the course API's jello.h and physics.h", true, true}};
   for (const Attempt& attempt : attempts) {
+    if (const char* missing = missingHeader(physics.parent_path(), attempt)) {
+      result.log += "--- with " + std::string(attempt.headers) + ": not tried, no " + missing +
+                    " beside physics.cpp\n";
+      continue;
+    }
     prepareAttempt(physics.parent_path(), fs::path(scratch.path()) / "build", attempt);
     std::string out = scratch.makeFolder("out");
     SandboxJob job;
