@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "physics.h"
@@ -83,6 +84,52 @@ TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
   EXPECT_EQ(kept, 6220u);
   EXPECT_EQ(buildSprings().size(), kept);
   std::printf("%zu slots for %zu springs\n", slots, kept);
+}
+
+// The kernel against a loop over single springs in docs/physics.md's order (for each offset in
+// table order, each point q: F_q = (F_q - f_in) + f_out, a missing spring giving 0), with and
+// without dampers: the same bits. The state is jittered and moving, a pair of neighbours shares a
+// position (a spring of zero length) and the forces start nonzero (the term adds to them).
+TEST(SpringKernel, AddsEachSpringInTheDocumentedOrderBitForBit) {
+  std::mt19937 random(16);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-3, 3), start(-5, 5);
+  State s = test::restLattice();
+  for (int c = 0; c < kNumCoords; ++c) {
+    s.p()[c] += jitter(random);
+    s.v()[c] = speed(random);
+  }
+  store(s.p(), pointIndex(3, 4, 5), load(s.p(), pointIndex(3, 4, 6)));
+  std::vector<double> initial(kNumCoords);
+  for (double& f : initial) f = start(random);
+  const double k = 734.5, d = 0.8125;
+  const std::vector<Spring> springs = buildSprings();  // by offset, in table order
+  for (bool dampers : {true, false}) {
+    std::vector<double> expected = initial, got = initial;
+    int offsets = 0;
+    for (std::size_t first = 0, end = 0; first < springs.size(); first = end, ++offsets) {
+      const int delta = springs[first].b - springs[first].a;  // one offset: a run of equal deltas
+      std::vector<const Spring*> from(kNumPoints, nullptr);
+      for (end = first; end < springs.size() && springs[end].b - springs[end].a == delta; ++end)
+        from[springs[end].a] = &springs[end];
+      auto force = [&](int a) {  // of the spring from a, or 0 when there is none
+        if (a < 0 || !from[a]) return Vec3{};
+        double len;
+        const Vec3 u = direction(load(s.p(), a) - load(s.p(), a + delta), &len);
+        double tension = springTension(len, k, from[a]->rest);
+        if (dampers) tension += damperTension(load(s.v(), a) - load(s.v(), a + delta), u, d);
+        return tension * u;
+      };
+      for (int q = 0; q < kNumPoints; ++q) {
+        const Vec3 in = force(q - delta), out = force(q), total = load(expected.data(), q);
+        store(expected.data(), q,
+              {(total.x - in.x) + out.x, (total.y - in.y) + out.y, (total.z - in.z) + out.z});
+      }
+    }
+    EXPECT_EQ(offsets, 16);
+    SpringTerm(k, d, dampers).addForces(s.p(), s.v(), nullptr, got.data());
+    EXPECT_EQ(std::memcmp(got.data(), expected.data(), sizeof(double) * kNumCoords), 0)
+        << (dampers ? "with" : "without") << " dampers";
+  }
 }
 
 class CourseKernels : public ::testing::TestWithParam<const char*> {};
