@@ -1,77 +1,27 @@
-// forces/springs.cpp: the lattice's springs: the table, the kernel's groups, force, Jacobian,
-// energy and description.
+// forces/springs.cpp: the lattice's springs: the spring list, the force kernel, Jacobian, energy
+// and description.
 
 #include "forces/springs.h"
 
-#include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "forces/pack.h"
+
 namespace jello {
 
-const std::vector<SpringOffset> kSpringOffsets = {
-    // structural
-    {1, 0, 0, SpringKind::Structural},
-    {0, 1, 0, SpringKind::Structural},
-    {0, 0, 1, SpringKind::Structural},
-    // face shear
-    {1, 1, 0, SpringKind::Shear},
-    {1, -1, 0, SpringKind::Shear},
-    {1, 0, 1, SpringKind::Shear},
-    {1, 0, -1, SpringKind::Shear},
-    {0, 1, 1, SpringKind::Shear},
-    {0, 1, -1, SpringKind::Shear},
-    // body shear
-    {1, 1, 1, SpringKind::Shear},
-    {1, 1, -1, SpringKind::Shear},
-    {1, -1, 1, SpringKind::Shear},
-    {1, -1, -1, SpringKind::Shear},
-    // bend
-    {2, 0, 0, SpringKind::Bend},
-    {0, 2, 0, SpringKind::Bend},
-    {0, 0, 2, SpringKind::Bend},
-};
-
-std::vector<SpringGroup> buildSpringGroups() {
-  std::vector<SpringGroup> groups;
-  auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
-  for (const SpringOffset& o : kSpringOffsets) {
-    SpringGroup g;
-    g.kind = o.kind;
-    g.delta = pointIndex(o.di, o.dj, o.dk);
-    g.rest = kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
-    g.mask.assign(kNumPoints, 0.0);
-    for (int i = 0; i < kLatticeSize; ++i)
-      for (int j = 0; j < kLatticeSize; ++j) {
-        if (!inside(i + o.di) || !inside(j + o.dj)) continue;
-        const int rowBegin = pointIndex(i, j, 0), rowEnd = rowBegin + kLatticeSize;
-        if (!g.spans.empty() && g.spans.back().end == rowBegin)
-          g.spans.back().end = rowEnd;
-        else
-          g.spans.push_back({rowBegin, rowEnd});
-        for (int k = 0; k < kLatticeSize; ++k)
-          if (inside(k + o.dk)) g.mask[pointIndex(i, j, k)] = 1.0;
-      }
-    // The last row's discarded slots would reach past the last point: they end the last span.
-    g.spans.back().end = std::min(g.spans.back().end, kNumPoints - g.delta);
-    groups.push_back(std::move(g));
-  }
-  return groups;
+double restLength(const SpringOffset& o) {
+  return kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
 }
 
-namespace {
-// The same table walk as the kernel's: the springs are the groups' slots that are kept.
-std::vector<Spring> springsOf(const std::vector<SpringGroup>& groups) {
+std::vector<Spring> buildSprings() {
   std::vector<Spring> springs;
-  for (const SpringGroup& g : groups)
-    for (const SpringGroup::Span& span : g.spans)
-      for (int q = span.begin; q < span.end; ++q)
-        if (g.mask[q] != 0) springs.push_back({q, q + g.delta, g.rest, g.kind});
+  for (const SpringOffset& o : kSpringOffsets)
+    for (int q = 0; q < kNumPoints; ++q)
+      if (rowHasSprings(o, q / kPackLanes) && slotKept(o, q % kPackLanes))
+        springs.push_back({q, q + springDelta(o), restLength(o), o.kind});
   return springs;
 }
-}  // namespace
-
-std::vector<Spring> buildSprings() { return springsOf(buildSpringGroups()); }
 
 void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
                     Block3* dFdw) {
@@ -103,48 +53,152 @@ void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3
 
 namespace {
 
-// The springs of one group: the forces of all slots first (loops the compiler vectorises),
-// then one pass over the points adding each point's two springs of the group, the one that
-// ends at it (q - delta to q) before the one that starts at it: the order in which a loop over
-// single springs adds them, so the sums round the same way. f holds zeros before slot 0 and
-// outside the spans, so that both reads are plain loads.
-constexpr int kMaxDelta = 2 * kLatticeSize * kLatticeSize;  // the bend spring along i
-template <bool kDampers>
-void addSpringGroup(const SpringGroup& g, double k, double d, const double* __restrict p,
-                    const double* __restrict v, double* __restrict force) {
-  const double* __restrict mask = g.mask.data();
-  alignas(64) double buffer[3][kMaxDelta + kNumPoints];
-  const double *px = p, *py = p + kNumPoints, *pz = p + 2 * kNumPoints;
-  const double *vx = v, *vy = v + kNumPoints, *vz = v + 2 * kNumPoints;
-  const int b = g.delta;
-  int written = -b;  // buffer slots before this one are set
-  for (const SpringGroup::Span& span : g.spans) {
-    for (double* f : buffer) std::fill(f + kMaxDelta + written, f + kMaxDelta + span.begin, 0.0);
-    written = span.end;
-    for (int q = span.begin; q < span.end; ++q) {
-      double len;
-      Vec3 u = direction({px[q] - px[q + b], py[q] - py[q + b], pz[q] - pz[q + b]}, &len);
-      double tension = springTension(len, k, g.rest);
-      if constexpr (kDampers)
-        tension += damperTension({vx[q] - vx[q + b], vy[q] - vy[q + b], vz[q] - vz[q + b]}, u, d);
-      Vec3 fq = (mask[q] * tension) * u;
-      buffer[0][kMaxDelta + q] = fq.x;
-      buffer[1][kMaxDelta + q] = fq.y;
-      buffer[2][kMaxDelta + q] = fq.z;
-    }
+// The force kernel. It goes through the lattice a row at a time (8 points along k, one Pack),
+// and for each row through the 16 offsets in table order, keeping the row's total force in
+// registers: for each offset it computes the row's 8 slots (the springs from the row's points a
+// to their points b = a + delta) and adds, lane by lane, (total - in) + out. `out` is the
+// force of the spring starting at the point, `in` that of the spring ending at it, which
+// started delta points earlier: a slot of an earlier row, which the kernel kept in a small ring
+// of that offset's recent rows. That is docs/physics.md's order of summation, so the sums round
+// exactly as a loop over single springs would. Each offset is a template argument: its delta,
+// its ring and its kept lanes are constants, and the 16 offsets unroll into one loop body.
+constexpr int kRows = kNumPoints / kPackLanes;
+constexpr int kOffsets = static_cast<int>(kSpringOffsets.size());
+
+// A spring of an offset ends `delta` points further on: rowsOn whole rows and lanesOn lanes.
+// The springs ending in row r start in rows r - rowsOn - 1 and r - rowsOn: the offset's ring
+// keeps the slots of its last rowsOn + 2 rows, row r at r % ringRows.
+constexpr int ringRows(int offset) { return springDelta(kSpringOffsets[offset]) / kPackLanes + 2; }
+constexpr int ringStart(int offset) {
+  return offset == 0 ? 0 : ringStart(offset - 1) + ringRows(offset - 1);
+}
+constexpr int kRingRows = ringStart(kOffsets);  // 121 rows, 23 KB: the rings stay in L1
+
+// One row of slot forces, by axis.
+struct RowForce {
+  Pack axis[3];
+};
+
+// The 8 lanes that start kFirst lanes into lo and run on into hi.
+template <int kFirst>
+JELLO_PACK_INLINE Pack lanesFrom(Pack lo, Pack hi) {
+  if constexpr (kFirst == 0)
+    return lo;
+  else
+    return __builtin_shufflevector(lo, hi, kFirst, kFirst + 1, kFirst + 2, kFirst + 3, kFirst + 4,
+                                   kFirst + 5, kFirst + 6, kFirst + 7);
+}
+
+// The 8 doubles of one axis from point `first` on, where some lie past the last point (the far
+// ends of slots the kernel discards, in the last rows): those lanes read 0, not past the array.
+JELLO_PACK_INLINE Pack loadUpToEnd(const double* axis, int first) {
+  Pack out = {};
+  for (int l = 0; first + l < kNumPoints; ++l) out[l] = axis[first + l];
+  return out;
+}
+
+// 1 for the lanes whose spring exists, 0 for the slots the kernel discards.
+template <int kOffset>
+JELLO_PACK_INLINE Pack keptLanes() {
+  Pack keep;
+  for (int l = 0; l < kPackLanes; ++l) keep[l] = slotKept(kSpringOffsets[kOffset], l) ? 1.0 : 0.0;
+  return keep;
+}
+
+// The inputs every row and offset shares.
+struct Inputs {
+  const double* p;
+  const double* v;
+  Pack minusK, minusD;  // -kElastic, -dElastic
+  const double* rests;  // m, by offset
+};
+
+// The 8 slot forces of one row for one offset: springForce() lane by lane, times the lane's
+// keep (1 or 0), exactly as a single spring's force is computed.
+template <int kOffset, bool kDampers>
+JELLO_PACK_INLINE RowForce slotForces(const Inputs& in, int q, const RowForce& p,
+                                      const RowForce& v) {
+  constexpr SpringOffset o = kSpringOffsets[kOffset];
+  constexpr int delta = springDelta(o);
+  // Only an offset whose far ends are not whole rows on can reach past the last point.
+  const bool pastEnd = delta % kPackLanes != 0 && q + delta + kPackLanes > kNumPoints;
+  Pack L[3], w[3];
+  for (int a = 0; a < 3; ++a) {
+    const double *pb = in.p + a * kNumPoints, *vb = in.v + a * kNumPoints;
+    L[a] = p.axis[a] - (pastEnd ? loadUpToEnd(pb, q + delta) : loadPack(pb + q + delta));
+    if constexpr (kDampers)
+      w[a] = v.axis[a] - (pastEnd ? loadUpToEnd(vb, q + delta) : loadPack(vb + q + delta));
   }
-  for (int axis = 0; axis < 3; ++axis) {
-    double* __restrict out = force + axis * kNumPoints;
-    double* f = buffer[axis] + kMaxDelta;
-    std::fill(f + written, f + kNumPoints, 0.0);
-    for (int q = 0; q < kNumPoints; ++q) out[q] = (out[q] - f[q - b]) + f[q];
+  // direction(): |L| and L/|L|, zero for a zero L (a select: the lanes go on together).
+  const Pack len = sqrtPack((L[0] * L[0] + L[1] * L[1]) + L[2] * L[2]);
+  const Pack inverse = len != 0 ? splat(1.0) / len : Pack{};
+  const Pack u[3] = {inverse * L[0], inverse * L[1], inverse * L[2]};
+  Pack tension = in.minusK * (len - in.rests[kOffset]);
+  if constexpr (kDampers)
+    tension = tension + in.minusD * ((w[0] * u[0] + w[1] * u[1]) + w[2] * u[2]);
+  if constexpr (o.dk != 0) tension = keptLanes<kOffset>() * tension;  // 1 * t is t: skipped
+  RowForce out = {{tension * u[0], tension * u[1], tension * u[2]}};
+  // Slots whose far end is past the last point hold exactly 0, as they always have.
+  if (pastEnd)
+    for (int l = 0; l < kPackLanes; ++l)
+      if (q + l + delta >= kNumPoints) out.axis[0][l] = out.axis[1][l] = out.axis[2][l] = 0.0;
+  return out;
+}
+
+// One offset's part of a row's total: its slots (zero in a row without springs of the offset)
+// go into the ring, and the forces of the springs ending at the row's points come out of it:
+// the slots lanesOn lanes from the end of row - rowsOn - 1 on, into row - rowsOn (this row when
+// rowsOn is 0). Rows before the first hold no springs: zeros. Reading whole rows and shifting
+// lanes is faster than a load across two rows, which may wait for the stores of both.
+template <int kOffset, bool kDampers>
+JELLO_PACK_INLINE void addOffset(const Inputs& in, int row, const RowForce& p, const RowForce& v,
+                                 RowForce* rings, RowForce* total) {
+  constexpr int delta = springDelta(kSpringOffsets[kOffset]);
+  constexpr int rowsOn = delta / kPackLanes, lanesOn = delta % kPackLanes, size = ringRows(kOffset);
+  RowForce* ring = rings + ringStart(kOffset);
+  const RowForce out = rowHasSprings(kSpringOffsets[kOffset], row)
+                           ? slotForces<kOffset, kDampers>(in, row * kPackLanes, p, v)
+                           : RowForce{};
+  ring[row % size] = out;
+  const int near = row - rowsOn, far = near - 1;
+  for (int a = 0; a < 3; ++a) {
+    Pack ending = near >= 0 ? ring[near % size].axis[a] : Pack{};
+    if constexpr (lanesOn != 0)
+      ending =
+          lanesFrom<kPackLanes - lanesOn>(far >= 0 ? ring[far % size].axis[a] : Pack{}, ending);
+    total->axis[a] = (total->axis[a] - ending) + out.axis[a];
+  }
+}
+
+template <bool kDampers, int... kOffset>
+JELLO_PACK_INLINE void addOffsets(std::integer_sequence<int, kOffset...>, const Inputs& in, int row,
+                                  const RowForce& p, const RowForce& v, RowForce* rings,
+                                  RowForce* total) {
+  (addOffset<kOffset, kDampers>(in, row, p, v, rings, total), ...);
+}
+
+template <bool kDampers>
+void addSpringForces(const Inputs& in, double* __restrict force) {
+  RowForce rings[kRingRows];  // each ring row is written before it is read
+  for (int row = 0; row < kRows; ++row) {
+    const int q = row * kPackLanes;
+    RowForce p, v, total;
+    for (int a = 0; a < 3; ++a) {
+      p.axis[a] = loadPack(in.p + a * kNumPoints + q);
+      v.axis[a] = loadPack(in.v + a * kNumPoints + q);
+      total.axis[a] = loadPack(force + a * kNumPoints + q);
+    }
+    addOffsets<kDampers>(std::make_integer_sequence<int, kOffsets>{}, in, row, p, v, rings, &total);
+    for (int a = 0; a < 3; ++a) storePack(force + a * kNumPoints + q, total.axis[a]);
   }
 }
 
 }  // namespace
 
 SpringTerm::SpringTerm(double k, double d, bool dampers)
-    : k_(k), d_(d), dampers_(dampers), groups_(buildSpringGroups()), springs_(springsOf(groups_)) {}
+    : k_(k), d_(d), dampers_(dampers), springs_(buildSprings()) {
+  for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
+}
 
 std::vector<std::pair<int, int>> SpringTerm::pairs() const {
   std::vector<std::pair<int, int>> out;
@@ -154,12 +208,11 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
 }
 
 void SpringTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
-  for (const SpringGroup& g : groups_) {
-    if (dampers_)
-      addSpringGroup<true>(g, k_, d_, p, v, force);
-    else
-      addSpringGroup<false>(g, k_, d_, p, v, force);
-  }
+  const Inputs in{p, v, splat(-k_), splat(-d_), rests_.data()};
+  if (dampers_)
+    addSpringForces<true>(in, force);
+  else
+    addSpringForces<false>(in, force);
 }
 
 void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {

@@ -45,40 +45,31 @@ double kernelsDisagreeBy(const World& world, const State& start,
 }
 
 // The kernel's slots against the lattice itself: a slot is kept exactly when its neighbour
-// (i+di, j+dj, k+dk) exists, every such pair has a slot, no slot reaches past the last point,
-// and the rest length is |offset|/7.
-TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
-  std::vector<SpringGroup> groups = buildSpringGroups();
-  ASSERT_EQ(groups.size(), kSpringOffsets.size());
+// (i+di, j+dj, k+dk) exists, every such pair has a slot, a kept slot's far end is that
+// neighbour (never past the last point), and the rest length is |offset|/7.
+TEST(SpringSlots, KeptSlotsAreExactlyTheLatticeNeighbours) {
   auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
   std::size_t kept = 0, slots = 0;
-  for (std::size_t o = 0; o < groups.size(); ++o) {
-    const SpringGroup& g = groups[o];
-    const SpringOffset& offset = kSpringOffsets[o];
-    EXPECT_DOUBLE_EQ(g.rest, std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj +
-                                              offset.dk * offset.dk)) /
-                                 7);
-    std::vector<bool> slot(kNumPoints, false);
-    for (const SpringGroup::Span& span : g.spans)
-      for (int q = span.begin; q < span.end; ++q) {
-        ASSERT_LT(q + g.delta, kNumPoints) << "group " << o << " slot " << q;
-        slot[q] = true;
-        ++slots;
-      }
+  for (const SpringOffset& offset : kSpringOffsets) {
+    EXPECT_DOUBLE_EQ(
+        restLength(offset),
+        std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj + offset.dk * offset.dk)) /
+            7);
     for (int i = 0; i < kLatticeSize; ++i)
       for (int j = 0; j < kLatticeSize; ++j)
         for (int k = 0; k < kLatticeSize; ++k) {
           const int q = pointIndex(i, j, k);
           const bool neighbour =
               inside(i + offset.di) && inside(j + offset.dj) && inside(k + offset.dk);
-          if (neighbour) {
-            EXPECT_TRUE(slot[q]) << "group " << o << ": no slot for point " << q;
-            EXPECT_EQ(q + g.delta, pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
+          const bool computed = rowHasSprings(offset, q / kLatticeSize);
+          const bool keep = computed && slotKept(offset, k);
+          EXPECT_EQ(keep, neighbour) << offset.di << offset.dj << offset.dk << " point " << q;
+          if (keep) {
+            EXPECT_EQ(q + springDelta(offset),
+                      pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
           }
-          if (slot[q]) {
-            EXPECT_EQ(g.mask[q] != 0, neighbour) << "group " << o << " point " << q;
-          }
-          kept += slot[q] && g.mask[q] != 0;
+          kept += keep;
+          slots += computed;
         }
   }
   EXPECT_EQ(kept, 6220u);
