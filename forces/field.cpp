@@ -221,7 +221,7 @@ JELLO_PACK_INLINE Pack interpolatePair(const double* nodes, int r, const PackCor
 struct PackVec3 {
   Pack axis[3];
 };
-PackVec3 interpolate8(const double* nodes, int r, const double* p, int q) {
+JELLO_PACK_INLINE PackVec3 interpolate8(const double* nodes, int r, const double* p, int q) {
   const Pack perMetre = splat(cellsPerMetre(r)), lastCell = splat(r - 2);
   PackCells cells[3];
   for (int a = 0; a < 3; ++a)
@@ -241,13 +241,26 @@ PackVec3 interpolate8(const double* nodes, int r, const double* p, int q) {
 }
 
 // insideBox() of 8 points: all bits set in the lanes inside (walls included), 0 elsewhere.
-PackIndex inside8(const double* p, int q) {
+JELLO_PACK_INLINE PackIndex inside8(const double* p, int q) {
   PackIndex in = ~PackIndex{};
   for (int a = 0; a < 3; ++a) {
     const Pack x = loadPack(p + a * kNumPoints + q);
     in &= (x <= kBoxHalfSize) & (x >= -kBoxHalfSize);  // false for a NaN
   }
   return in;
+}
+// Adds the padded field at every point; kAllInside: every point is inside the box (the common
+// case, without the per-point test).
+template <bool kAllInside>
+void addPaddedField(const double* nodes, int r, const double* p, double* force) {
+  for (int q = 0; q < kNumPoints; q += kPackLanes) {
+    const PackVec3 f = interpolate8(nodes, r, p, q);
+    const PackIndex in = kAllInside ? ~PackIndex{} : inside8(p, q);
+    for (int a = 0; a < 3; ++a) {
+      double* out = force + a * kNumPoints + q;
+      storePack(out, loadPack(out) + (kAllInside ? f.axis[a] : in ? f.axis[a] : Pack{}));
+    }
+  }
 }
 }  // namespace
 
@@ -263,14 +276,10 @@ void FieldTerm::addForces(const double* p, const double*, const Bounds* box, dou
         store(force, q, load(force, q) + (insideBox(load(p, q)) ? uniform_ : Vec3{}));
       return;
     case Method::Padded:
-      for (int q = 0; q < kNumPoints; q += kPackLanes) {
-        const PackVec3 f = interpolate8(padded_.data(), field_.resolution, p, q);
-        const PackIndex in = inside ? ~PackIndex{} : inside8(p, q);  // skipped in the common case
-        for (int a = 0; a < 3; ++a) {
-          double* out = force + a * kNumPoints + q;
-          storePack(out, loadPack(out) + (in ? f.axis[a] : Pack{}));
-        }
-      }
+      if (inside)
+        addPaddedField<true>(padded_.data(), field_.resolution, p, force);
+      else
+        addPaddedField<false>(padded_.data(), field_.resolution, p, force);
       return;
     case Method::Reference:
       for (int q = 0; q < kNumPoints; ++q)
