@@ -167,48 +167,78 @@ bool allInside(const Bounds* box) { return box && insideBox(box->lower) && insid
 // point (each lerp a 256-bit operation on one node) took 3 times as long, the 8 points' corners
 // gathered lane by lane twice as long, with the gather instruction 2.8 times.
 struct PackCells {
-  PackIndex cell;
-  Pack t;  // position within the cell, 0..1
+  Pack cell;  // a whole number
+  Pack t;     // position within the cell, 0..1
 };
 // cellCoordinate() of 8 coordinates.
 JELLO_PACK_INLINE PackCells cellsOf(Pack x, Pack perMetre, Pack lastCell) {
   const Pack g = (x + kBoxHalfSize) * perMetre;
-  Pack clamped = g >= 0 ? g : Pack{};  // a NaN fails g >= 0: cell 0
-  clamped = clamped > lastCell ? lastCell : clamped;
+  const Pack clamped = byPiece(
+      [](NativePack gs, NativePack last) {
+        const NativePack low = gs >= 0 ? gs : NativePack{};  // a NaN fails g >= 0: cell 0
+        return low > last ? last : low;
+      },
+      g, lastCell);
   const Pack cell = floorPack(clamped);
-  return {__builtin_convertvector(cell, PackIndex), g - cell};
+  return {cell, g - cell};
 }
 JELLO_PACK_INLINE Pack lerpPack(Pack a, Pack b, Pack t) {
-  const PackIndex nearA = t < 0.5;
-  const Pack s = nearA ? t : t - 1;
-  return (nearA ? a : b) + s * (b - a);
+  return byPiece(
+      [](NativePack as, NativePack bs, NativePack ts) {
+        const auto nearA = ts < 0.5;
+        const NativePack s = nearA ? ts : ts - 1;
+        return (nearA ? as : bs) + s * (bs - as);
+      },
+      a, b, t);
 }
-typedef double NodePack __attribute__((vector_size(kPaddedNode * sizeof(double))));
-// Padded nodes a and b side by side.
+// Padded nodes a and b side by side: (x y z 0) of a in lanes 0-3, of b in lanes 4-7.
 JELLO_PACK_INLINE Pack twoNodes(const double* a, const double* b) {
-  NodePack na, nb;
-  __builtin_memcpy(&na, a, sizeof na);
-  __builtin_memcpy(&nb, b, sizeof nb);
-  return __builtin_shufflevector(na, nb, 0, 1, 2, 3, 4, 5, 6, 7);
+#ifdef JELLO_PACK_ONE_REGISTER
+  {
+    typedef double NodePack __attribute__((vector_size(kPaddedNode * sizeof(double))));
+    NodePack na, nb;
+    std::memcpy(&na, a, sizeof na);
+    std::memcpy(&nb, b, sizeof nb);
+    Pack out;
+    out.piece[0] = __builtin_shufflevector(na, nb, 0, 1, 2, 3, 4, 5, 6, 7);
+    return out;
+  }
+#else  // a node is one piece or more
+  Pack out;
+  for (int c = 0; c < kPackPieces; ++c) {
+    const int lane = c * kNativeLanes;
+    std::memcpy(&out.piece[c], lane < kPaddedNode ? a + lane : b + lane - kPaddedNode,
+                sizeof(NativePack));
+  }
+  return out;
+#endif
 }
-// Lane kPoint's value in the first half, kPoint + 1's in the second.
+// Lane kPoint's value in lanes 0-3, lane kPoint + 1's in lanes 4-7.
 template <int kPoint>
-JELLO_PACK_INLINE Pack pairOf(Pack t) {
-  return __builtin_shufflevector(t, t, kPoint, kPoint, kPoint, kPoint, kPoint + 1, kPoint + 1,
-                                 kPoint + 1, kPoint + 1);
+JELLO_PACK_INLINE Pack pairOf(const Pack& t) {
+  Pack out;
+#ifdef JELLO_PACK_ONE_REGISTER
+  out.piece[0] = __builtin_shufflevector(t.piece[0], t.piece[0], kPoint, kPoint, kPoint, kPoint,
+                                         kPoint + 1, kPoint + 1, kPoint + 1, kPoint + 1);
+#else
+  for (int c = 0; c < kPackPieces; ++c)
+    out.piece[c] = NativePack{} + t.lane(c * kNativeLanes < kPaddedNode ? kPoint : kPoint + 1);
+#endif
+  return out;
 }
 
 // The 8 points' cells: the offset of each cell's first node in the padded nodes, and the
 // positions within the cells along each axis.
 struct PackCorners {
-  PackIndex node;
+  Pack node;  // whole numbers
   Pack t[3];
 };
 // trilinear() of points kPoint and kPoint + 1: (x y z 0) of each, side by side.
 template <int kPoint>
 JELLO_PACK_INLINE Pack interpolatePair(const double* nodes, int r, const PackCorners& c) {
   const std::ptrdiff_t dk = kPaddedNode, dj = dk * r, di = dj * r;
-  const double *a = nodes + c.node[kPoint], *b = nodes + c.node[kPoint + 1];
+  const double* a = nodes + static_cast<std::ptrdiff_t>(c.node.lane(kPoint));
+  const double* b = nodes + static_cast<std::ptrdiff_t>(c.node.lane(kPoint + 1));
   auto node = [a, b](std::ptrdiff_t offset) { return twoNodes(a + offset, b + offset); };
   const Pack tx = pairOf<kPoint>(c.t[0]), ty = pairOf<kPoint>(c.t[1]), tz = pairOf<kPoint>(c.t[2]);
   const Pack c00 = lerpPack(node(0), node(dk), tz), c01 = lerpPack(node(dj), node(dj + dk), tz);
@@ -217,37 +247,58 @@ JELLO_PACK_INLINE Pack interpolatePair(const double* nodes, int r, const PackCor
   return lerpPack(lerpPack(c00, c01, ty), lerpPack(c10, c11, ty), tx);
 }
 
-// The field at points q .. q + 7 by axis, interpolated whether inside the box or not.
 struct PackVec3 {
   Pack axis[3];
 };
+// (x y z 0 x y z 0) of the 4 pairs of points into the x, y and z of the 8 points.
+JELLO_PACK_INLINE PackVec3 transposePairs(const Pack& v0, const Pack& v1, const Pack& v2,
+                                          const Pack& v3) {
+  PackVec3 out;
+#ifdef JELLO_PACK_ONE_REGISTER
+  const NativePack a = v0.piece[0], b = v1.piece[0], c = v2.piece[0], d = v3.piece[0];
+  const NativePack xy01 = __builtin_shufflevector(a, b, 0, 4, 8, 12, 1, 5, 9, 13),
+                   xy23 = __builtin_shufflevector(c, d, 0, 4, 8, 12, 1, 5, 9, 13),
+                   z01 = __builtin_shufflevector(a, b, 2, 6, 10, 14, 3, 7, 11, 15),
+                   z23 = __builtin_shufflevector(c, d, 2, 6, 10, 14, 3, 7, 11, 15);
+  out.axis[0].piece[0] = __builtin_shufflevector(xy01, xy23, 0, 1, 2, 3, 8, 9, 10, 11);
+  out.axis[1].piece[0] = __builtin_shufflevector(xy01, xy23, 4, 5, 6, 7, 12, 13, 14, 15);
+  out.axis[2].piece[0] = __builtin_shufflevector(z01, z23, 0, 1, 2, 3, 8, 9, 10, 11);
+#else  // through memory: lane l of axis a is lane (l % 2) * 4 + a of pair l / 2
+  double pairs[4 * kPackLanes];
+  storePack(pairs, v0);
+  storePack(pairs + kPackLanes, v1);
+  storePack(pairs + 2 * kPackLanes, v2);
+  storePack(pairs + 3 * kPackLanes, v3);
+  for (int a = 0; a < 3; ++a)
+    for (int l = 0; l < kPackLanes; ++l)
+      out.axis[a].setLane(l, pairs[(l / 2) * kPackLanes + (l % 2) * kPaddedNode + a]);
+#endif
+  return out;
+}
+
+// The field at points q .. q + 7 by axis, interpolated whether inside the box or not.
 JELLO_PACK_INLINE PackVec3 interpolate8(const double* nodes, int r, const double* p, int q) {
   const Pack perMetre = splat(cellsPerMetre(r)), lastCell = splat(r - 2);
   PackCells cells[3];
   for (int a = 0; a < 3; ++a)
     cells[a] = cellsOf(loadPack(p + a * kNumPoints + q), perMetre, lastCell);
-  const PackCorners c = {((cells[0].cell * r + cells[1].cell) * r + cells[2].cell) * kPaddedNode,
-                         {cells[0].t, cells[1].t, cells[2].t}};
+  // The first node's offset, a whole number below 2^53: exact in doubles.
+  const Pack node = ((cells[0].cell * r + cells[1].cell) * r + cells[2].cell) * kPaddedNode;
+  const PackCorners c = {node, {cells[0].t, cells[1].t, cells[2].t}};
   const Pack v0 = interpolatePair<0>(nodes, r, c), v1 = interpolatePair<2>(nodes, r, c),
              v2 = interpolatePair<4>(nodes, r, c), v3 = interpolatePair<6>(nodes, r, c);
-  // (x y z 0 x y z 0) of the 4 pairs into the x, y and z of the 8 points.
-  const Pack xy01 = __builtin_shufflevector(v0, v1, 0, 4, 8, 12, 1, 5, 9, 13),
-             xy23 = __builtin_shufflevector(v2, v3, 0, 4, 8, 12, 1, 5, 9, 13),
-             z01 = __builtin_shufflevector(v0, v1, 2, 6, 10, 14, 3, 7, 11, 15),
-             z23 = __builtin_shufflevector(v2, v3, 2, 6, 10, 14, 3, 7, 11, 15);
-  return {{__builtin_shufflevector(xy01, xy23, 0, 1, 2, 3, 8, 9, 10, 11),
-           __builtin_shufflevector(xy01, xy23, 4, 5, 6, 7, 12, 13, 14, 15),
-           __builtin_shufflevector(z01, z23, 0, 1, 2, 3, 8, 9, 10, 11)}};
+  return transposePairs(v0, v1, v2, v3);
 }
 
-// insideBox() of 8 points: all bits set in the lanes inside (walls included), 0 elsewhere.
-JELLO_PACK_INLINE PackIndex inside8(const double* p, int q) {
-  PackIndex in = ~PackIndex{};
-  for (int a = 0; a < 3; ++a) {
-    const Pack x = loadPack(p + a * kNumPoints + q);
-    in &= (x <= kBoxHalfSize) & (x >= -kBoxHalfSize);  // false for a NaN
-  }
-  return in;
+// f where insideBox() of the point (x, y, z) (walls included), 0 elsewhere, lane by lane.
+JELLO_PACK_INLINE Pack insideOrZero(Pack x, Pack y, Pack z, Pack f) {
+  return byPiece(
+      [](NativePack xs, NativePack ys, NativePack zs, NativePack fs) {
+        const auto in = (xs <= kBoxHalfSize) & (xs >= -kBoxHalfSize) & (ys <= kBoxHalfSize) &
+                        (ys >= -kBoxHalfSize) & (zs <= kBoxHalfSize) & (zs >= -kBoxHalfSize);
+        return in ? fs : NativePack{};  // a NaN fails every comparison: outside
+      },
+      x, y, z, f);
 }
 // Adds the padded field at every point; kAllInside: every point is inside the box (the common
 // case, without the per-point test).
@@ -255,10 +306,11 @@ template <bool kAllInside>
 void addPaddedField(const double* nodes, int r, const double* p, double* force) {
   for (int q = 0; q < kNumPoints; q += kPackLanes) {
     const PackVec3 f = interpolate8(nodes, r, p, q);
-    const PackIndex in = kAllInside ? ~PackIndex{} : inside8(p, q);
     for (int a = 0; a < 3; ++a) {
       double* out = force + a * kNumPoints + q;
-      storePack(out, loadPack(out) + (kAllInside ? f.axis[a] : in ? f.axis[a] : Pack{}));
+      const Pack x = loadPack(p + q), y = loadPack(p + kNumPoints + q),
+                 z = loadPack(p + 2 * kNumPoints + q);
+      storePack(out, loadPack(out) + (kAllInside ? f.axis[a] : insideOrZero(x, y, z, f.axis[a])));
     }
   }
 }

@@ -4,6 +4,7 @@
 #include "forces/springs.h"
 
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "forces/pack.h"
@@ -53,144 +54,159 @@ void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3
 
 namespace {
 
-// The force kernel. It goes through the lattice a row at a time (8 points along k, one Pack),
-// and for each row through the 16 offsets in table order, keeping the row's total force in
-// registers: for each offset it computes the row's 8 slots (the springs from the row's points a
-// to their points b = a + delta) and adds, lane by lane, (total - in) + out. `out` is the
-// force of the spring starting at the point, `in` that of the spring ending at it, which
-// started delta points earlier: a slot of an earlier row, which the kernel kept in a small ring
-// of that offset's recent rows. That is docs/physics.md's order of summation, so the sums round
+// The force kernel. It goes through the points a unit at a time (kNativeLanes points along k in
+// one lattice row: a whole row with AVX-512, half a row with AVX, a quarter with SSE2; one vector
+// register each), and for each unit through the 16 offsets in table order, keeping the unit's
+// total force in registers: for each offset it computes the unit's slots (the springs from its
+// points a to their points b = a + delta) and adds, lane by lane, (total - in) + out. `out` is
+// the force of the spring starting at the point, `in` that of the spring ending at it, which
+// started delta points earlier: a slot of an earlier unit, which the kernel kept in a small ring
+// of that offset's recent units. That is docs/physics.md's order of summation, so the sums round
 // exactly as a loop over single springs would. Each offset is a template argument: its delta,
 // its ring and its kept lanes are constants, and the 16 offsets unroll into one loop body.
-constexpr int kRows = kNumPoints / kPackLanes;
+// (Units of a whole row with AVX and SSE2 too ran 2 times slower than the kernel before this
+// one: their totals and positions did not fit in the 16 registers.)
+typedef NativePack Lanes;
+constexpr int kLanes = kNativeLanes;
+constexpr int kUnits = kNumPoints / kLanes;
+constexpr int kUnitsPerRow = kLatticeSize / kLanes;
 constexpr int kOffsets = static_cast<int>(kSpringOffsets.size());
 
-// A spring of an offset ends `delta` points further on: rowsOn whole rows and lanesOn lanes.
-// The springs ending in row r start in rows r - rowsOn - 1 and r - rowsOn: the offset's ring
-// keeps the slots of its last rowsOn + 2 rows, row r at r % ringRows.
-constexpr int ringRows(int offset) { return springDelta(kSpringOffsets[offset]) / kPackLanes + 2; }
+// A spring of an offset ends `delta` points further on: unitsOn whole units and lanesOn lanes.
+// The springs ending in unit u start in units u - unitsOn - 1 and u - unitsOn: the offset's ring
+// keeps the slots of its last unitsOn + 2 units, unit u at u % ringUnits.
+constexpr int ringUnits(int offset) { return springDelta(kSpringOffsets[offset]) / kLanes + 2; }
 constexpr int ringStart(int offset) {
-  return offset == 0 ? 0 : ringStart(offset - 1) + ringRows(offset - 1);
+  return offset == 0 ? 0 : ringStart(offset - 1) + ringUnits(offset - 1);
 }
-constexpr int kRingRows = ringStart(kOffsets);  // 121 rows, 23 KB: the rings stay in L1
+constexpr int kRingUnits = ringStart(kOffsets);  // 23 KB with AVX-512: the rings stay in L1
 
-// One row of slot forces, by axis.
-struct RowForce {
-  Pack axis[3];
+// One unit's slot forces, by axis.
+struct UnitForce {
+  Lanes axis[3];
 };
 
-// The 8 lanes that start kFirst lanes into lo and run on into hi.
-template <int kFirst>
-JELLO_PACK_INLINE Pack lanesFrom(Pack lo, Pack hi) {
-  if constexpr (kFirst == 0)
-    return lo;
-  else
-    return __builtin_shufflevector(lo, hi, kFirst, kFirst + 1, kFirst + 2, kFirst + 3, kFirst + 4,
-                                   kFirst + 5, kFirst + 6, kFirst + 7);
+JELLO_PACK_INLINE Lanes loadLanes(const double* a) {
+  Lanes out;
+  std::memcpy(&out, a, sizeof out);
+  return out;
 }
-
-// The 8 doubles of one axis from point `first` on, where some lie past the last point (the far
+// The doubles of one axis from point `first` on, where some lie past the last point (the far
 // ends of slots the kernel discards, in the last rows): those lanes read 0, not past the array.
-JELLO_PACK_INLINE Pack loadUpToEnd(const double* axis, int first) {
-  Pack out = {};
+JELLO_PACK_INLINE Lanes loadUpToEnd(const double* axis, int first) {
+  Lanes out = {};
   for (int l = 0; first + l < kNumPoints; ++l) out[l] = axis[first + l];
   return out;
 }
 
-// 1 for the lanes whose spring exists, 0 for the slots the kernel discards.
-template <int kOffset>
-JELLO_PACK_INLINE Pack keptLanes() {
-  Pack keep;
-  for (int l = 0; l < kPackLanes; ++l) keep[l] = slotKept(kSpringOffsets[kOffset], l) ? 1.0 : 0.0;
+// The lanes that start kFirst lanes into lo and run on into hi.
+template <int kFirst, std::size_t... kLane>
+JELLO_PACK_INLINE Lanes lanesFrom(Lanes lo, Lanes hi, std::index_sequence<kLane...>) {
+  if constexpr (kFirst == 0)
+    return lo;
+  else
+    return __builtin_shufflevector(lo, hi, (kFirst + static_cast<int>(kLane))...);
+}
+
+// 1 for the lanes of a unit kPhase units into its row whose spring exists, 0 for the slots the
+// kernel discards.
+template <int kOffset, int kPhase>
+JELLO_PACK_INLINE Lanes keptLanes() {
+  Lanes keep;
+  for (int l = 0; l < kLanes; ++l)
+    keep[l] = slotKept(kSpringOffsets[kOffset], kPhase * kLanes + l) ? 1.0 : 0.0;
   return keep;
 }
 
-// The inputs every row and offset shares.
+// The inputs every unit and offset shares.
 struct Inputs {
   const double* p;
   const double* v;
-  Pack minusK, minusD;  // -kElastic, -dElastic
-  const double* rests;  // m, by offset
+  double minusK, minusD;  // -kElastic, -dElastic
+  const double* rests;    // m, by offset
 };
 
-// The 8 slot forces of one row for one offset: springForce() lane by lane, times the lane's
-// keep (1 or 0), exactly as a single spring's force is computed.
-template <int kOffset, bool kDampers>
-JELLO_PACK_INLINE RowForce slotForces(const Inputs& in, int q, const RowForce& p,
-                                      const RowForce& v) {
+// The slot forces of the unit from point q, kPhase units into its row, for one offset:
+// springForce() lane by lane, times the lane's keep (1 or 0), as a single spring's is computed.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE UnitForce slotForces(const Inputs& in, int q) {
   constexpr SpringOffset o = kSpringOffsets[kOffset];
   constexpr int delta = springDelta(o);
-  // Only an offset whose far ends are not whole rows on can reach past the last point.
-  const bool pastEnd = delta % kPackLanes != 0 && q + delta + kPackLanes > kNumPoints;
-  Pack L[3], w[3];
+  // Only a far end further along k can lie past the last point.
+  const bool pastEnd = o.dk > 0 && q + delta + kLanes > kNumPoints;
+  Lanes L[3], w[3];
   for (int a = 0; a < 3; ++a) {
-    const double *pb = in.p + a * kNumPoints, *vb = in.v + a * kNumPoints;
-    L[a] = p.axis[a] - (pastEnd ? loadUpToEnd(pb, q + delta) : loadPack(pb + q + delta));
+    const double *pa = in.p + a * kNumPoints, *va = in.v + a * kNumPoints;
+    L[a] = loadLanes(pa + q) - (pastEnd ? loadUpToEnd(pa, q + delta) : loadLanes(pa + q + delta));
     if constexpr (kDampers)
-      w[a] = v.axis[a] - (pastEnd ? loadUpToEnd(vb, q + delta) : loadPack(vb + q + delta));
+      w[a] = loadLanes(va + q) - (pastEnd ? loadUpToEnd(va, q + delta) : loadLanes(va + q + delta));
   }
   // direction(): |L| and L/|L|, zero for a zero L (a select: the lanes go on together).
-  const Pack len = sqrtPack((L[0] * L[0] + L[1] * L[1]) + L[2] * L[2]);
-  const Pack inverse = len != 0 ? splat(1.0) / len : Pack{};
-  const Pack u[3] = {inverse * L[0], inverse * L[1], inverse * L[2]};
-  Pack tension = in.minusK * (len - in.rests[kOffset]);
+  Lanes len = (L[0] * L[0] + L[1] * L[1]) + L[2] * L[2];
+  for (int l = 0; l < kLanes; ++l) len[l] = __builtin_sqrt(len[l]);  // one vector square root
+  const Lanes inverse = len != 0 ? 1.0 / len : Lanes{};
+  const Lanes u[3] = {inverse * L[0], inverse * L[1], inverse * L[2]};
+  Lanes tension = in.minusK * (len - in.rests[kOffset]);
   if constexpr (kDampers)
     tension = tension + in.minusD * ((w[0] * u[0] + w[1] * u[1]) + w[2] * u[2]);
-  if constexpr (o.dk != 0) tension = keptLanes<kOffset>() * tension;  // 1 * t is t: skipped
-  RowForce out = {{tension * u[0], tension * u[1], tension * u[2]}};
+  if constexpr (o.dk != 0) tension = keptLanes<kOffset, kPhase>() * tension;  // 1 * t is t
+  UnitForce out = {{tension * u[0], tension * u[1], tension * u[2]}};
   // Slots whose far end is past the last point hold exactly 0, as they always have.
   if (pastEnd)
-    for (int l = 0; l < kPackLanes; ++l)
+    for (int l = 0; l < kLanes; ++l)
       if (q + l + delta >= kNumPoints) out.axis[0][l] = out.axis[1][l] = out.axis[2][l] = 0.0;
   return out;
 }
 
-// One offset's part of a row's total: its slots (zero in a row without springs of the offset)
-// go into the ring, and the forces of the springs ending at the row's points come out of it:
-// the slots lanesOn lanes from the end of row - rowsOn - 1 on, into row - rowsOn (this row when
-// rowsOn is 0). Rows before the first hold no springs: zeros. Reading whole rows and shifting
-// lanes is faster than a load across two rows, which may wait for the stores of both.
-template <int kOffset, bool kDampers>
-JELLO_PACK_INLINE void addOffset(const Inputs& in, int row, const RowForce& p, const RowForce& v,
-                                 RowForce* rings, RowForce* total) {
+// One offset's part of a unit's total: its slots (zero in a row without springs of the offset)
+// go into the ring, and the forces of the springs ending at the unit's points come out of it:
+// the slots lanesOn lanes from the end of unit - unitsOn - 1 on, into unit - unitsOn (this unit
+// when unitsOn is 0). Units before the first hold no springs: zeros. Reading whole units and
+// shifting lanes is faster than a load across two units, which may wait for both stores.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, UnitForce* total) {
   constexpr int delta = springDelta(kSpringOffsets[kOffset]);
-  constexpr int rowsOn = delta / kPackLanes, lanesOn = delta % kPackLanes, size = ringRows(kOffset);
-  RowForce* ring = rings + ringStart(kOffset);
-  const RowForce out = rowHasSprings(kSpringOffsets[kOffset], row)
-                           ? slotForces<kOffset, kDampers>(in, row * kPackLanes, p, v)
-                           : RowForce{};
-  ring[row % size] = out;
-  const int near = row - rowsOn, far = near - 1;
+  constexpr int unitsOn = delta / kLanes, lanesOn = delta % kLanes, size = ringUnits(kOffset);
+  UnitForce* ring = rings + ringStart(kOffset);
+  const UnitForce out = rowHasSprings(kSpringOffsets[kOffset], unit / kUnitsPerRow)
+                            ? slotForces<kOffset, kPhase, kDampers>(in, unit * kLanes)
+                            : UnitForce{};
+  ring[unit % size] = out;
+  const int near = unit - unitsOn, far = near - 1;
   for (int a = 0; a < 3; ++a) {
-    Pack ending = near >= 0 ? ring[near % size].axis[a] : Pack{};
+    Lanes ending = near >= 0 ? ring[near % size].axis[a] : Lanes{};
     if constexpr (lanesOn != 0)
-      ending =
-          lanesFrom<kPackLanes - lanesOn>(far >= 0 ? ring[far % size].axis[a] : Pack{}, ending);
+      ending = lanesFrom<kLanes - lanesOn>(far >= 0 ? ring[far % size].axis[a] : Lanes{}, ending,
+                                           std::make_index_sequence<kLanes>{});
     total->axis[a] = (total->axis[a] - ending) + out.axis[a];
   }
 }
 
-template <bool kDampers, int... kOffset>
-JELLO_PACK_INLINE void addOffsets(std::integer_sequence<int, kOffset...>, const Inputs& in, int row,
-                                  const RowForce& p, const RowForce& v, RowForce* rings,
-                                  RowForce* total) {
-  (addOffset<kOffset, kDampers>(in, row, p, v, rings, total), ...);
+template <int kPhase, bool kDampers, int... kOffset>
+JELLO_PACK_INLINE void addUnit(std::integer_sequence<int, kOffset...>, const Inputs& in, int unit,
+                               UnitForce* rings, double* force) {
+  const int q = unit * kLanes;
+  UnitForce total;
+  for (int a = 0; a < 3; ++a) total.axis[a] = loadLanes(force + a * kNumPoints + q);
+  (addOffset<kOffset, kPhase, kDampers>(in, unit, rings, &total), ...);
+  for (int a = 0; a < 3; ++a)
+    std::memcpy(force + a * kNumPoints + q, &total.axis[a], sizeof(Lanes));
+}
+
+// A lattice row: its units in order, each knowing at compile time where in the row it lies.
+template <bool kDampers, int... kPhase>
+JELLO_PACK_INLINE void addRow(std::integer_sequence<int, kPhase...>, const Inputs& in, int row,
+                              UnitForce* rings, double* force) {
+  (addUnit<kPhase, kDampers>(std::make_integer_sequence<int, kOffsets>{}, in,
+                             row * kUnitsPerRow + kPhase, rings, force),
+   ...);
 }
 
 template <bool kDampers>
-void addSpringForces(const Inputs& in, double* __restrict force) {
-  RowForce rings[kRingRows];  // each ring row is written before it is read
-  for (int row = 0; row < kRows; ++row) {
-    const int q = row * kPackLanes;
-    RowForce p, v, total;
-    for (int a = 0; a < 3; ++a) {
-      p.axis[a] = loadPack(in.p + a * kNumPoints + q);
-      v.axis[a] = loadPack(in.v + a * kNumPoints + q);
-      total.axis[a] = loadPack(force + a * kNumPoints + q);
-    }
-    addOffsets<kDampers>(std::make_integer_sequence<int, kOffsets>{}, in, row, p, v, rings, &total);
-    for (int a = 0; a < 3; ++a) storePack(force + a * kNumPoints + q, total.axis[a]);
-  }
+void addSpringForces(const Inputs& in, double* force) {
+  UnitForce rings[kRingUnits];  // each ring unit is written before it is read
+  for (int row = 0; row < kNumPoints / kLatticeSize; ++row)
+    addRow<kDampers>(std::make_integer_sequence<int, kUnitsPerRow>{}, in, row, rings, force);
 }
 
 }  // namespace
@@ -208,7 +224,7 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
 }
 
 void SpringTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
-  const Inputs in{p, v, splat(-k_), splat(-d_), rests_.data()};
+  const Inputs in{p, v, -k_, -d_, rests_.data()};
   if (dampers_)
     addSpringForces<true>(in, force);
   else
