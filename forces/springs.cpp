@@ -171,12 +171,16 @@ JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, U
   const UnitForce out = rowHasSprings(kSpringOffsets[kOffset], unit / kUnitsPerRow)
                             ? slotForces<kOffset, kPhase, kDampers>(in, unit * kLanes)
                             : UnitForce{};
-  ring[unit % size] = out;
-  const int near = unit - unitsOn, far = near - 1;
+  const int at = unit % size;
+  ring[at] = out;
+  // Units unit - unitsOn and unit - unitsOn - 1 are at + 2 and at + 1, modulo unitsOn + 2.
+  const int nearAt = at + 2 >= size ? at + 2 - size : at + 2;
+  const int farAt = at + 1 >= size ? at + 1 - size : at + 1;
+  const bool nearExists = unit >= unitsOn, farExists = unit > unitsOn;
   for (int a = 0; a < 3; ++a) {
-    Lanes ending = near >= 0 ? ring[near % size].axis[a] : Lanes{};
+    Lanes ending = nearExists ? ring[nearAt].axis[a] : Lanes{};
     if constexpr (lanesOn != 0)
-      ending = lanesFrom<kLanes - lanesOn>(far >= 0 ? ring[far % size].axis[a] : Lanes{}, ending,
+      ending = lanesFrom<kLanes - lanesOn>(farExists ? ring[farAt].axis[a] : Lanes{}, ending,
                                            std::make_index_sequence<kLanes>{});
     total->axis[a] = (total->axis[a] - ending) + out.axis[a];
   }
