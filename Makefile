@@ -11,7 +11,7 @@ SECONDS ?= 3
 FPS ?= 30
 CLANG_FORMAT ?= clang-format-14
 
-.PHONY: programs all deps deps-run run test test-sanitize format-check fuzz vec-report animation docs clean
+.PHONY: programs all deps deps-run run test test-sanitize format-check fuzz vec-report bench animation docs clean
 
 # The three programs, left at the top level as the course's Makefile left ./jello.
 programs: $(BUILD_DIR)/Makefile
@@ -85,6 +85,16 @@ vec-report:
 		$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
 		-c $$f -o /dev/null -fopt-info-vec-optimized 2>&1 | grep "^$$f.*loop vectorized" | sort -t: -k2 -n -u; done
 
+# The force kernel and the RK4 step of the five course worlds, this tree against TAG (default
+# before-16, built once into build-before/): a markdown table of medians of interleaved runs. TAG
+# and ROUNDS reach the script through its environment, never through a shell command line.
+TAG ?= before-16
+ROUNDS ?= 5
+bench: export BENCH_TAG = $(TAG)
+bench: export BENCH_ROUNDS = $(ROUNDS)
+bench: programs
+	scripts/bench-against
+
 # The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
 fuzz: deps
 	cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_FUZZ=ON \
@@ -93,4 +103,4 @@ fuzz: deps
 	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) jello createWorld grade
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) build-before jello createWorld grade

@@ -58,8 +58,9 @@ FieldShape classifyField(FieldView field);
 class FieldTerm final : public ForceTerm {
  public:
   // How the force is computed: a constant (a uniform field), the interpolation on a padded copy
-  // of the nodes (4 doubles each, one vector operation a step), or the reference interpolation
-  // on the world's nodes point by point (the general kernel).
+  // of the nodes (4 doubles each, so that two points' nodes make one Pack; 8 points at a time,
+  // the same bits as the reference), or the reference interpolation on the world's nodes point
+  // by point (the general kernel).
   enum class Method { Uniform, Padded, Reference };
   // `mass` (kg, each point's) only for the description: the acceleration a force gives.
   FieldTerm(const ForceField& field, double mass, Method method);

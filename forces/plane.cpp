@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "forces/pack.h"
+
 namespace jello {
 
 Plane normalisedPlane(const Plane& plane) {
@@ -79,9 +81,30 @@ int PlaneTerm::pointsAcross(const double* p) const {
   return across;
 }
 
+// Eight points at a time: where none of them is across the plane (most of the time, for most of
+// the points) their forces are exactly 0.0 and only that is added; the contact springs, a square
+// root and two divisions a point, are computed for the eight when one of them is across.
 void PlaneTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
-  for (int q = 0; q < kNumPoints; ++q)
-    store(force, q, load(force, q) + planeForce(plane_, side_, load(p, q), load(v, q), spring_));
+  for (int q = 0; q < kNumPoints; q += kPackLanes) {
+    const Pack x = loadPack(p + q), y = loadPack(p + kNumPoints + q),
+               z = loadPack(p + 2 * kNumPoints + q);
+    const Pack s = planeValueAt(plane_, x, y, z);
+    const Pack across = byPiece(
+        [side = side_](NativePack values) {
+          return values * side < 0 ? NativePack{} + 1 : NativePack{};
+        },
+        s);
+    bool any = false;
+    for (int l = 0; l < kPackLanes; ++l) any = any || across.lane(l) != 0;
+    if (any) {
+      for (int l = q; l < q + kPackLanes; ++l)
+        store(force, l,
+              load(force, l) + planeForce(plane_, side_, load(p, l), load(v, l), spring_));
+    } else {
+      for (int a = 0; a < 3; ++a)
+        storePack(force + a * kNumPoints + q, loadPack(force + a * kNumPoints + q) + 0.0);
+    }
+  }
 }
 
 void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {

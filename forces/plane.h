@@ -24,10 +24,14 @@ Plane normalisedPlane(const Plane& plane);
 // Why the plane cannot be simulated, "" when it can: its normal is zero, or its normalised d
 // is not finite (the plane lies further from the origin than about 1e308 m).
 std::string planeProblem(const Plane& plane);
-// a*x + b*y + c*z + d at p: the one place it is computed (positive on the normal's side).
-inline double planeValue(const Plane& plane, Vec3 p) {
-  return dot(Vec3{plane.a, plane.b, plane.c}, p) + plane.d;
+// a*x + b*y + c*z + d at (x, y, z): the one place it is computed (positive on the normal's
+// side). T is a double, or a Pack of eight points' coordinates (forces/pack.h), which round
+// lane by lane as the doubles do.
+template <class T>
+inline T planeValueAt(const Plane& plane, const T& x, const T& y, const T& z) {
+  return ((x * plane.a + y * plane.b) + z * plane.c) + plane.d;
 }
+inline double planeValue(const Plane& plane, Vec3 p) { return planeValueAt(plane, p.x, p.y, p.z); }
 // The allowed side of the plane for a cube at positions p: the sign of the plane's value at
 // their centroid, +1 when the centroid is on the plane.
 double allowedSide(const Plane& plane, const double* p);

@@ -1,77 +1,28 @@
-// forces/springs.cpp: the lattice's springs: the table, the kernel's groups, force, Jacobian,
-// energy and description.
+// forces/springs.cpp: the lattice's springs: the spring list, the force kernel, Jacobian, energy
+// and description.
 
 #include "forces/springs.h"
 
-#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
+
+#include "forces/pack.h"
 
 namespace jello {
 
-const std::vector<SpringOffset> kSpringOffsets = {
-    // structural
-    {1, 0, 0, SpringKind::Structural},
-    {0, 1, 0, SpringKind::Structural},
-    {0, 0, 1, SpringKind::Structural},
-    // face shear
-    {1, 1, 0, SpringKind::Shear},
-    {1, -1, 0, SpringKind::Shear},
-    {1, 0, 1, SpringKind::Shear},
-    {1, 0, -1, SpringKind::Shear},
-    {0, 1, 1, SpringKind::Shear},
-    {0, 1, -1, SpringKind::Shear},
-    // body shear
-    {1, 1, 1, SpringKind::Shear},
-    {1, 1, -1, SpringKind::Shear},
-    {1, -1, 1, SpringKind::Shear},
-    {1, -1, -1, SpringKind::Shear},
-    // bend
-    {2, 0, 0, SpringKind::Bend},
-    {0, 2, 0, SpringKind::Bend},
-    {0, 0, 2, SpringKind::Bend},
-};
-
-std::vector<SpringGroup> buildSpringGroups() {
-  std::vector<SpringGroup> groups;
-  auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
-  for (const SpringOffset& o : kSpringOffsets) {
-    SpringGroup g;
-    g.kind = o.kind;
-    g.delta = pointIndex(o.di, o.dj, o.dk);
-    g.rest = kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
-    g.mask.assign(kNumPoints, 0.0);
-    for (int i = 0; i < kLatticeSize; ++i)
-      for (int j = 0; j < kLatticeSize; ++j) {
-        if (!inside(i + o.di) || !inside(j + o.dj)) continue;
-        const int rowBegin = pointIndex(i, j, 0), rowEnd = rowBegin + kLatticeSize;
-        if (!g.spans.empty() && g.spans.back().end == rowBegin)
-          g.spans.back().end = rowEnd;
-        else
-          g.spans.push_back({rowBegin, rowEnd});
-        for (int k = 0; k < kLatticeSize; ++k)
-          if (inside(k + o.dk)) g.mask[pointIndex(i, j, k)] = 1.0;
-      }
-    // The last row's discarded slots would reach past the last point: they end the last span.
-    g.spans.back().end = std::min(g.spans.back().end, kNumPoints - g.delta);
-    groups.push_back(std::move(g));
-  }
-  return groups;
+double restLength(const SpringOffset& o) {
+  return kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
 }
 
-namespace {
-// The same table walk as the kernel's: the springs are the groups' slots that are kept.
-std::vector<Spring> springsOf(const std::vector<SpringGroup>& groups) {
+std::vector<Spring> buildSprings() {
   std::vector<Spring> springs;
-  for (const SpringGroup& g : groups)
-    for (const SpringGroup::Span& span : g.spans)
-      for (int q = span.begin; q < span.end; ++q)
-        if (g.mask[q] != 0) springs.push_back({q, q + g.delta, g.rest, g.kind});
+  for (const SpringOffset& o : kSpringOffsets)
+    for (int q = 0; q < kNumPoints; ++q)
+      if (rowHasSprings(o, q / kPackLanes) && slotKept(o, q % kPackLanes))
+        springs.push_back({q, q + springDelta(o), restLength(o), o.kind});
   return springs;
 }
-}  // namespace
-
-std::vector<Spring> buildSprings() { return springsOf(buildSpringGroups()); }
 
 void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
                     Block3* dFdw) {
@@ -103,48 +54,171 @@ void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3
 
 namespace {
 
-// The springs of one group: the forces of all slots first (loops the compiler vectorises),
-// then one pass over the points adding each point's two springs of the group, the one that
-// ends at it (q - delta to q) before the one that starts at it: the order in which a loop over
-// single springs adds them, so the sums round the same way. f holds zeros before slot 0 and
-// outside the spans, so that both reads are plain loads.
-constexpr int kMaxDelta = 2 * kLatticeSize * kLatticeSize;  // the bend spring along i
+// The force kernel. It goes through the points a unit at a time (kNativeLanes points along k in
+// one lattice row: a whole row with AVX-512, half a row with AVX, a quarter with SSE2; one vector
+// register each), and for each unit through the 16 offsets in table order, keeping the unit's
+// total force in registers: for each offset it computes the unit's slots (the springs from its
+// points a to their points b = a + delta) and adds, lane by lane, (total - in) + out. `out` is
+// the force of the spring starting at the point, `in` that of the spring ending at it, which
+// started delta points earlier: a slot of an earlier unit, which the kernel kept in a small ring
+// of that offset's recent units. That is docs/physics.md's order of summation, so the sums round
+// exactly as a loop over single springs would. Each offset is a template argument: its delta,
+// its ring and its kept lanes are constants, and the 16 offsets unroll into one loop body.
+// (Units of a whole row with AVX and SSE2 too ran 2 times slower than the kernel before this
+// one: their totals and positions did not fit in the 16 registers.)
+typedef NativePack Lanes;
+constexpr int kLanes = kNativeLanes;
+constexpr int kUnits = kNumPoints / kLanes;
+constexpr int kUnitsPerRow = kLatticeSize / kLanes;
+constexpr int kOffsets = static_cast<int>(kSpringOffsets.size());
+
+// A spring of an offset ends `delta` points further on: unitsOn whole units and lanesOn lanes.
+// The springs ending in unit u start in units u - unitsOn - 1 and u - unitsOn: the offset's ring
+// keeps the slots of its last unitsOn + 2 units, unit u at u % ringUnits.
+constexpr int ringUnits(int offset) { return springDelta(kSpringOffsets[offset]) / kLanes + 2; }
+constexpr int ringStart(int offset) {
+  return offset == 0 ? 0 : ringStart(offset - 1) + ringUnits(offset - 1);
+}
+constexpr int kRingUnits = ringStart(kOffsets);  // 23 KB with AVX-512: the rings stay in L1
+
+// One unit's slot forces, by axis.
+struct UnitForce {
+  Lanes axis[3];
+};
+
+JELLO_PACK_INLINE Lanes loadLanes(const double* a) {
+  Lanes out;
+  std::memcpy(&out, a, sizeof out);
+  return out;
+}
+// The doubles of one axis from point `first` on, where some lie past the last point (the far
+// ends of slots the kernel discards, in the last rows): those lanes read 0, not past the array.
+JELLO_PACK_INLINE Lanes loadUpToEnd(const double* axis, int first) {
+  Lanes out = {};
+  for (int l = 0; first + l < kNumPoints; ++l) out[l] = axis[first + l];
+  return out;
+}
+
+// The lanes that start kFirst lanes into lo and run on into hi.
+template <int kFirst, std::size_t... kLane>
+JELLO_PACK_INLINE Lanes lanesFrom(Lanes lo, Lanes hi, std::index_sequence<kLane...>) {
+  if constexpr (kFirst == 0)
+    return lo;
+  else
+    return __builtin_shufflevector(lo, hi, (kFirst + static_cast<int>(kLane))...);
+}
+
+// 1 for the lanes of a unit kPhase units into its row whose spring exists, 0 for the slots the
+// kernel discards.
+template <int kOffset, int kPhase>
+JELLO_PACK_INLINE Lanes keptLanes() {
+  Lanes keep;
+  for (int l = 0; l < kLanes; ++l)
+    keep[l] = slotKept(kSpringOffsets[kOffset], kPhase * kLanes + l) ? 1.0 : 0.0;
+  return keep;
+}
+
+// The inputs every unit and offset shares.
+struct Inputs {
+  const double* p;
+  const double* v;
+  double minusK, minusD;  // -kElastic, -dElastic
+  const double* rests;    // m, by offset
+};
+
+// The slot forces of the unit from point q, kPhase units into its row, for one offset:
+// springForce() lane by lane, times the lane's keep (1 or 0), as a single spring's is computed.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE UnitForce slotForces(const Inputs& in, int q) {
+  constexpr SpringOffset o = kSpringOffsets[kOffset];
+  constexpr int delta = springDelta(o);
+  // Only a far end further along k can lie past the last point.
+  const bool pastEnd = o.dk > 0 && q + delta + kLanes > kNumPoints;
+  Lanes L[3], w[3];
+  for (int a = 0; a < 3; ++a) {
+    const double *pa = in.p + a * kNumPoints, *va = in.v + a * kNumPoints;
+    L[a] = loadLanes(pa + q) - (pastEnd ? loadUpToEnd(pa, q + delta) : loadLanes(pa + q + delta));
+    if constexpr (kDampers)
+      w[a] = loadLanes(va + q) - (pastEnd ? loadUpToEnd(va, q + delta) : loadLanes(va + q + delta));
+  }
+  // direction(): |L| and L/|L|, zero for a zero L (a select: the lanes go on together).
+  Lanes len = (L[0] * L[0] + L[1] * L[1]) + L[2] * L[2];
+  for (int l = 0; l < kLanes; ++l) len[l] = __builtin_sqrt(len[l]);  // one vector square root
+  const Lanes inverse = len != 0 ? 1.0 / len : Lanes{};
+  const Lanes u[3] = {inverse * L[0], inverse * L[1], inverse * L[2]};
+  Lanes tension = in.minusK * (len - in.rests[kOffset]);
+  if constexpr (kDampers)
+    tension = tension + in.minusD * ((w[0] * u[0] + w[1] * u[1]) + w[2] * u[2]);
+  if constexpr (o.dk != 0) tension = keptLanes<kOffset, kPhase>() * tension;  // 1 * t is t
+  UnitForce out = {{tension * u[0], tension * u[1], tension * u[2]}};
+  // Slots whose far end is past the last point hold exactly 0, as they always have.
+  if (pastEnd)
+    for (int l = 0; l < kLanes; ++l)
+      if (q + l + delta >= kNumPoints) out.axis[0][l] = out.axis[1][l] = out.axis[2][l] = 0.0;
+  return out;
+}
+
+// One offset's part of a unit's total: its slots (zero in a row without springs of the offset)
+// go into the ring, and the forces of the springs ending at the unit's points come out of it:
+// the slots lanesOn lanes from the end of unit - unitsOn - 1 on, into unit - unitsOn (this unit
+// when unitsOn is 0). Units before the first hold no springs: zeros. Reading whole units and
+// shifting lanes is faster than a load across two units, which may wait for both stores.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, UnitForce* total) {
+  constexpr int delta = springDelta(kSpringOffsets[kOffset]);
+  constexpr int unitsOn = delta / kLanes, lanesOn = delta % kLanes, size = ringUnits(kOffset);
+  UnitForce* ring = rings + ringStart(kOffset);
+  const UnitForce out = rowHasSprings(kSpringOffsets[kOffset], unit / kUnitsPerRow)
+                            ? slotForces<kOffset, kPhase, kDampers>(in, unit * kLanes)
+                            : UnitForce{};
+  const int at = unit % size;
+  ring[at] = out;
+  // Units unit - unitsOn and unit - unitsOn - 1 are at + 2 and at + 1, modulo unitsOn + 2.
+  const int nearAt = at + 2 >= size ? at + 2 - size : at + 2;
+  const int farAt = at + 1 >= size ? at + 1 - size : at + 1;
+  const bool nearExists = unit >= unitsOn, farExists = unit > unitsOn;
+  for (int a = 0; a < 3; ++a) {
+    Lanes ending = nearExists ? ring[nearAt].axis[a] : Lanes{};
+    if constexpr (lanesOn != 0)
+      ending = lanesFrom<kLanes - lanesOn>(farExists ? ring[farAt].axis[a] : Lanes{}, ending,
+                                           std::make_index_sequence<kLanes>{});
+    total->axis[a] = (total->axis[a] - ending) + out.axis[a];
+  }
+}
+
+template <int kPhase, bool kDampers, int... kOffset>
+JELLO_PACK_INLINE void addUnit(std::integer_sequence<int, kOffset...>, const Inputs& in, int unit,
+                               UnitForce* rings, double* force) {
+  const int q = unit * kLanes;
+  UnitForce total;
+  for (int a = 0; a < 3; ++a) total.axis[a] = loadLanes(force + a * kNumPoints + q);
+  (addOffset<kOffset, kPhase, kDampers>(in, unit, rings, &total), ...);
+  for (int a = 0; a < 3; ++a)
+    std::memcpy(force + a * kNumPoints + q, &total.axis[a], sizeof(Lanes));
+}
+
+// A lattice row: its units in order, each knowing at compile time where in the row it lies.
+template <bool kDampers, int... kPhase>
+JELLO_PACK_INLINE void addRow(std::integer_sequence<int, kPhase...>, const Inputs& in, int row,
+                              UnitForce* rings, double* force) {
+  (addUnit<kPhase, kDampers>(std::make_integer_sequence<int, kOffsets>{}, in,
+                             row * kUnitsPerRow + kPhase, rings, force),
+   ...);
+}
+
 template <bool kDampers>
-void addSpringGroup(const SpringGroup& g, double k, double d, const double* __restrict p,
-                    const double* __restrict v, double* __restrict force) {
-  const double* __restrict mask = g.mask.data();
-  alignas(64) double buffer[3][kMaxDelta + kNumPoints];
-  const double *px = p, *py = p + kNumPoints, *pz = p + 2 * kNumPoints;
-  const double *vx = v, *vy = v + kNumPoints, *vz = v + 2 * kNumPoints;
-  const int b = g.delta;
-  int written = -b;  // buffer slots before this one are set
-  for (const SpringGroup::Span& span : g.spans) {
-    for (double* f : buffer) std::fill(f + kMaxDelta + written, f + kMaxDelta + span.begin, 0.0);
-    written = span.end;
-    for (int q = span.begin; q < span.end; ++q) {
-      double len;
-      Vec3 u = direction({px[q] - px[q + b], py[q] - py[q + b], pz[q] - pz[q + b]}, &len);
-      double tension = springTension(len, k, g.rest);
-      if constexpr (kDampers)
-        tension += damperTension({vx[q] - vx[q + b], vy[q] - vy[q + b], vz[q] - vz[q + b]}, u, d);
-      Vec3 fq = (mask[q] * tension) * u;
-      buffer[0][kMaxDelta + q] = fq.x;
-      buffer[1][kMaxDelta + q] = fq.y;
-      buffer[2][kMaxDelta + q] = fq.z;
-    }
-  }
-  for (int axis = 0; axis < 3; ++axis) {
-    double* __restrict out = force + axis * kNumPoints;
-    double* f = buffer[axis] + kMaxDelta;
-    std::fill(f + written, f + kNumPoints, 0.0);
-    for (int q = 0; q < kNumPoints; ++q) out[q] = (out[q] - f[q - b]) + f[q];
-  }
+void addSpringForces(const Inputs& in, double* force) {
+  UnitForce rings[kRingUnits];  // each ring unit is written before it is read
+  for (int row = 0; row < kNumPoints / kLatticeSize; ++row)
+    addRow<kDampers>(std::make_integer_sequence<int, kUnitsPerRow>{}, in, row, rings, force);
 }
 
 }  // namespace
 
 SpringTerm::SpringTerm(double k, double d, bool dampers)
-    : k_(k), d_(d), dampers_(dampers), groups_(buildSpringGroups()), springs_(springsOf(groups_)) {}
+    : k_(k), d_(d), dampers_(dampers), springs_(buildSprings()) {
+  for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
+}
 
 std::vector<std::pair<int, int>> SpringTerm::pairs() const {
   std::vector<std::pair<int, int>> out;
@@ -154,12 +228,11 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
 }
 
 void SpringTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
-  for (const SpringGroup& g : groups_) {
-    if (dampers_)
-      addSpringGroup<true>(g, k_, d_, p, v, force);
-    else
-      addSpringGroup<false>(g, k_, d_, p, v, force);
-  }
+  const Inputs in{p, v, -k_, -d_, rests_.data()};
+  if (dampers_)
+    addSpringForces<true>(in, force);
+  else
+    addSpringForces<false>(in, force);
 }
 
 void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {

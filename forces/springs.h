@@ -4,6 +4,7 @@
 // the force ON its end a; its end b gets minus that. L = p_a - p_b points from b to a.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,7 +20,29 @@ struct SpringOffset {
   int di, dj, dk;
   SpringKind kind;
 };
-extern const std::vector<SpringOffset> kSpringOffsets;  // 16 rows, 6220 springs
+// 16 rows, 6220 springs; the order in which the kernel adds them (docs/physics.md).
+inline constexpr std::array<SpringOffset, 16> kSpringOffsets = {{
+    // structural
+    {1, 0, 0, SpringKind::Structural},
+    {0, 1, 0, SpringKind::Structural},
+    {0, 0, 1, SpringKind::Structural},
+    // face shear
+    {1, 1, 0, SpringKind::Shear},
+    {1, -1, 0, SpringKind::Shear},
+    {1, 0, 1, SpringKind::Shear},
+    {1, 0, -1, SpringKind::Shear},
+    {0, 1, 1, SpringKind::Shear},
+    {0, 1, -1, SpringKind::Shear},
+    // body shear
+    {1, 1, 1, SpringKind::Shear},
+    {1, 1, -1, SpringKind::Shear},
+    {1, -1, 1, SpringKind::Shear},
+    {1, -1, -1, SpringKind::Shear},
+    // bend
+    {2, 0, 0, SpringKind::Bend},
+    {0, 2, 0, SpringKind::Bend},
+    {0, 0, 2, SpringKind::Bend},
+}};
 
 struct Spring {
   int a, b;     // point indices, see pointIndex()
@@ -27,24 +50,24 @@ struct Spring {
   SpringKind kind;
 };
 
-// The springs of one row of kSpringOffsets, for the force kernel: point q is joined to point
-// q + delta for every q in the spans where mask[q] is 1. A span is a run of whole lattice rows
-// (fixed i and j) whose neighbours' rows exist; inside a row, a neighbour beyond the last k
-// has mask 0: the kernel computes that slot and discards it, which keeps its loops regular
-// (6,826 slots for 6,220 springs).
-struct SpringGroup {
-  struct Span {
-    int begin, end;  // point indices, end exclusive
-  };
-  int delta = 0;  // pointIndex(di, dj, dk), > 0 for every row of the table
-  double rest = 0;
-  SpringKind kind = SpringKind::Structural;
-  std::vector<Span> spans;
-  std::vector<double> mask;  // kNumPoints entries, 1.0 or 0.0
-};
-std::vector<SpringGroup> buildSpringGroups();
-// The springs one by one (6,220), grouped by offset in the order of kSpringOffsets: the
-// groups' kept slots.
+// How the force kernel covers the springs of one offset. It works on lattice rows (fixed i and
+// j, the 8 points along k, one Pack): the row of point q joins q to q + delta. A row computes
+// its 8 slots when its neighbours' row (i + di, j + dj) exists, and keeps the slots whose
+// neighbour k + dk exists too; a kept slot is a spring, and every spring is a kept slot
+// (6,832 slots computed for 6,220 springs). Rows whose neighbours' row is missing compute
+// nothing.
+constexpr int springDelta(const SpringOffset& o) { return pointIndex(o.di, o.dj, o.dk); }
+constexpr bool rowHasSprings(const SpringOffset& o, int row) {
+  const int i = row / kLatticeSize + o.di, j = row % kLatticeSize + o.dj;
+  return i >= 0 && i < kLatticeSize && j >= 0 && j < kLatticeSize;
+}
+constexpr bool slotKept(const SpringOffset& o, int lane) {
+  return lane + o.dk >= 0 && lane + o.dk < kLatticeSize;
+}
+// The rest length |offset|/7, computed as docs/physics.md gives it.
+double restLength(const SpringOffset& o);
+// The springs one by one (6,220), grouped by offset in the order of kSpringOffsets, each group
+// in the order of its points a: the kernel's kept slots.
 std::vector<Spring> buildSprings();
 
 // Spring and damper, as magnitudes along u = L/|L| (positive pushes a away from b).
@@ -84,7 +107,7 @@ class SpringTerm final : public ForceTerm {
  private:
   double k_, d_;
   bool dampers_;
-  std::vector<SpringGroup> groups_;
+  std::array<double, kSpringOffsets.size()> rests_;  // m, restLength of each offset
   std::vector<Spring> springs_;
 };
 

@@ -6,25 +6,28 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "forces/pack.h"
+
 namespace jello {
 
-// Eight running bounds side by side, not one: an element-wise min the compiler vectorises,
-// where a single running min is a reduction it may not reorder.
+// Eight running bounds side by side (one Pack), not one: an element-wise min, where a single
+// running min is a reduction the compiler may not reorder. (Written as arrays of 8 lanes, GCC
+// left it scalar: 0.43 us, 4% of a force evaluation; as Packs 0.1 us.)
 Bounds boundsOf(const double* p) {
-  constexpr int kLanes = 8;
-  static_assert(kNumPoints % kLanes == 0);
   double lower[3], upper[3];
   for (int axis = 0; axis < 3; ++axis) {
     const double* c = p + axis * kNumPoints;
-    double lo[kLanes], hi[kLanes];
-    for (int l = 0; l < kLanes; ++l) lo[l] = hi[l] = c[l];
-    for (int q = kLanes; q < kNumPoints; q += kLanes)
-      for (int l = 0; l < kLanes; ++l) {
-        lo[l] = c[q + l] < lo[l] ? c[q + l] : lo[l];
-        hi[l] = c[q + l] > hi[l] ? c[q + l] : hi[l];
-      }
-    lower[axis] = *std::min_element(lo, lo + kLanes);
-    upper[axis] = *std::max_element(hi, hi + kLanes);
+    Pack lo = loadPack(c), hi = lo;
+    for (int q = kPackLanes; q < kNumPoints; q += kPackLanes) {
+      const Pack x = loadPack(c + q);
+      lo = byPiece([](NativePack xs, NativePack low) { return xs < low ? xs : low; }, x, lo);
+      hi = byPiece([](NativePack xs, NativePack high) { return xs > high ? xs : high; }, x, hi);
+    }
+    double lows[kPackLanes], highs[kPackLanes];
+    storePack(lows, lo);
+    storePack(highs, hi);
+    lower[axis] = *std::min_element(lows, lows + kPackLanes);
+    upper[axis] = *std::max_element(highs, highs + kPackLanes);
   }
   return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}};
 }

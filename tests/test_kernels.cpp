@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "physics.h"
@@ -44,45 +45,82 @@ double kernelsDisagreeBy(const World& world, const State& start,
 }
 
 // The kernel's slots against the lattice itself: a slot is kept exactly when its neighbour
-// (i+di, j+dj, k+dk) exists, every such pair has a slot, no slot reaches past the last point,
-// and the rest length is |offset|/7.
-TEST(SpringGroups, SlotsAreExactlyTheLatticeNeighboursAndStayInside) {
-  std::vector<SpringGroup> groups = buildSpringGroups();
-  ASSERT_EQ(groups.size(), kSpringOffsets.size());
+// (i+di, j+dj, k+dk) exists, every such pair has a slot, a kept slot's far end is that
+// neighbour (never past the last point), and the rest length is |offset|/7.
+TEST(SpringSlots, KeptSlotsAreExactlyTheLatticeNeighbours) {
   auto inside = [](int c) { return c >= 0 && c < kLatticeSize; };
   std::size_t kept = 0, slots = 0;
-  for (std::size_t o = 0; o < groups.size(); ++o) {
-    const SpringGroup& g = groups[o];
-    const SpringOffset& offset = kSpringOffsets[o];
-    EXPECT_DOUBLE_EQ(g.rest, std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj +
-                                              offset.dk * offset.dk)) /
-                                 7);
-    std::vector<bool> slot(kNumPoints, false);
-    for (const SpringGroup::Span& span : g.spans)
-      for (int q = span.begin; q < span.end; ++q) {
-        ASSERT_LT(q + g.delta, kNumPoints) << "group " << o << " slot " << q;
-        slot[q] = true;
-        ++slots;
-      }
+  for (const SpringOffset& offset : kSpringOffsets) {
+    EXPECT_DOUBLE_EQ(
+        restLength(offset),
+        std::sqrt(double(offset.di * offset.di + offset.dj * offset.dj + offset.dk * offset.dk)) /
+            7);
     for (int i = 0; i < kLatticeSize; ++i)
       for (int j = 0; j < kLatticeSize; ++j)
         for (int k = 0; k < kLatticeSize; ++k) {
           const int q = pointIndex(i, j, k);
           const bool neighbour =
               inside(i + offset.di) && inside(j + offset.dj) && inside(k + offset.dk);
-          if (neighbour) {
-            EXPECT_TRUE(slot[q]) << "group " << o << ": no slot for point " << q;
-            EXPECT_EQ(q + g.delta, pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
+          const bool computed = rowHasSprings(offset, q / kLatticeSize);
+          const bool keep = computed && slotKept(offset, k);
+          EXPECT_EQ(keep, neighbour) << offset.di << offset.dj << offset.dk << " point " << q;
+          if (keep) {
+            EXPECT_EQ(q + springDelta(offset),
+                      pointIndex(i + offset.di, j + offset.dj, k + offset.dk));
           }
-          if (slot[q]) {
-            EXPECT_EQ(g.mask[q] != 0, neighbour) << "group " << o << " point " << q;
-          }
-          kept += slot[q] && g.mask[q] != 0;
+          kept += keep;
+          slots += computed;
         }
   }
   EXPECT_EQ(kept, 6220u);
   EXPECT_EQ(buildSprings().size(), kept);
   std::printf("%zu slots for %zu springs\n", slots, kept);
+}
+
+// The kernel against a loop over single springs in docs/physics.md's order (for each offset in
+// table order, each point q: F_q = (F_q - f_in) + f_out, a missing spring giving 0), with and
+// without dampers: the same bits. The state is jittered and moving, a pair of neighbours shares a
+// position (a spring of zero length) and the forces start nonzero (the term adds to them).
+TEST(SpringKernel, AddsEachSpringInTheDocumentedOrderBitForBit) {
+  std::mt19937 random(16);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-3, 3), start(-5, 5);
+  State s = test::restLattice();
+  for (int c = 0; c < kNumCoords; ++c) {
+    s.p()[c] += jitter(random);
+    s.v()[c] = speed(random);
+  }
+  store(s.p(), pointIndex(3, 4, 5), load(s.p(), pointIndex(3, 4, 6)));
+  std::vector<double> initial(kNumCoords);
+  for (double& f : initial) f = start(random);
+  const double k = 734.5, d = 0.8125;
+  const std::vector<Spring> springs = buildSprings();  // by offset, in table order
+  for (bool dampers : {true, false}) {
+    std::vector<double> expected = initial, got = initial;
+    int offsets = 0;
+    for (std::size_t first = 0, end = 0; first < springs.size(); first = end, ++offsets) {
+      const int delta = springs[first].b - springs[first].a;  // one offset: a run of equal deltas
+      std::vector<const Spring*> from(kNumPoints, nullptr);
+      for (end = first; end < springs.size() && springs[end].b - springs[end].a == delta; ++end)
+        from[springs[end].a] = &springs[end];
+      auto force = [&](int a) {  // of the spring from a, or 0 when there is none
+        if (a < 0 || !from[a]) return Vec3{};
+        double len;
+        const Vec3 u = direction(load(s.p(), a) - load(s.p(), a + delta), &len);
+        double tension = springTension(len, k, from[a]->rest);
+        if (dampers) tension += damperTension(load(s.v(), a) - load(s.v(), a + delta), u, d);
+        return tension * u;
+      };
+      for (int q = 0; q < kNumPoints; ++q) {
+        const Vec3 in = force(q - delta), out = force(q), total = load(expected.data(), q);
+        store(expected.data(), q,
+              {(total.x - in.x) + out.x, (total.y - in.y) + out.y, (total.z - in.z) + out.z});
+      }
+    }
+    EXPECT_EQ(offsets, 16);
+    SpringTerm(k, d, dampers).addForces(s.p(), s.v(), nullptr, got.data());
+    EXPECT_EQ(std::memcmp(got.data(), expected.data(), sizeof(double) * kNumCoords), 0)
+        << (dampers ? "with" : "without") << " dampers";
+  }
 }
 
 class CourseKernels : public ::testing::TestWithParam<const char*> {};
@@ -147,6 +185,40 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
     std::printf("random world %d (%s): %.3g\n", world, sceneLine(makeModel(w, start).scene).c_str(),
                 d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
+  }
+}
+
+// The field as the specialised kernel interpolates it (8 points at a time, on padded nodes)
+// against the reference point by point, bit for bit: points inside the box, on its walls and
+// corners, on nodes, outside it and not a number, for several resolutions, with and without the
+// positions' bounds (which let the kernel skip the inside test).
+TEST(FieldKernel, PaddedInterpolationIsTheReferenceBitForBit) {
+  std::mt19937 random(2016);
+  std::uniform_real_distribution<double> inBox(-2, 2), around(-2.5, 2.5), force(-3, 3);
+  for (int r : {2, 3, 5, 30}) {
+    World w;
+    w.field.resolution = r;
+    w.field.forces.resize(3 * std::size_t(r) * r * r);
+    for (double& f : w.field.forces) f = force(random);
+    State s = test::restLattice();
+    for (int c = 0; c < kNumCoords; ++c) s.p()[c] = around(random);
+    const double node = fieldNodeCoordinate(1, r);
+    const Vec3 special[] = {{2, 2, 2},   {-2, -2, -2}, {2, -2, 0.5}, {node, node, node},
+                            {NAN, 0, 0}, {0, 0, NAN},  {2.5, 0, 0},  {0, -2.0000001, 1}};
+    for (int q = 0; q < 8; ++q) store(s.p(), 17 * q, special[q]);
+    State inside = s;
+    for (int c = 0; c < kNumCoords; ++c) inside.p()[c] = inBox(random);
+    const FieldTerm padded(w.field, w.mass, FieldTerm::Method::Padded),
+        reference(w.field, w.mass, FieldTerm::Method::Reference);
+    for (const State* state : {&s, &inside}) {
+      const Bounds box = boundsOf(state->p());
+      std::vector<double> expected(kNumCoords, 1.0), got(kNumCoords, 1.0), bounded(kNumCoords, 1.0);
+      reference.addForces(state->p(), state->v(), nullptr, expected.data());
+      padded.addForces(state->p(), state->v(), nullptr, got.data());
+      padded.addForces(state->p(), state->v(), &box, bounded.data());
+      EXPECT_EQ(std::memcmp(got.data(), expected.data(), sizeof(double) * kNumCoords), 0) << r;
+      EXPECT_EQ(std::memcmp(bounded.data(), expected.data(), sizeof(double) * kNumCoords), 0) << r;
+    }
   }
 }
 
