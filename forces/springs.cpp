@@ -68,7 +68,6 @@ namespace {
 // one: their totals and positions did not fit in the 16 registers.)
 typedef NativePack Lanes;
 constexpr int kLanes = kNativeLanes;
-constexpr int kUnits = kNumPoints / kLanes;
 constexpr int kUnitsPerRow = kLatticeSize / kLanes;
 constexpr int kOffsets = static_cast<int>(kSpringOffsets.size());
 
