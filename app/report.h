@@ -25,7 +25,7 @@ struct ReportRow {
   double dt = 0;            // s; for RK45 the first and largest step
   Tolerances tolerances{};  // RK45 only: its rtol and atol (the sweep sets them equal)
   long long steps = 0, evaluations = 0;
-  double wallSeconds = 0;
+  double cpuSeconds = 0;  // s: CPU time of the stepping (its thread's), the least of its timings
   double rmsError = 0, maxError = 0;  // m, positions at the end against the reference
   bool diverged = false;
   bool worldsOwn = false;  // the world's own integrator and dt

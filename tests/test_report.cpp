@@ -78,7 +78,7 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
   // A well-formed CSV.
   const std::string csv = test::readText(out + "/report.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "integrator,dt,tolerance,steps,evaluations,wall_s,rms_error,max_error,status");
+            "integrator,dt,tolerance,steps,evaluations,cpu_s,rms_error,max_error,status");
   std::vector<CsvRow> all = parseRows(csv);
   ASSERT_EQ(all.size(), 3u * 6 + 1) << "six runs an integrator and the world's own";
   for (const CsvRow& r : all) {
