@@ -12,9 +12,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <sstream>
 #include <system_error>
 #include <thread>
@@ -80,8 +80,7 @@ State measure(const Model& model, const State& start, double time, Tolerances to
   double best = run.cpu;
   if (!run.diverged && run.cpu < kRepeatBelowSeconds) {
     for (int repeat = 0; repeat < 2; ++repeat)
-      best =
-          std::min(best, simulate(model, start, row->integrator, row->dt, time, tolerances).cpu);
+      best = std::min(best, simulate(model, start, row->integrator, row->dt, time, tolerances).cpu);
   }
   row->steps = run.stats.steps;
   row->evaluations = run.stats.evaluations + run.stats.jacobians;
@@ -461,8 +460,8 @@ struct Advice {
 
 Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own) {
   Advice advice;
-  advice.setting = settingText(row) + ": " + number(row.cpuSeconds) + " s, error " +
-                   number(row.rmsError) + " m";
+  advice.setting =
+      settingText(row) + ": " + number(row.cpuSeconds) + " s, error " + number(row.rmsError) + " m";
   if (own && !own->diverged && own->cpuSeconds > 0 && row.cpuSeconds > 0)
     advice.setting += ", " + speedAgainstOwn(own->cpuSeconds, row.cpuSeconds);
   advice.run = shellLine(runCommand(worldPath, row));
