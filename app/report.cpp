@@ -13,8 +13,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <ctime>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <queue>
 #include <sstream>
 #include <system_error>
 #include <thread>
@@ -118,13 +123,17 @@ int reportItemCount(const std::vector<Integrator>& integrators) {
 class ReportProgress {
  public:
   explicit ReportProgress(int total) : total_(total), begin_(Clock::now()) {}
-  // The next item begins.
+  // The next item begins. (Both may be called from any of the report's threads.)
   void next(const std::string& what) {
+    std::lock_guard<std::mutex> lock(mutex_);
     ++begun_;
-    update(what);
+    show(what);
   }
-  // What the current item does now (a search's next halving), with the same count.
-  void update(const std::string& what) { line_.show("report: " + what + " (" + count() + ")"); }
+  // What an item does now (a search's next halving), with the same count.
+  void update(const std::string& what) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    show(what);
+  }
   // "report: done, 45/45 in 12 s" and a newline, before the summary on stdout.
   void finish() {
     const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
@@ -134,7 +143,9 @@ class ReportProgress {
   }
 
  private:
+  void show(const std::string& what) { line_.show("report: " + what + " (" + count() + ")"); }
   std::string count() const { return std::to_string(begun_) + "/" + std::to_string(total_); }
+  std::mutex mutex_;
   int total_, begun_ = 0;
   Clock::time_point begin_;
   Progress line_;
@@ -258,6 +269,70 @@ OrderCheck checkOrder(const std::vector<ReportRow>& rows, Integrator integrator,
 
 namespace {
 
+// The report's runs, worked by one thread a core. A job may add jobs (a stability search adds
+// its sweep's runs); the dearest job queued is taken first, so that a long run is not left for
+// the end while the other cores wait. Jobs write their results to places fixed before they run,
+// so the report does not depend on which thread ran what, nor in which order.
+class RunQueue {
+ public:
+  void add(double cost, std::function<void()> job) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    jobs_.push({cost, added_++, std::move(job)});
+    changed_.notify_one();
+  }
+  // Runs every job, the ones they add included, on `threads` threads (this one among them, and
+  // only this one when no other can be had); rethrows the first exception a job threw.
+  void run(unsigned threads) {
+    std::vector<std::thread> others;
+    for (unsigned t = 1; t < threads; ++t) {
+      try {
+        others.emplace_back([this] { work(); });
+      } catch (const std::system_error&) {
+        break;
+      }
+    }
+    work();
+    for (std::thread& other : others) other.join();
+    if (failure_) std::rethrow_exception(failure_);
+  }
+
+ private:
+  struct Job {
+    double cost;
+    long long order;  // among equal costs, the first added first
+    std::function<void()> run;
+    bool operator<(const Job& o) const { return cost != o.cost ? cost < o.cost : order > o.order; }
+  };
+  void work() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      // Done when nothing is queued and no running job can add more.
+      changed_.wait(lock, [this] { return !jobs_.empty() || running_ == 0; });
+      if (jobs_.empty()) return;
+      Job job = jobs_.top();
+      jobs_.pop();
+      ++running_;
+      const bool skip = failure_ != nullptr;  // after a failure the rest is not worth running
+      lock.unlock();
+      try {
+        if (!skip) job.run();
+      } catch (...) {
+        std::lock_guard<std::mutex> failed(mutex_);
+        if (!failure_) failure_ = std::current_exception();
+      }
+      lock.lock();
+      --running_;
+      changed_.notify_all();
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::priority_queue<Job> jobs_;
+  long long added_ = 0;
+  int running_ = 0;
+  std::exception_ptr failure_;
+};
+
 // What every run of the study shares.
 struct Study {
   const Model& model;
@@ -291,54 +366,85 @@ double largestStableStep(const Study& s, Integrator integrator) {
   return s.T / (static_cast<double>(kLargestStepDivisor) * (1 << kSearchHalvings));
 }
 
-// One integrator's sweep: its largest stable step, then halvings; RK45 sweeps its tolerance
-// instead.
-void sweepIntegrator(const Study& s, Integrator integrator, Measured* m) {
-  double largest = 0;
-  if (!sweepsTolerance(integrator)) {
-    s.progress.next(std::string("finding ") + integratorName(integrator) +
-                    "'s largest stable step");
-    largest = largestStableStep(s, integrator);
-  }
-  for (int i = 0; i < kSweepLength; ++i) {
-    ReportRow row;
-    row.integrator = integrator;
-    Tolerances tolerances;
-    if (sweepsTolerance(integrator)) {
-      // Its largest step as large as anyone's first try, so that the tolerance alone
-      // decides the steps it takes.
-      row.dt = s.T / kLargestStepDivisor;
-      tolerances = {kRk45Tolerances[i], kRk45Tolerances[i]};
-      row.tolerances = tolerances;
-    } else {
-      row.dt = largest / (1 << i);
-      m->smallestStep = std::min(m->smallestStep, row.dt);
-    }
-    s.progress.next(settingText(row));
-    m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
-    m->rows.push_back(row);
-  }
+// A run's cost, to order the queue: its steps, IMPLICIT's (a Newton solve each) counted as
+// kImplicitStepCost evaluations. Searches come before every run: the runs they add wait on them.
+constexpr double kImplicitStepCost = 100;
+constexpr double kSearchCost = 1e300;
+double runCost(const ReportRow& row, double T) {
+  return T / row.dt * (row.integrator == Integrator::Implicit ? kImplicitStepCost : 1);
 }
 
-// The world's own setting, unless a sweep already ran it.
-void measureWorldsOwn(const Study& s, const World& world, const Tolerances& tolerances,
-                      Measured* m) {
-  auto own = std::find_if(m->rows.begin(), m->rows.end(), [&](const ReportRow& r) {
-    return r.integrator == world.integrator && r.integrator != Integrator::RK45 && r.dt == world.dt;
-  });
-  if (own != m->rows.end()) {
-    own->worldsOwn = true;
-    s.progress.next("the world's own setting: measured in its sweep");
-    return;
-  }
-  s.progress.next(std::string("the world's own ") + integratorName(world.integrator));
+// The row of sweep run i of an integrator whose largest stable step is `largest` (RK45 sweeps
+// its tolerance at a largest step of T/8 instead).
+ReportRow sweepRow(double T, Integrator integrator, double largest, int i) {
   ReportRow row;
-  row.integrator = world.integrator;
-  row.dt = world.dt;
-  if (world.integrator == Integrator::RK45) row.tolerances = tolerances;
-  row.worldsOwn = true;
-  m->ends.push_back(measure(s.model, s.start, s.T, tolerances, &row));
-  m->rows.push_back(row);
+  row.integrator = integrator;
+  if (sweepsTolerance(integrator)) {
+    // Its largest step as large as anyone's first try, so that the tolerance alone decides
+    // the steps it takes.
+    row.dt = T / kLargestStepDivisor;
+    row.tolerances = {kRk45Tolerances[i], kRk45Tolerances[i]};
+  } else {
+    row.dt = largest / (1 << i);
+  }
+  return row;
+}
+
+// Queues one integrator's sweep, into rows and ends [first, first + kSweepLength): after its
+// search for its largest stable step, which adds the runs (RK45 needs none).
+void queueSweep(const Study& s, Integrator integrator, std::size_t first, Measured* m,
+                RunQueue* queue) {
+  auto addRuns = [&s, integrator, first, m, queue](double largest) {
+    for (int i = 0; i < kSweepLength; ++i) {
+      m->rows[first + i] = sweepRow(s.T, integrator, largest, i);
+      queue->add(runCost(m->rows[first + i], s.T), [&s, m, at = first + i] {
+        ReportRow& row = m->rows[at];
+        s.progress.next(settingText(row));
+        m->ends[at] = measure(s.model, s.start, s.T, row.tolerances, &row);
+      });
+    }
+  };
+  if (sweepsTolerance(integrator)) return addRuns(0);
+  const double cost = kSearchCost / (integrator == Integrator::Implicit ? 1 : 2);
+  queue->add(cost, [&s, integrator, addRuns] {
+    s.progress.next(std::string("finding ") + integratorName(integrator) +
+                    "'s largest stable step");
+    addRuns(largestStableStep(s, integrator));
+  });
+}
+
+// Every sweep, and the world's own setting, on every core. The world's own is a row of its own
+// unless a sweep ran the same setting, which is then marked as the world's.
+void measureAll(const Study& s, const std::vector<Integrator>& integrators, const World& world,
+                const Tolerances& tolerances, Measured* m) {
+  const std::size_t sweeps = integrators.size() * kSweepLength;
+  m->rows.resize(sweeps + 1);
+  m->ends.resize(sweeps + 1);
+  RunQueue queue;
+  for (std::size_t i = 0; i < integrators.size(); ++i)
+    queueSweep(s, integrators[i], i * kSweepLength, m, &queue);
+  ReportRow& own = m->rows[sweeps];
+  own.integrator = world.integrator;
+  own.dt = world.dt;
+  if (world.integrator == Integrator::RK45) own.tolerances = tolerances;
+  own.worldsOwn = true;
+  queue.add(runCost(own, s.T), [&s, m, sweeps] {
+    ReportRow& row = m->rows[sweeps];
+    s.progress.next(std::string("the world's own ") + integratorName(row.integrator));
+    m->ends[sweeps] = measure(s.model, s.start, s.T, row.tolerances, &row);
+  });
+  queue.run(std::max(1u, std::thread::hardware_concurrency()));
+  for (std::size_t i = 0; i < sweeps; ++i) {
+    ReportRow& row = m->rows[i];
+    if (!sweepsTolerance(row.integrator)) m->smallestStep = std::min(m->smallestStep, row.dt);
+    if (row.integrator == own.integrator && row.integrator != Integrator::RK45 &&
+        row.dt == own.dt && !row.worldsOwn) {
+      row.worldsOwn = true;
+      m->rows.pop_back();
+      m->ends.pop_back();
+      break;
+    }
+  }
 }
 
 // The positions every run is compared with: RK4 well below the smallest step measured.
@@ -689,8 +795,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   const Study study{model, file.state, T, progress};
   Measured measured;
   measured.smallestStep = world.dt;
-  for (Integrator integrator : integrators) sweepIntegrator(study, integrator, &measured);
-  measureWorldsOwn(study, world, runOptions.tolerances, &measured);
+  measureAll(study, integrators, world, runOptions.tolerances, &measured);
   const Reference reference = runReference(study, measured.smallestStep);
   if (reference.diverged)
     return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) +
