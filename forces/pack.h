@@ -109,7 +109,6 @@ JELLO_PACK_INLINE Pack floorPack(const Pack& x) {
 }
 
 namespace pack_detail {
-// Lanes kFirst.. of a then on into b, a piece's width of them.
 template <int kFirst, std::size_t... kLane>
 JELLO_PACK_INLINE NativePack piecesFrom(NativePack a, NativePack b, std::index_sequence<kLane...>) {
   if constexpr (kFirst == 0)
@@ -117,6 +116,17 @@ JELLO_PACK_INLINE NativePack piecesFrom(NativePack a, NativePack b, std::index_s
   else
     return __builtin_shufflevector(a, b, (kFirst + static_cast<int>(kLane))...);
 }
+}  // namespace pack_detail
+
+// The register's worth of lanes that starts kFirst lanes into a and runs on into b
+// (0 <= kFirst < kNativeLanes).
+template <int kFirst>
+JELLO_PACK_INLINE NativePack nativeLanesFrom(NativePack a, NativePack b) {
+  static_assert(kFirst >= 0 && kFirst < kNativeLanes);
+  return pack_detail::piecesFrom<kFirst>(a, b, std::make_index_sequence<kNativeLanes>{});
+}
+
+namespace pack_detail {
 template <int kFirst, std::size_t... kPiece>
 JELLO_PACK_INLINE Pack lanesFrom(const Pack& lo, const Pack& hi, std::index_sequence<kPiece...>) {
   // Piece c of the result starts kFirst + c * kNativeLanes lanes into lo then hi.
@@ -124,10 +134,9 @@ JELLO_PACK_INLINE Pack lanesFrom(const Pack& lo, const Pack& hi, std::index_sequ
     return p < kPackPieces ? lo.piece[p] : hi.piece[p - kPackPieces];
   };
   Pack out;
-  ((out.piece[kPiece] = piecesFrom<kFirst % kNativeLanes>(
+  ((out.piece[kPiece] = nativeLanesFrom<kFirst % kNativeLanes>(
         pieceOf(kFirst / kNativeLanes + static_cast<int>(kPiece)),
-        pieceOf(kFirst / kNativeLanes + static_cast<int>(kPiece) + 1),
-        std::make_index_sequence<kNativeLanes>{})),
+        pieceOf(kFirst / kNativeLanes + static_cast<int>(kPiece) + 1))),
    ...);
   return out;
 }

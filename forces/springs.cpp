@@ -98,15 +98,6 @@ JELLO_PACK_INLINE Lanes loadUpToEnd(const double* axis, int first) {
   return out;
 }
 
-// The lanes that start kFirst lanes into lo and run on into hi.
-template <int kFirst, std::size_t... kLane>
-JELLO_PACK_INLINE Lanes lanesFrom(Lanes lo, Lanes hi, std::index_sequence<kLane...>) {
-  if constexpr (kFirst == 0)
-    return lo;
-  else
-    return __builtin_shufflevector(lo, hi, (kFirst + static_cast<int>(kLane))...);
-}
-
 // 1 for the lanes of a unit kPhase units into its row whose spring exists, 0 for the slots the
 // kernel discards.
 template <int kOffset, int kPhase>
@@ -179,8 +170,7 @@ JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, U
   for (int a = 0; a < 3; ++a) {
     Lanes ending = nearExists ? ring[nearAt].axis[a] : Lanes{};
     if constexpr (lanesOn != 0)
-      ending = lanesFrom<kLanes - lanesOn>(farExists ? ring[farAt].axis[a] : Lanes{}, ending,
-                                           std::make_index_sequence<kLanes>{});
+      ending = nativeLanesFrom<kLanes - lanesOn>(farExists ? ring[farAt].axis[a] : Lanes{}, ending);
     total->axis[a] = (total->axis[a] - ending) + out.axis[a];
   }
 }
