@@ -434,15 +434,17 @@ void measureAll(const Study& s, const std::vector<Integrator>& integrators, cons
     m->ends[sweeps] = measure(s.model, s.start, s.T, row.tolerances, &row);
   });
   queue.run(std::max(1u, std::thread::hardware_concurrency()));
+  for (std::size_t i = 0; i < sweeps; ++i)
+    if (!sweepsTolerance(m->rows[i].integrator))
+      m->smallestStep = std::min(m->smallestStep, m->rows[i].dt);
   for (std::size_t i = 0; i < sweeps; ++i) {
     ReportRow& row = m->rows[i];
-    if (!sweepsTolerance(row.integrator)) m->smallestStep = std::min(m->smallestStep, row.dt);
     if (row.integrator == own.integrator && row.integrator != Integrator::RK45 &&
-        row.dt == own.dt && !row.worldsOwn) {
+        row.dt == own.dt) {
       row.worldsOwn = true;
-      m->rows.pop_back();
+      m->rows.pop_back();  // `own`, which is not used again
       m->ends.pop_back();
-      break;
+      return;
     }
   }
 }

@@ -25,7 +25,7 @@ std::vector<std::string> split(const std::string& line, char separator) {
 
 struct CsvRow {
   std::string integrator, status;
-  double dt, tolerance, wall, rms, max;
+  double dt, tolerance, cpu, rms, max;
   long long steps, evaluations;
 };
 
@@ -88,7 +88,7 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
     EXPECT_GT(r.dt, 0);
     EXPECT_GT(r.steps, 0);
     EXPECT_GE(r.evaluations, r.steps);
-    EXPECT_GE(r.wall, 0);
+    EXPECT_GE(r.cpu, 0);
     EXPECT_EQ(std::isnan(r.tolerance), r.integrator != "RK45");
     if (r.status == "ok") {
       EXPECT_GE(r.max, r.rms);
@@ -124,7 +124,7 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
   EXPECT_EQ(all.back().dt, 0.002);
   const CsvRow* best = nullptr;
   for (const CsvRow& r : all)
-    if (r.status == "ok" && r.rms <= 1e-4 && (!best || r.wall < best->wall)) best = &r;
+    if (r.status == "ok" && r.rms <= 1e-4 && (!best || r.cpu < best->cpu)) best = &r;
   ASSERT_NE(best, nullptr);
   std::ostringstream setting;
   setting << best->integrator << " dt=" << best->dt;
@@ -140,6 +140,44 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
   EXPECT_EQ(test::readText(out + "/report.csv"), csv);
   test::removeTree(dir);
   if (!drawn) GTEST_SKIP() << "gnuplot is not installed: report.png not checked";
+}
+
+// The reference's step as report.md gives it: T / its steps.
+double referenceStep(const std::string& md, double T) {
+  const std::size_t at = md.find(" steps); its own error");
+  if (at == std::string::npos) return NAN;
+  return T / static_cast<double>(std::stoll(md.substr(md.rfind('(', at) + 1)));
+}
+
+// The world's own setting can be a run of a sweep: it is then that row, marked, not a row of its
+// own; and the reference stays 32 times below the smallest step of every sweep, those of the
+// integrators after it included (the runs are on every core, their rows gathered afterwards).
+TEST(Report, AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep) {
+  const std::string dir = test::makeTempDir(), T = "0.01";
+  ASSERT_EQ(test::runJelloArgs({"--report", dir + "/first", "--time", T, "--integrators", "RK4",
+                                test::dataPath("rotate.w")})
+                .status,
+            0);
+  double largest = 0;  // RK4's largest stable step, now the world's own dt
+  for (const CsvRow& r : parseRows(test::readText(dir + "/first/report.csv")))
+    if (r.integrator == "RK4") largest = std::max(largest, r.dt);
+  WorldFile file = readWorldFile(test::dataPath("rotate.w"));
+  file.world.integrator = Integrator::RK4;
+  file.world.dt = largest;
+  const std::string world = dir + "/own.w";
+  writeWorldFile(world, file.world, file.state);
+
+  test::CommandResult r = test::runJelloArgs(
+      {"--report", dir + "/second", "--time", T, "--integrators", "RK4,EULER", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<CsvRow> rows = parseRows(test::readText(dir + "/second/report.csv"));
+  EXPECT_EQ(rows.size(), 2u * 6) << "the world's own is RK4's first run, not a row of its own";
+  double smallest = INFINITY;
+  for (const CsvRow& row : rows) smallest = std::min(smallest, row.dt);
+  EXPECT_LT(smallest, largest / 32) << "EULER's sweep goes below RK4's";
+  const double reference = referenceStep(test::readText(dir + "/second/report.md"), 0.01);
+  EXPECT_LE(reference, smallest / 32) << "the reference is below EULER's steps too";
+  test::removeTree(dir);
 }
 
 TEST(ReportFunctions, FittedOrderOfAnExactPowerLaw) {
