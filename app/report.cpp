@@ -758,8 +758,8 @@ void printReportSummary(const std::string& worldPath, const ReportOptions& optio
   std::printf(
       "%s: report in %s/ (report.csv, report.md%s): %zu runs to T=%g s; reference RK4 dt=%g, its "
       "error %.3g m\n",
-      worldPath.c_str(), options.dir.c_str(), drawn ? ", report.png" : "", runs, options.time,
-      reference.step, reference.error);
+      printable(worldPath).c_str(), printable(options.dir).c_str(), drawn ? ", report.png" : "",
+      runs, options.time, reference.step, reference.error);
   for (const OrderCheck& c : orders)
     if (c.far) std::printf("note: %s\n", orderWarningLine(c, reference.contacts).c_str());
   if (recommended.own && !recommended.own->diverged)

@@ -132,8 +132,10 @@ std::vector<std::string> runCommand(const std::string& worldPath, const ReportRo
 std::vector<std::string> worldFileCommand(const std::string& worldPath, const ReportRow& row);
 
 // One word for a POSIX shell: as it is when it holds only characters no shell treats
-// specially, otherwise in single quotes (a quote within as '\''). A word that starts with '-'
-// and is the world's path is given as ./WORD by the commands above, never as an option.
+// specially, otherwise in single quotes (a quote within as '\''); a word with a control
+// character or bytes outside UTF-8 (printable() would change it) as $'...', those bytes as
+// \xNN, so that the command stays one line and sends nothing raw to a terminal. A word that starts
+// with '-' and is the world's path is given as ./WORD by the commands above, never as an option.
 std::string shellWord(const std::string& word);
 // The words as one command line, each through shellWord.
 std::string shellLine(const std::vector<std::string>& words);

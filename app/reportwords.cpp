@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/report.h"
+#include "core/output.h"
 #include "solver/integrators.h"
 
 namespace jello {
@@ -233,6 +234,20 @@ std::string shellWord(const std::string& word) {
   bool plain = !word.empty();
   for (char c : word) plain = plain && plainInShell(c);
   if (plain) return word;
+  // A control character or a byte outside UTF-8 would break the line or reach the terminal as
+  // it is, even inside quotes: such a word is written as $'...' with those bytes as \xNN.
+  if (printable(word) != word) {
+    std::string quoted = "$'";
+    for (char c : word) {
+      const unsigned char byte = static_cast<unsigned char>(c);
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      quoted += c == '\'' || c == '\\'        ? std::string("\\") + c
+                : byte < 0x20 || byte >= 0x7f ? std::string(escaped)
+                                              : std::string(1, c);
+    }
+    return quoted + "'";
+  }
   std::string quoted = "'";
   for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";

@@ -260,6 +260,11 @@ TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
   EXPECT_EQ(shellWord("world/rotate.w"), "world/rotate.w");
   EXPECT_EQ(shellWord("my world.w"), "'my world.w'");
   EXPECT_EQ(shellWord("it's.w"), "'it'\\''s.w'");
+  // A newline, a terminal's escape or a byte outside UTF-8: one line, nothing raw.
+  EXPECT_EQ(shellWord("a\nb's\\.w"), "$'a\\x0ab\\'s\\\\.w'");
+  EXPECT_EQ(shellWord("\x1b[2J\xff\xc3\xa9.w"), "$'\\x1b[2J\\xff\\xc3\\xa9.w'");
+  EXPECT_EQ(shellWord("\xc3\xa9t\xc3\xa9 world.w"), "'\xc3\xa9t\xc3\xa9 world.w'")
+      << "UTF-8 text as it is";
   EXPECT_EQ(shellWord("$HOME/a.w"), "'$HOME/a.w'");
   EXPECT_EQ(shellWord("~/a.w"), "'~/a.w'");
   EXPECT_EQ(shellWord(""), "''");
