@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/assert.h"
+#include "core/team.h"
 
 namespace jello {
 
@@ -101,40 +102,77 @@ Vec3 pullForce(const Pull& pull, Vec3 p) { return pull.stiffness * (pull.target 
 
 // The pair terms add into the total; the point terms in reach add into their own sum first,
 // which then joins the total (one term alone adds directly: x + (0 + y) is x + y). This is the
-// order docs/physics.md gives the terms in, so every kernel rounds alike.
-void computeForces(const Model& model, const double* p, const double* v, double* force,
-                   const Pull* pull) {
-  std::fill(force, force + kNumCoords, 0.0);
-  const Scene& scene = model.scene;
-  const Bounds box = scene.culling ? boundsOf(p) : Bounds{};
-  const Bounds* reach = scene.culling ? &box : nullptr;
+// order docs/physics.md gives the terms in, so every kernel rounds alike, and every range of
+// points gets the forces the whole pass gives it.
+void computeForcesOn(const Model& model, PointRange points, const double* p, const double* v,
+                     const Bounds* reach, double* force, const Pull* pull) {
+  for (int a = 0; a < 3; ++a)
+    std::fill(force + a * kNumPoints + points.begin, force + a * kNumPoints + points.end, 0.0);
   const ForceTerm* inReach[kMaxTerms];
   int count = 0;
-  for (const auto& term : scene.terms) {
+  for (const auto& term : model.scene.terms) {
     if (term->isPairTerm())
-      term->addForces(p, v, reach, force);
-    else if (!reach || term->mayReach(box))
+      term->addForcesOn(points, p, v, reach, force);
+    else if (!reach || term->mayReach(*reach))
       inReach[count++] = term.get();
   }
   if (count == 1) {
-    inReach[0]->addForces(p, v, reach, force);
+    inReach[0]->addForcesOn(points, p, v, reach, force);
   } else if (count > 1) {
-    alignas(64) double sum[kNumCoords] = {};
-    for (int t = 0; t < count; ++t) inReach[t]->addForces(p, v, reach, sum);
-    for (int c = 0; c < kNumCoords; ++c) force[c] += sum[c];
+    alignas(64) double sum[kNumCoords];
+    for (int a = 0; a < 3; ++a)
+      std::fill(sum + a * kNumPoints + points.begin, sum + a * kNumPoints + points.end, 0.0);
+    for (int t = 0; t < count; ++t) inReach[t]->addForcesOn(points, p, v, reach, sum);
+    for (int a = 0; a < 3; ++a)
+      for (int q = a * kNumPoints + points.begin; q < a * kNumPoints + points.end; ++q)
+        force[q] += sum[q];
   }
-  if (pull && pull->point >= 0)
+  if (pull && pull->point >= points.begin && pull->point < points.end)
     store(force, pull->point, load(force, pull->point) + pullForce(*pull, load(p, pull->point)));
 }
 
-void derivative(const Model& model, const double* y, double* dydt, const Pull* pull) {
+namespace {
+
+// The two threads' ranges (balancedSplitPoint).
+PointRange teamPart(int part) {
+  static const int split = balancedSplitPoint();
+  return part == 0 ? PointRange{0, split} : PointRange{split, kNumPoints};
+}
+
+// dp/dt and dv/dt = F/mass on the points of `points`.
+void derivativeOn(const Model& model, PointRange points, const double* y, const Bounds* reach,
+                  double* dydt, const Pull* pull) {
   const double* p = y;
   const double* v = y + kNumCoords;
-  std::copy(v, v + kNumCoords, dydt);
   double* a = dydt + kNumCoords;
-  computeForces(model, p, v, a, pull);
+  computeForcesOn(model, points, p, v, reach, a, pull);
   const double mass = model.world.mass;
-  for (int c = 0; c < kNumCoords; ++c) a[c] /= mass;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int first = axis * kNumPoints + points.begin, end = axis * kNumPoints + points.end;
+    std::copy(v + first, v + end, dydt + first);
+    for (int c = first; c < end; ++c) a[c] /= mass;
+  }
+}
+
+}  // namespace
+
+void computeForces(const Model& model, const double* p, const double* v, double* force,
+                   const Pull* pull, Team* team) {
+  const Bounds box = model.scene.culling ? boundsOf(p) : Bounds{};
+  const Bounds* reach = model.scene.culling ? &box : nullptr;
+  if (!team)
+    computeForcesOn(model, kAllPoints, p, v, reach, force, pull);
+  else
+    team->run([&](int part) { computeForcesOn(model, teamPart(part), p, v, reach, force, pull); });
+}
+
+void derivative(const Model& model, const double* y, double* dydt, const Pull* pull, Team* team) {
+  const Bounds box = model.scene.culling ? boundsOf(y) : Bounds{};
+  const Bounds* reach = model.scene.culling ? &box : nullptr;
+  if (!team)
+    derivativeOn(model, kAllPoints, y, reach, dydt, pull);
+  else
+    team->run([&](int part) { derivativeOn(model, teamPart(part), y, reach, dydt, pull); });
 }
 
 int findDivergedPoint(const State& state) {

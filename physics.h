@@ -21,6 +21,8 @@
 
 namespace jello {
 
+class Team;  // core/team.h
+
 // Which force kernel a model uses: the one made for its scene, or the one that computes every
 // term everywhere (the reference the specialisations are tested and timed against).
 enum class KernelChoice { Specialised, General };
@@ -84,12 +86,21 @@ Vec3 pullForce(const Pull& pull, Vec3 p);
 
 // The force kernel: total force on every point (per-point arrays, see coordIndex) for
 // positions p and velocities v, with the user's pull when there is one: the scene's terms,
-// each skipped when the positions are out of its reach.
+// each skipped when the positions are out of its reach. With a team, its two threads take a
+// range of points each (balancedSplitPoint), with the same result bit for bit.
 void computeForces(const Model& model, const double* p, const double* v, double* force,
-                   const Pull* pull = nullptr);
+                   const Pull* pull = nullptr, Team* team = nullptr);
 
-// The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass.
-void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr);
+// The same on the points of `points` alone (force elsewhere is left as it was), with `reach` the
+// bounds of all the positions when the scene culls (null when it does not): what computeForces
+// does, a range at a time, bit for bit.
+void computeForcesOn(const Model& model, PointRange points, const double* p, const double* v,
+                     const Bounds* reach, double* force, const Pull* pull);
+
+// The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass. With a
+// team, its two threads take half the points each (balancedSplitPoint), with the same result.
+void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr,
+                Team* team = nullptr);
 
 constexpr double kDivergenceRadius = 100.0;  // m: a point further from the origin has diverged
 

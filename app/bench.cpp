@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/team.h"
 #include "physics.h"
 #include "solver/integrators.h"
 #include "solver/simulation.h"
@@ -24,6 +25,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 using Work = std::function<void(long long)>;
+
+// A kernel timed: a model's, on this thread alone or with a team.
+struct Kernel {
+  const Model* model;
+  Team* team;  // null: one thread
+};
 
 // Seconds per call of each work(count), the medians over `repeats` runs of each. The works
 // take turns, so that a change in the machine's load falls on both alike and their ratio
@@ -69,18 +76,20 @@ struct StepTiming {
 
 // Steps of each model as a run takes them (Simulation: the stepper and the checks), from the
 // initial state every time, so that each run does the same work.
-std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const State& initial,
+std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const State& initial,
                                   Integrator integrator, double dt, const RunOptions& run,
                                   long long fixedSteps, int repeats) {
-  std::vector<StepTiming> timings(models.size());
-  std::vector<long long> steps(models.size()), evaluations(models.size());
+  std::vector<StepTiming> timings(kernels.size());
+  std::vector<long long> steps(kernels.size()), evaluations(kernels.size());
   // Made once, outside the timing: making one passes over the field's nodes (the guard's bound).
   std::vector<std::unique_ptr<Simulation>> simulations;
-  for (const Model* model : models)
+  for (const Kernel& kernel : kernels) {
     simulations.push_back(
-        std::make_unique<Simulation>(*model, initial, integrator, dt, run.tolerances));
+        std::make_unique<Simulation>(*kernel.model, initial, integrator, dt, run.tolerances));
+    simulations.back()->setTeam(kernel.team);
+  }
   std::vector<Work> works;
-  for (std::size_t m = 0; m < models.size(); ++m) {
+  for (std::size_t m = 0; m < kernels.size(); ++m) {
     works.push_back([&, m](long long count) {
       Simulation& simulation = *simulations[m];
       simulation.restart(initial);
@@ -90,21 +99,21 @@ std::vector<StepTiming> timeSteps(const std::vector<const Model*>& models, const
     });
   }
   std::vector<double> seconds = medianSecondsPerCall(works, fixedSteps, repeats);
-  for (std::size_t m = 0; m < models.size(); ++m) {
+  for (std::size_t m = 0; m < kernels.size(); ++m) {
     timings[m].seconds = seconds[m];
     timings[m].evaluationsPerStep = static_cast<double>(evaluations[m]) / steps[m];
   }
   return timings;
 }
 
-std::vector<double> timeForces(const std::vector<const Model*>& models, const State& state,
+std::vector<double> timeForces(const std::vector<Kernel>& kernels, const State& state,
                                long long fixedCount, int repeats) {
   std::vector<double> force(kNumCoords);
   std::vector<Work> works;
-  for (const Model* model : models) {
-    works.push_back([&, model](long long count) {
+  for (const Kernel& kernel : kernels) {
+    works.push_back([&, kernel](long long count) {
       for (long long i = 0; i < count; ++i)
-        computeForces(*model, state.p(), state.v(), force.data());
+        computeForces(*kernel.model, state.p(), state.v(), force.data(), nullptr, kernel.team);
     });
   }
   return medianSecondsPerCall(works, fixedCount, repeats);
@@ -149,9 +158,11 @@ Outcome runBench(const RunOptions& run) {
       repeats, world.dt);
   std::fflush(stdout);
 
-  const std::vector<const Model*> models = {&specialised, &general};
-  const std::vector<double> forces = timeForces(models, file.state, fixed, repeats);
-  const double forcesS = forces[0], forcesG = forces[1];
+  Team team;
+  const std::vector<Kernel> kernels = {
+      {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
+  const std::vector<double> forces = timeForces(kernels, file.state, fixed, repeats);
+  const double forcesS = forces[0], forcesG = forces[1], forcesT = forces[2];
   // The world's text is parsed from memory: the file itself may be a pipe, read once already.
   const std::string text = formatWorld(world, file.state);
   double loading = medianSecondsPerCall({[&](long long count) {
@@ -163,12 +174,14 @@ Outcome runBench(const RunOptions& run) {
               world.field.resolution > 0
                   ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
                   : "no field");
-  std::printf("%-22s %14s %14s %9s\n", "", "specialised", "general", "speed-up");
-  std::printf("%-22s %11.2f us %11.2f us %8.2fx\n", "force evaluation", forcesS * 1e6,
-              forcesG * 1e6, forcesG / forcesS);
-  std::printf("%-22s %14.0f %14.0f\n", "evaluations per second", 1 / forcesS, 1 / forcesG);
-  std::printf("\n%-22s %14s %14s %9s  %s\n", "us per step", "specialised", "general", "speed-up",
-              "evaluations/step");
+  std::printf("%-22s %14s %14s %9s %14s %9s\n", "", "specialised", "general", "speed-up",
+              "two threads", "speed-up");
+  std::printf("%-22s %11.2f us %11.2f us %8.2fx %11.2f us %8.2fx\n", "force evaluation",
+              forcesS * 1e6, forcesG * 1e6, forcesG / forcesS, forcesT * 1e6, forcesS / forcesT);
+  std::printf("%-22s %14.0f %14.0f %9s %14.0f\n", "evaluations per second", 1 / forcesS,
+              1 / forcesG, "", 1 / forcesT);
+  std::printf("\n%-22s %14s %14s %9s %14s %9s  %s\n", "us per step", "specialised", "general",
+              "speed-up", "two threads", "speed-up", "evaluations/step");
   for (const IntegratorInfo& row : integratorTable()) {
     const Integrator integrator = row.integrator;
     // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
@@ -179,19 +192,20 @@ Outcome runBench(const RunOptions& run) {
     constexpr int kHalvings = 12;
     double dt = world.dt;
     std::vector<StepTiming> timings =
-        timeSteps(models, file.state, integrator, dt, run, steps, repeats);
+        timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
     for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
       dt /= 2;
-      timings = timeSteps(models, file.state, integrator, dt, run, steps, repeats);
+      timings = timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
     }
-    const StepTiming &s = timings[0], &g = timings[1];
+    const StepTiming &s = timings[0], &g = timings[1], &t = timings[2];
     char note[96] = "";
     if (s.diverged || g.diverged)
       std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
     else if (dt != world.dt)
       std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
-    std::printf("%-22s %14.2f %14.2f %8.2fx  %.1f%s\n", integratorName(integrator), s.seconds * 1e6,
-                g.seconds * 1e6, g.seconds / s.seconds, s.evaluationsPerStep, note);
+    std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(integrator),
+                s.seconds * 1e6, g.seconds * 1e6, g.seconds / s.seconds, t.seconds * 1e6,
+                s.seconds / t.seconds, s.evaluationsPerStep, note);
     std::fflush(stdout);
   }
   return succeeded();

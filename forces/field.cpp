@@ -303,8 +303,8 @@ JELLO_PACK_INLINE Pack insideOrZero(Pack x, Pack y, Pack z, Pack f) {
 // Adds the padded field at every point; kAllInside: every point is inside the box (the common
 // case, without the per-point test).
 template <bool kAllInside>
-void addPaddedField(const double* nodes, int r, const double* p, double* force) {
-  for (int q = 0; q < kNumPoints; q += kPackLanes) {
+void addPaddedField(const double* nodes, int r, PointRange points, const double* p, double* force) {
+  for (int q = points.begin; q < points.end; q += kPackLanes) {
     const PackVec3 f = interpolate8(nodes, r, p, q);
     for (int a = 0; a < 3; ++a) {
       double* out = force + a * kNumPoints + q;
@@ -316,25 +316,26 @@ void addPaddedField(const double* nodes, int r, const double* p, double* force) 
 }
 }  // namespace
 
-void FieldTerm::addForces(const double* p, const double*, const Bounds* box, double* force) const {
+void FieldTerm::addForcesOn(PointRange points, const double* p, const double*, const Bounds* box,
+                            double* force) const {
   const bool inside = allInside(box);
   switch (method_) {
     case Method::Uniform:
       if (inside) {  // the common case, without the per-point test
-        for (int q = 0; q < kNumPoints; ++q) store(force, q, load(force, q) + uniform_);
+        for (int q = points.begin; q < points.end; ++q) store(force, q, load(force, q) + uniform_);
         return;
       }
-      for (int q = 0; q < kNumPoints; ++q)
+      for (int q = points.begin; q < points.end; ++q)
         store(force, q, load(force, q) + (insideBox(load(p, q)) ? uniform_ : Vec3{}));
       return;
     case Method::Padded:
       if (inside)
-        addPaddedField<true>(padded_.data(), field_.resolution, p, force);
+        addPaddedField<true>(padded_.data(), field_.resolution, points, p, force);
       else
-        addPaddedField<false>(padded_.data(), field_.resolution, p, force);
+        addPaddedField<false>(padded_.data(), field_.resolution, points, p, force);
       return;
     case Method::Reference:
-      for (int q = 0; q < kNumPoints; ++q)
+      for (int q = points.begin; q < points.end; ++q)
         store(force, q,
               load(force, q) + referenceForce(field_.forces, field_.resolution, load(p, q)));
       return;

@@ -67,7 +67,8 @@ class FieldTerm final : public ForceTerm {
 
   // The field acts inside the box only.
   bool mayReach(const Bounds& box) const override;
-  void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
+  void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                   double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;
   void addEnergy(const double*, double*) const override {}
   double largestExternalForce() const override { return largestNode_; }

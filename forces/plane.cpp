@@ -84,8 +84,9 @@ int PlaneTerm::pointsAcross(const double* p) const {
 // Eight points at a time: where none of them is across the plane (most of the time, for most of
 // the points) their forces are exactly 0.0 and only that is added; the contact springs, a square
 // root and two divisions a point, are computed for the eight when one of them is across.
-void PlaneTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
-  for (int q = 0; q < kNumPoints; q += kPackLanes) {
+void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
+                            double* force) const {
+  for (int q = points.begin; q < points.end; q += kPackLanes) {
     const Pack x = loadPack(p + q), y = loadPack(p + kNumPoints + q),
                z = loadPack(p + 2 * kNumPoints + q);
     const Pack s = planeValueAt(plane_, x, y, z);

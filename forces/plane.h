@@ -71,7 +71,8 @@ class PlaneTerm final : public ForceTerm {
   int pointsInContact(const double* p) const override {
     return spring_.k == 0 && spring_.d == 0 ? 0 : pointsAcross(p);
   }
-  void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
+  void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                   double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;
   void addEnergy(const double* p, double* energy) const override;
   void summarise(std::vector<std::string>* kept, std::vector<std::string>* leftOut) const override;

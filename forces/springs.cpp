@@ -3,6 +3,7 @@
 
 #include "forces/springs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -148,19 +149,25 @@ JELLO_PACK_INLINE UnitForce slotForces(const Inputs& in, int q) {
   return out;
 }
 
-// One offset's part of a unit's total: its slots (zero in a row without springs of the offset)
-// go into the ring, and the forces of the springs ending at the unit's points come out of it:
-// the slots lanesOn lanes from the end of unit - unitsOn - 1 on, into unit - unitsOn (this unit
-// when unitsOn is 0). Units before the first hold no springs: zeros. Reading whole units and
-// shifting lanes is faster than a load across two units, which may wait for both stores.
+// The unit's slot forces for one offset: zero in a row without springs of the offset.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE UnitForce unitSlots(const Inputs& in, int unit) {
+  return rowHasSprings(kSpringOffsets[kOffset], unit / kUnitsPerRow)
+             ? slotForces<kOffset, kPhase, kDampers>(in, unit * kLanes)
+             : UnitForce{};
+}
+
+// One offset's part of a unit's total: its slots go into the ring, and the forces of the springs
+// ending at the unit's points come out of it: the slots lanesOn lanes from the end of unit -
+// unitsOn - 1 on, into unit - unitsOn (this unit when unitsOn is 0). Units before the first hold
+// no springs: zeros. Reading whole units and shifting lanes is faster than a load across two
+// units, which may wait for both stores.
 template <int kOffset, int kPhase, bool kDampers>
 JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, UnitForce* total) {
   constexpr int delta = springDelta(kSpringOffsets[kOffset]);
   constexpr int unitsOn = delta / kLanes, lanesOn = delta % kLanes, size = ringUnits(kOffset);
   UnitForce* ring = rings + ringStart(kOffset);
-  const UnitForce out = rowHasSprings(kSpringOffsets[kOffset], unit / kUnitsPerRow)
-                            ? slotForces<kOffset, kPhase, kDampers>(in, unit * kLanes)
-                            : UnitForce{};
+  const UnitForce out = unitSlots<kOffset, kPhase, kDampers>(in, unit);
   const int at = unit % size;
   ring[at] = out;
   // Units unit - unitsOn and unit - unitsOn - 1 are at + 2 and at + 1, modulo unitsOn + 2.
@@ -175,6 +182,28 @@ JELLO_PACK_INLINE void addOffset(const Inputs& in, int unit, UnitForce* rings, U
   }
 }
 
+// How many units before a unit the springs ending in it start in, at most: unit - unitsOn, and
+// unit - unitsOn - 1 too when the springs do not span whole units.
+constexpr int unitsBack(int offset) {
+  const int delta = springDelta(kSpringOffsets[offset]);
+  return delta / kLanes + (delta % kLanes != 0);
+}
+
+// A unit before a range's first unit `first`: only the offset's slots whose springs end in the
+// range (those of units first - unitsBack on) go into the ring, for the range's first units.
+template <int kOffset, int kPhase, bool kDampers>
+JELLO_PACK_INLINE void warmOffset(const Inputs& in, int unit, int first, UnitForce* rings) {
+  if (unit < first - unitsBack(kOffset)) return;
+  rings[ringStart(kOffset) + unit % ringUnits(kOffset)] =
+      unitSlots<kOffset, kPhase, kDampers>(in, unit);
+}
+
+// How many units before a range the springs ending in it start in, at most, and their rows.
+constexpr int reachUnits(int offset = 0) {
+  return offset == kOffsets ? 0 : std::max(unitsBack(offset), reachUnits(offset + 1));
+}
+constexpr int kReachRows = (reachUnits() + kUnitsPerRow - 1) / kUnitsPerRow;
+
 template <int kPhase, bool kDampers, int... kOffset>
 JELLO_PACK_INLINE void addUnit(std::integer_sequence<int, kOffset...>, const Inputs& in, int unit,
                                UnitForce* rings, double* force) {
@@ -186,6 +215,12 @@ JELLO_PACK_INLINE void addUnit(std::integer_sequence<int, kOffset...>, const Inp
     std::memcpy(force + a * kNumPoints + q, &total.axis[a], sizeof(Lanes));
 }
 
+template <int kPhase, bool kDampers, int... kOffset>
+JELLO_PACK_INLINE void warmUnit(std::integer_sequence<int, kOffset...>, const Inputs& in, int unit,
+                                int first, UnitForce* rings) {
+  (warmOffset<kOffset, kPhase, kDampers>(in, unit, first, rings), ...);
+}
+
 // A lattice row: its units in order, each knowing at compile time where in the row it lies.
 template <bool kDampers, int... kPhase>
 JELLO_PACK_INLINE void addRow(std::integer_sequence<int, kPhase...>, const Inputs& in, int row,
@@ -195,14 +230,54 @@ JELLO_PACK_INLINE void addRow(std::integer_sequence<int, kPhase...>, const Input
    ...);
 }
 
+template <bool kDampers, int... kPhase>
+void warmRow(std::integer_sequence<int, kPhase...>, const Inputs& in, int row, int first,
+             UnitForce* rings) {
+  (warmUnit<kPhase, kDampers>(std::make_integer_sequence<int, kOffsets>{}, in,
+                              row * kUnitsPerRow + kPhase, first, rings),
+   ...);
+}
+
+// The rows of `points`. A range after the first row first fills the rings from the kReachRows
+// rows before it, whose springs end in it: the same slots, computed again, so the sums are
+// those of the whole lattice's pass.
 template <bool kDampers>
-void addSpringForces(const Inputs& in, double* force) {
+void addSpringForces(const Inputs& in, PointRange points, double* force) {
   UnitForce rings[kRingUnits];  // each ring unit is written before it is read
-  for (int row = 0; row < kNumPoints / kLatticeSize; ++row)
-    addRow<kDampers>(std::make_integer_sequence<int, kUnitsPerRow>{}, in, row, rings, force);
+  constexpr auto phases = std::make_integer_sequence<int, kUnitsPerRow>{};
+  const int firstRow = points.begin / kLatticeSize, endRow = points.end / kLatticeSize;
+  for (int row = std::max(0, firstRow - kReachRows); row < firstRow; ++row)
+    warmRow<kDampers>(phases, in, row, firstRow * kUnitsPerRow, rings);
+  for (int row = firstRow; row < endRow; ++row) addRow<kDampers>(phases, in, row, rings, force);
 }
 
 }  // namespace
+
+int balancedSplitPoint() {
+  constexpr int rows = kNumPoints / kLatticeSize;
+  // Slots computed: a row's own, for each offset whose neighbours' row exists, and before the
+  // second range its warm-up's (warmOffset's units, counted in rows as the kernel has them).
+  auto slots = [](int row) {
+    int n = 0;
+    for (const SpringOffset& o : kSpringOffsets) n += rowHasSprings(o, row);
+    return n;
+  };
+  auto warmUp = [](int firstRow) {
+    int n = 0;
+    for (const SpringOffset& o : kSpringOffsets)
+      for (int row = std::max(0, firstRow - (springDelta(o) + kLatticeSize - 1) / kLatticeSize);
+           row < firstRow; ++row)
+        n += rowHasSprings(o, row);
+    return n;
+  };
+  int best = rows / 2, bestCost = kNumPoints * kOffsets;
+  for (int split = 1; split < rows; ++split) {
+    int first = 0, second = warmUp(split);
+    for (int row = 0; row < rows; ++row) (row < split ? first : second) += slots(row);
+    if (std::max(first, second) < bestCost) bestCost = std::max(first, second), best = split;
+  }
+  return best * kLatticeSize;
+}
 
 SpringTerm::SpringTerm(double k, double d, bool dampers)
     : k_(k), d_(d), dampers_(dampers), springs_(buildSprings()) {
@@ -216,12 +291,13 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
   return out;
 }
 
-void SpringTerm::addForces(const double* p, const double* v, const Bounds*, double* force) const {
+void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
+                             double* force) const {
   const Inputs in{p, v, -k_, -d_, rests_.data()};
   if (dampers_)
-    addSpringForces<true>(in, force);
+    addSpringForces<true>(in, points, force);
   else
-    addSpringForces<false>(in, force);
+    addSpringForces<false>(in, points, force);
 }
 
 void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {

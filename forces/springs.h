@@ -70,6 +70,11 @@ double restLength(const SpringOffset& o);
 // in the order of its points a: the kernel's kept slots.
 std::vector<Spring> buildSprings();
 
+// Where two threads split the kernel's rows so that each has as many slots to compute: the first
+// point of the second range. The second range also computes again the slots of the rows just
+// before it whose springs end in it (the kernel's rings), so it is the shorter.
+int balancedSplitPoint();
+
 // Spring and damper, as magnitudes along u = L/|L| (positive pushes a away from b).
 inline double springTension(double len, double k, double rest) { return -k * (len - rest); }
 inline double damperTension(Vec3 relVel, Vec3 u, double d) { return -d * dot(relVel, u); }
@@ -98,7 +103,8 @@ class SpringTerm final : public ForceTerm {
   std::vector<std::pair<int, int>> pairs() const override;
   std::size_t pairCount() const override { return springs_.size(); }
   bool mayReach(const Bounds&) const override { return true; }
-  void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
+  void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                   double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;
   void addEnergy(const double* p, double* energy) const override;
   void summarise(std::vector<std::string>* kept, std::vector<std::string>* leftOut) const override;

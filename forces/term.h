@@ -29,6 +29,15 @@ struct Bounds {
 // state is caught as diverged after the step.)
 Bounds boundsOf(const double* p);
 
+// The points [begin, end) a call works on: whole lattice rows (begin and end multiples of
+// kLatticeSize, so that the loops 8 points at a time stay aligned). Every result is computed
+// point by point in the same order whatever the range: the forces on a range are those of the
+// whole call there, bit for bit, which lets two threads share an evaluation (core/team.h).
+struct PointRange {
+  int begin = 0, end = kNumPoints;
+};
+constexpr PointRange kAllPoints{0, kNumPoints};
+
 // printf into a std::string, for the terms' descriptions (up to 511 characters).
 std::string textf(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
 
@@ -75,10 +84,15 @@ class ForceTerm {
   // fit shows it). 0 for the
   // terms whose force is smooth (springs, field) and for a contact that pushes with k = d = 0.
   virtual int pointsInContact(const double* /*p*/) const { return 0; }
-  // Adds the term's force on every point to `force`. `box` bounds the positions, so that the
-  // term can skip its parts out of reach; null makes it compute every part (the reference).
-  virtual void addForces(const double* p, const double* v, const Bounds* box,
-                         double* force) const = 0;
+  // Adds the term's force on the points of `points` to `force` (and nothing elsewhere); it may
+  // read every point's position and velocity. `box` bounds all the positions, so that the term
+  // can skip its parts out of reach; null makes it compute every part (the reference).
+  virtual void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                           double* force) const = 0;
+  // The same on every point.
+  void addForces(const double* p, const double* v, const Bounds* box, double* force) const {
+    addForcesOn(kAllPoints, p, v, box, force);
+  }
   // Adds the term's Jacobian blocks at (p, v).
   virtual void addJacobian(const double* p, const double* v, JacobianSink* sink) const = 0;
   // Adds the energy the term stores at positions p, J (0 for a term that stores none).

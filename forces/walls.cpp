@@ -51,11 +51,11 @@ int WallsTerm::pointsInContact(const double* p) const {
 }
 
 // A wall pair out of reach adds nothing and is left out; the loop over the points vectorises.
-void WallsTerm::addForces(const double* p, const double* v, const Bounds* box,
-                          double* force) const {
+void WallsTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                            double* force) const {
   bool reached[3];
   wallsInReach(box, reached);
-  for (int q = 0; q < kNumPoints; ++q) {
+  for (int q = points.begin; q < points.end; ++q) {
     const Vec3 pq = load(p, q), vq = load(v, q);
     Vec3 f;
     for (int axis = 0; axis < 3; ++axis)

@@ -38,7 +38,8 @@ class WallsTerm final : public ForceTerm {
   bool mayReach(const Bounds& box) const override;
   // The points beyond a wall, when the walls' spring pushes at all.
   int pointsInContact(const double* p) const override;
-  void addForces(const double* p, const double* v, const Bounds* box, double* force) const override;
+  void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
+                   double* force) const override;
   void addJacobian(const double* p, const double* v, JacobianSink* sink) const override;
   void addEnergy(const double* p, double* energy) const override;
   void summarise(std::vector<std::string>* kept, std::vector<std::string>* leftOut) const override;

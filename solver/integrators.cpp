@@ -390,10 +390,10 @@ std::string integratorHelp() {
   return help;
 }
 
-OdeSystem jelloSystem(const Model& model, const Pull* pull) {
+OdeSystem jelloSystem(const Model& model, const Pull* pull, Team* team) {
   OdeSystem system;
-  system.derivative = [&model, pull](const double* y, double* dydt) {
-    derivative(model, y, dydt, pull);
+  system.derivative = [&model, pull, team](const double* y, double* dydt) {
+    derivative(model, y, dydt, pull, team);
   };
   system.jacobian = [&model, pull](const double* y, AccelerationJacobian& jacobian) {
     accelerationJacobian(model, y, y + kNumCoords, pull, &jacobian);
@@ -411,8 +411,8 @@ Stepper& Stepper::operator=(Stepper&&) noexcept = default;
 
 const StepStats& Stepper::stats() const { return work_->stats; }
 
-void Stepper::step(const Model& model, State& state, double dt, const Pull* pull) {
-  step(jelloSystem(model, pull), state.y, dt);
+void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
+  step(jelloSystem(model, pull, team), state.y, dt);
 }
 
 void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {

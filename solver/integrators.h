@@ -28,8 +28,9 @@ struct OdeSystem {
   std::function<void(const double* y, AccelerationJacobian& jacobian)> jacobian;
 };
 
-// The jello's system: derivative() and accelerationJacobian() of `model`, with `pull` if any.
-OdeSystem jelloSystem(const Model& model, const Pull* pull = nullptr);
+// The jello's system: derivative() and accelerationJacobian() of `model`, with `pull` if any;
+// its derivatives shared by `team`'s two threads when there is one (physics.h's derivative).
+OdeSystem jelloSystem(const Model& model, const Pull* pull = nullptr, Team* team = nullptr);
 
 // Error control of RK45: a substep is accepted when its estimated local error, per component,
 // is within atol + rtol * |y| in the root-mean-square sense.
@@ -107,7 +108,8 @@ class Stepper {
   // for a result, and stats().failed counts it.
   void step(const OdeSystem& system, std::vector<double>& y, double dt);
   // The jello: one step of the model, with the user's pull if any.
-  void step(const Model& model, State& state, double dt, const Pull* pull = nullptr);
+  void step(const Model& model, State& state, double dt, const Pull* pull = nullptr,
+            Team* team = nullptr);
 
   Integrator integrator() const { return integrator_; }
   const StepStats& stats() const;

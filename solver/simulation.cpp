@@ -49,7 +49,7 @@ bool Simulation::stepAndCheck(double h, double timeAfter, const Pull* pull) {
   if (pulled_ && !pull) guard_.restart(state_, time_);
   pulled_ = pull != nullptr;
   const long long failedBefore = stepper_.stats().failed;
-  stepper_.step(model_, state_, h, pull);
+  stepper_.step(model_, state_, h, pull, team_);
   ++step_;
   time_ = timeAfter;
   if (stepper_.stats().failed != failedBefore) {

@@ -90,6 +90,9 @@ class Simulation {
   Integrator integrator() const { return stepper_.integrator(); }
   const StepStats& stats() const { return stepper_.stats(); }  // the stepper's, since the start
   const Model& model() const { return model_; }
+  // Shares each force evaluation between `team`'s two threads (physics.h's derivative), with the
+  // same results; null: this thread alone (the default). The team must outlive its use here.
+  void setTeam(Team* team) { team_ = team; }
 
  private:
   bool stepAndCheck(double h, double timeAfter, const Pull* pull);
@@ -103,6 +106,7 @@ class Simulation {
   bool pulled_ = false;  // the last step had a pull: the next one without restarts the bound
   Tolerances tolerances_;
   Stepper stepper_;
+  Team* team_ = nullptr;
   DivergenceGuard guard_;
   RunOutcome outcome_;
 };

@@ -2,12 +2,16 @@
 // and the scene analysis that chooses between them.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <thread>
 
+#include "core/team.h"
 #include "physics.h"
 #include "solver/integrators.h"
+#include "solver/simulation.h"
 #include "test_support.h"
 
 namespace jello {
@@ -186,6 +190,94 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
                 d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
   }
+}
+
+// The kernel a range of rows at a time (what each of two threads computes) against the whole
+// pass, bit for bit: every split of the rows in two, on states where every term acts (random
+// worlds thrown against the walls and the plane, 300 steps on), a pulled point in either range.
+// Each range follows a whole pass on another state, so that the kernel's scratch on the stack
+// (the spring rings) holds that state's values wherever the range reads a slot it has not
+// written.
+TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
+  std::mt19937 random(20261123);
+  int compared = 0;
+  for (int world = 0; world < 6; ++world) {
+    State state;
+    const World w = randomWorld(random, &state);
+    for (KernelChoice choice : {KernelChoice::Specialised, KernelChoice::General}) {
+      const Model model = makeModel(w, state, choice);
+      State s = state;
+      Stepper stepper(Integrator::RK4);
+      for (int step = 0; step < 300; ++step) stepper.step(model, s, w.dt);
+      const Bounds box = boundsOf(s.p());
+      const Bounds* reach = model.scene.culling ? &box : nullptr;
+      State other = s;
+      for (int c = 0; c < kNumCoords; ++c) other.p()[c] += 0.01 * std::sin(c);
+      std::vector<double> junk(kNumCoords);
+      for (int pulled : {-1, 37, 400}) {
+        const Pull pull{pulled, {0.1, 0.2, 0.3}, 50};
+        std::vector<double> whole(kNumCoords), parts(kNumCoords, 1.0);
+        computeForces(model, s.p(), s.v(), whole.data(), &pull);
+        for (int split = kLatticeSize; split < kNumPoints; split += kLatticeSize) {
+          for (PointRange range : {PointRange{split, kNumPoints}, PointRange{0, split}}) {
+            computeForcesOn(model, kAllPoints, other.p(), s.v(), reach, junk.data(), &pull);
+            computeForcesOn(model, range, s.p(), s.v(), reach, parts.data(), &pull);
+          }
+          ASSERT_EQ(std::memcmp(parts.data(), whole.data(), sizeof(double) * kNumCoords), 0)
+              << "random world " << world << ", split at point " << split;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 6 * 2 * 3 * 63);
+}
+
+// Two threads (core/team.h) step exactly as one: 1000 RK4 steps of each course world, compared
+// bit for bit along the way.
+TEST(KernelRanges, ATwoThreadRunIsTheOneThreadRunBitForBit) {
+  Team team;
+  for (const char* name : {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
+    const WorldFile f = readWorldFile(test::dataPath(name));
+    const Model model = makeModel(f.world, f.state);
+    Simulation one(model, f.state, Integrator::RK4, f.world.dt);
+    Simulation two(model, f.state, Integrator::RK4, f.world.dt);
+    two.setTeam(&team);
+    for (int step = 0; step < 1000; ++step) {
+      ASSERT_TRUE(one.advance(1).ran() && two.advance(1).ran()) << name;
+      ASSERT_EQ(std::memcmp(one.state().y.data(), two.state().y.data(),
+                            sizeof(double) * one.state().y.size()),
+                0)
+          << name << " at step " << step + 1;
+    }
+  }
+}
+
+// The team runs each part of each job exactly once, whichever thread takes part 1: jobs whose
+// part 0 is slow (the helper takes part 1) and whose part 0 is instant (the caller may take it),
+// and jobs after the helper has gone to sleep.
+TEST(Team, RunsEachPartOfEachJobExactlyOnce) {
+  Team team;
+  std::atomic<int> counts[2] = {{0}, {0}};
+  std::atomic<bool> helperTookSome{false};
+  const std::thread::id caller = std::this_thread::get_id();
+  for (int job = 0; job < 20000; ++job) {
+    int seen[2] = {0, 0};
+    team.run([&](int part) {
+      if (part == 0 && job % 2 == 0)
+        for (volatile int spin = 0; spin < 2000; ++spin) {
+        }
+      if (part == 1 && std::this_thread::get_id() != caller) helperTookSome = true;
+      ++seen[part];
+      ++counts[part];
+    });
+    ASSERT_EQ(seen[0], 1);
+    ASSERT_EQ(seen[1], 1);
+    if (job == 10000) std::this_thread::sleep_for(2 * Team::kSpinFor);  // the helper sleeps
+  }
+  EXPECT_EQ(counts[0], 20000);
+  EXPECT_EQ(counts[1], 20000);
+  EXPECT_TRUE(helperTookSome);
 }
 
 // The field as the specialised kernel interpolates it (8 points at a time, on padded nodes)
