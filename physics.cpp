@@ -9,6 +9,9 @@
 
 #include "core/assert.h"
 #include "core/team.h"
+#include "forces/gravity.h"
+#include "forces/obstacle.h"
+#include "scene/spec.h"
 
 namespace jello {
 
@@ -40,6 +43,15 @@ void addField(const World& world, KernelChoice choice, Scene* scene) {
   }
 }
 
+// What a scene file adds after the course's terms (so that a scene that adds nothing sums as the
+// course world does): gravity, then the obstacles in the file's order.
+void addSceneTerms(const World& world, const SceneSpec& spec, Scene* scene) {
+  if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0)
+    scene->terms.push_back(std::make_unique<GravityTerm>(spec.gravity, world.mass));
+  for (const Obstacle& obstacle : spec.obstacles)
+    scene->terms.push_back(std::make_unique<ObstacleTerm>(obstacle));
+}
+
 // The terms of `world` in the order their forces are summed. The field term reads the nodes of
 // `world`, which must be the model's own.
 Scene buildScene(const World& world, const State& initial, KernelChoice choice) {
@@ -51,7 +63,13 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
   scene.springs = springs.get();
   scene.terms.push_back(std::move(springs));
   const ContactSpring contact{world.kCollision, world.dCollision};
-  scene.terms.push_back(std::make_unique<WallsTerm>(contact));
+  const SceneSpec* spec = world.scene.get();
+  if (spec && !spec->boundsPresent)
+    scene.leftOut.push_back("walls (the scene has no bounding box)");
+  else if (spec && spec->bounds)
+    scene.terms.push_back(std::make_unique<ObstacleTerm>(*spec->bounds));
+  else
+    scene.terms.push_back(std::make_unique<WallsTerm>(contact));
   if (world.hasPlane) {
     auto plane =
         std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()), contact);
@@ -61,10 +79,11 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
     scene.leftOut.push_back("plane (none in the file)");
   }
   addField(world, choice, &scene);
+  if (spec) addSceneTerms(world, *spec, &scene);
   return scene;
 }
 
-constexpr int kMaxTerms = 16;
+constexpr int kMaxTerms = 8 + kMostObstacles;
 
 }  // namespace
 
@@ -90,6 +109,7 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   Model model;
   model.world = world;
   model.scene = buildScene(model.world, initial, choice);
+  if (world.scene) model.pinned = world.scene->pinned;
   JELLO_ASSERT(model.scene.terms.size() <= kMaxTerms);
   return model;
 }
@@ -152,6 +172,10 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
     std::copy(v + first, v + end, dydt + first);
     for (int c = first; c < end; ++c) a[c] /= mass;
   }
+  // A pinned point neither moves nor accelerates: every integrator keeps it exactly where it is.
+  for (int q : model.pinned)
+    if (q >= points.begin && q < points.end)
+      for (int axis = 0; axis < 3; ++axis) dydt[coordIndex(q, axis)] = a[coordIndex(q, axis)] = 0;
 }
 
 }  // namespace

@@ -55,6 +55,8 @@ std::string sceneLine(const Scene& scene);
 struct Model {
   World world;
   Scene scene;
+  std::vector<int>
+      pinned;  // the scene's pinned points (scene/spec.h), sorted; none for a course world
 
   Model() = default;
   Model(Model&&) = default;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -87,6 +88,8 @@ struct ForceField {
   }
 };
 
+struct SceneSpec;  // scene/spec.h
+
 // Everything a world file fixes except the state. Read once, never changed by a run.
 struct World {
   Integrator integrator = Integrator::RK4;
@@ -97,6 +100,9 @@ struct World {
   bool hasPlane = false;
   Plane plane;
   ForceField field;
+  // What a scene file adds (gravity, obstacles, pins, the bounding box); null for a course world.
+  // Shared, never changed once read.
+  std::shared_ptr<const SceneSpec> scene;
 };
 
 // Positions (m) and velocities (m/s) of the 512 points, each a per-point array of kNumCoords

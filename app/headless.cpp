@@ -16,6 +16,7 @@
 #include "core/output.h"
 #include "core/progress.h"
 #include "physics.h"
+#include "scene/reader.h"
 #include "solver/integrators.h"
 #include "solver/simulation.h"
 
@@ -190,7 +191,8 @@ std::string tooManyStepsMessage(double time, double dt) {
 
 Outcome loadRun(const RunOptions& options, WorldFile* out) {
   try {
-    *out = readWorldFile(options.worldPath);
+    *out = isSceneFile(options.worldPath) ? readSceneFile(options.worldPath)
+                                          : readWorldFile(options.worldPath);
   } catch (const WorldFileError& e) {
     struct stat info;
     if (options.worldDefaulted && ::stat(options.worldPath.c_str(), &info) != 0)

@@ -104,6 +104,17 @@ class Assembly final : public JacobianSink {
   std::size_t slot_ = 0;
 };
 
+// A pinned point's acceleration is 0 whatever the state (physics.cpp's derivative): its rows are
+// zero. (IMPLICIT's Newton step then leaves its velocity at 0.)
+void zeroPinnedRows(const std::vector<int>& pinned, AccelerationJacobian* out) {
+  std::vector<char> isPinned(kNumCoords, 0);
+  for (int q : pinned)
+    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+  for (SparseMatrix* m : {&out->dAdp, &out->dAdv})
+    for (Eigen::Index e = 0; e < m->nonZeros(); ++e)
+      if (isPinned[m->innerIndexPtr()[e]]) m->valuePtr()[e] = 0;
+}
+
 }  // namespace
 
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
@@ -119,6 +130,7 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
   Assembly assembly(out, 1.0 / model.world.mass);
   for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
+  if (!model.pinned.empty()) zeroPinnedRows(model.pinned, out);
 }
 
 }  // namespace jello

@@ -1,0 +1,410 @@
+// scene/reader.cpp: the scene file reader (reader.h; the keys are documented in docs/scenes.md).
+
+#include "scene/reader.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <toml++/toml.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+#include <iterator>
+#include <memory>
+
+#include "scene/spec.h"
+
+namespace jello {
+
+namespace {
+
+// Reads the scene's keys, refusing any it does not know and any value it cannot use.
+class Reader {
+ public:
+  Reader(std::string name, std::string folder)
+      : name_(std::move(name)), folder_(std::move(folder)) {}
+
+  [[noreturn]] void fail(const toml::node& at, const std::string& key,
+                         const std::string& what) const {
+    throw WorldFileError(name_ + ":" + std::to_string(at.source().begin.line) + ": " + what + " (" +
+                         key + ")");
+  }
+
+  // Every key of `table` is one of `known`.
+  void onlyKeys(const toml::table& table, const std::string& path,
+                std::initializer_list<const char*> known) const {
+    for (auto&& [key, node] : table) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || key.str() == k;
+      if (!ok) fail(node, path + std::string(key.str()), "unknown key");
+    }
+  }
+
+  // A finite number, at least `lowest` (or above it when `strictly`).
+  std::optional<double> number(const toml::table& table, const std::string& path, const char* key,
+                               double lowest = -INFINITY, bool strictly = false) const {
+    const toml::node* node = table.get(key);
+    if (!node) return std::nullopt;
+    const std::string full = path + key;
+    std::optional<double> value = node->is_number() ? node->value<double>() : std::nullopt;
+    if (!value) fail(*node, full, "expected a number");
+    if (!std::isfinite(*value)) fail(*node, full, "is not finite");
+    if (strictly ? !(*value > lowest) : !(*value >= lowest))
+      fail(*node, full,
+           std::string("must be ") + (strictly ? "above " : "at least ") + textOf(lowest));
+    return value;
+  }
+
+  std::optional<Vec3> vector(const toml::table& table, const std::string& path,
+                             const char* key) const {
+    const toml::node* node = table.get(key);
+    if (!node) return std::nullopt;
+    const toml::array* array = node->as_array();
+    if (!array || array->size() != 3) fail(*node, path + key, "expected 3 numbers [x, y, z]");
+    double xyz[3];
+    for (int i = 0; i < 3; ++i) {
+      const toml::node& item = *array->get(i);
+      std::optional<double> value = item.is_number() ? item.value<double>() : std::nullopt;
+      if (!value) fail(item, path + key, "expected 3 numbers [x, y, z]");
+      if (!std::isfinite(*value)) fail(item, path + key, "is not finite");
+      xyz[i] = *value;
+    }
+    return Vec3{xyz[0], xyz[1], xyz[2]};
+  }
+
+  const toml::table* table(const toml::table& parent, const std::string& path,
+                           const char* key) const {
+    const toml::node* node = parent.get(key);
+    if (!node) return nullptr;
+    if (!node->is_table()) fail(*node, path + key, "expected a table");
+    return node->as_table();
+  }
+
+  // An array of tables ([[sphere]]), each handed to `each` with its path ("sphere[2].").
+  template <class Each>
+  void tables(const toml::table& parent, const char* key, Each each) const {
+    const toml::node* node = parent.get(key);
+    if (!node) return;
+    const toml::array* array = node->as_array();
+    if (!array || !array->is_array_of_tables())
+      fail(*node, key, "expected [[" + std::string(key) + "]] tables");
+    for (std::size_t i = 0; i < array->size(); ++i)
+      each(*array->get(i)->as_table(), std::string(key) + "[" + std::to_string(i + 1) + "].");
+  }
+
+  const std::string& name() const { return name_; }
+  const std::string& folder() const { return folder_; }
+
+ private:
+  static std::string textOf(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+  }
+  std::string name_, folder_;
+};
+
+}  // namespace
+
+namespace {
+
+// A scene without `world`: the course's usual parameters (world/rotate.w's), the cube's rest
+// lattice centred on the origin, at rest.
+WorldFile defaultWorld() {
+  WorldFile file;
+  World& w = file.world;
+  w.integrator = Integrator::RK4;
+  w.dt = 0.0005;
+  w.n = 10;
+  w.kElastic = 500;
+  w.dElastic = 0.25;
+  w.kCollision = 1000;
+  w.dCollision = 0.25;
+  w.mass = 1.0 / kNumPoints;
+  for (int i = 0; i < kLatticeSize; ++i)
+    for (int j = 0; j < kLatticeSize; ++j)
+      for (int k = 0; k < kLatticeSize; ++k)
+        store(file.state.p(), pointIndex(i, j, k),
+              kRestSpacing * Vec3{double(i), double(j), double(k)} - Vec3{0.5, 0.5, 0.5});
+  return file;
+}
+
+// The course world a scene starts from, its path relative to the scene's folder.
+WorldFile baseWorld(const Reader& r, const toml::table& root) {
+  const toml::node* node = root.get("world");
+  if (!node) return defaultWorld();
+  const std::optional<std::string> path = node->value<std::string>();
+  if (!path || path->empty()) r.fail(*node, "world", "expected the path of a course world (.w)");
+  const std::string full =
+      (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+  try {
+    return readWorldFile(full);
+  } catch (const WorldFileError& e) {
+    r.fail(*node, "world", e.what());
+  }
+}
+
+void readRun(const Reader& r, const toml::table& root, World* w) {
+  if (const toml::node* node = root.get("integrator")) {
+    const std::optional<std::string> text = node->value<std::string>();
+    if (!text || !parseIntegratorName(*text, &w->integrator))
+      r.fail(*node, "integrator", "expected one of " + integratorNameList());
+  }
+  if (auto dt = r.number(root, "", "dt", 0, true)) w->dt = *dt;
+  if (const toml::node* node = root.get("n")) {
+    const std::optional<std::int64_t> n =
+        node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+    if (!n || *n < 1 || *n > 1000000)
+      r.fail(*node, "n", "expected a whole number from 1 to 1000000");
+    w->n = static_cast<int>(*n);
+  }
+}
+
+void readJelly(const Reader& r, const toml::table& root, WorldFile* file) {
+  const toml::table* t = r.table(root, "", "jelly");
+  if (!t) return;
+  r.onlyKeys(*t, "jelly.", {"mass", "total_mass", "stiffness", "damping", "offset", "velocity"});
+  World& w = file->world;
+  if (t->get("mass") && t->get("total_mass"))
+    r.fail(*t->get("total_mass"), "jelly.total_mass",
+           "give mass (per point) or total_mass, not both");
+  if (auto m = r.number(*t, "jelly.", "mass", 0, true)) w.mass = *m;
+  if (auto m = r.number(*t, "jelly.", "total_mass", 0, true)) w.mass = *m / kNumPoints;
+  if (auto k = r.number(*t, "jelly.", "stiffness", 0)) w.kElastic = *k;
+  if (auto d = r.number(*t, "jelly.", "damping", 0)) w.dElastic = *d;
+  const Vec3 offset = r.vector(*t, "jelly.", "offset").value_or(Vec3{});
+  const std::optional<Vec3> velocity = r.vector(*t, "jelly.", "velocity");
+  for (int q = 0; q < kNumPoints; ++q) {
+    store(file->state.p(), q, load(file->state.p(), q) + offset);
+    if (velocity) store(file->state.v(), q, *velocity);
+  }
+}
+
+ContactSpring readSpring(const Reader& r, const toml::table& t, const std::string& path,
+                         ContactSpring spring) {
+  if (auto k = r.number(t, path, "stiffness", 0)) spring.k = *k;
+  if (auto d = r.number(t, path, "damping", 0)) spring.d = *d;
+  return spring;
+}
+
+Friction readFriction(const Reader& r, const toml::table& t, const std::string& path) {
+  Friction f;
+  f.muStatic = r.number(t, path, "friction_static", 0).value_or(0);
+  f.muDynamic = r.number(t, path, "friction_dynamic", 0).value_or(f.muStatic);
+  f.speed = r.number(t, path, "friction_speed", 0, true).value_or(kDefaultFrictionSpeed);
+  if (f.muDynamic > f.muStatic)
+    r.fail(*t.get("friction_dynamic"), path + "friction_dynamic",
+           "must be at most friction_static (dynamic friction is the weaker)");
+  return f;
+}
+
+// lower < upper on every axis.
+void checkBox(const Reader& r, const toml::table& t, const std::string& path, Vec3 lower,
+              Vec3 upper) {
+  if (!(lower.x < upper.x && lower.y < upper.y && lower.z < upper.z))
+    r.fail(*t.get("upper"), path + "upper", "must be above lower on every axis");
+}
+
+Obstacle readObstacle(const Reader& r, const toml::table& t, const std::string& path,
+                      ObstacleShape shape, ContactSpring spring) {
+  static const char* const kCommon[] = {"stiffness", "damping", "friction_static",
+                                        "friction_dynamic", "friction_speed"};
+  Obstacle o;
+  o.shape = shape;
+  std::vector<const char*> known(std::begin(kCommon), std::end(kCommon));
+  if (shape == ObstacleShape::Sphere) known.insert(known.end(), {"centre", "radius"});
+  if (shape == ObstacleShape::Box) known.insert(known.end(), {"lower", "upper"});
+  if (shape == ObstacleShape::HalfSpace) known.insert(known.end(), {"point", "normal"});
+  for (auto&& [key, node] : t) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || key.str() == k;
+    if (!ok) r.fail(node, path + std::string(key.str()), "unknown key");
+  }
+  auto need = [&](const char* key) {
+    if (!t.get(key)) r.fail(t, path + key, "missing");
+  };
+  if (shape == ObstacleShape::Sphere) {
+    need("centre");
+    o.centre = *r.vector(t, path, "centre");
+    need("radius");
+    o.radius = *r.number(t, path, "radius", 0, true);
+  } else if (shape == ObstacleShape::Box) {
+    need("lower");
+    need("upper");
+    o.lower = *r.vector(t, path, "lower");
+    o.upper = *r.vector(t, path, "upper");
+    checkBox(r, t, path, o.lower, o.upper);
+  } else {
+    need("point");
+    o.point = *r.vector(t, path, "point");
+    need("normal");
+    const Vec3 normal = *r.vector(t, path, "normal");
+    const double size = length(normal);
+    if (!(size > 0) || !std::isfinite(size))
+      r.fail(*t.get("normal"), path + "normal", "must not be zero");
+    o.normal = (1 / size) * normal;
+  }
+  o.spring = readSpring(r, t, path, spring);
+  o.friction = readFriction(r, t, path);
+  return o;
+}
+
+void readBounds(const Reader& r, const toml::table& root, ContactSpring spring, SceneSpec* spec) {
+  const toml::table* t = r.table(root, "", "bounds");
+  if (!t) return;
+  r.onlyKeys(*t, "bounds.",
+             {"present", "lower", "upper", "stiffness", "damping", "friction_static",
+              "friction_dynamic", "friction_speed"});
+  if (const toml::node* present = t->get("present")) {
+    if (!present->is_boolean()) r.fail(*present, "bounds.present", "expected true or false");
+    spec->boundsPresent = present->value<bool>().value_or(true);
+  }
+  const bool sized = t->get("lower") || t->get("upper");
+  const bool changed =
+      sized || t->get("stiffness") || t->get("damping") || t->get("friction_static");
+  if (!spec->boundsPresent || !changed) return;
+  Obstacle o;
+  o.shape = ObstacleShape::Container;
+  o.lower =
+      r.vector(*t, "bounds.", "lower").value_or(Vec3{-kBoxHalfSize, -kBoxHalfSize, -kBoxHalfSize});
+  o.upper =
+      r.vector(*t, "bounds.", "upper").value_or(Vec3{kBoxHalfSize, kBoxHalfSize, kBoxHalfSize});
+  if (sized) checkBox(r, *t, "bounds.", o.lower, o.upper);
+  o.spring = readSpring(r, *t, "bounds.", spring);
+  o.friction = readFriction(r, *t, "bounds.");
+  spec->bounds = o;
+}
+
+// An inclusive range [first, last] of lattice indices, all of them by default.
+std::pair<int, int> indexRange(const Reader& r, const toml::table& t, const std::string& path,
+                               const char* key) {
+  const toml::node* node = t.get(key);
+  if (!node) return {0, kLatticeSize - 1};
+  const toml::array* array = node->as_array();
+  std::optional<std::int64_t> a, b;
+  if (array && array->size() == 2)
+    a = array->get(0)->value<std::int64_t>(), b = array->get(1)->value<std::int64_t>();
+  if (!a || !b || !(*array->get(0)).is_integer() || !(*array->get(1)).is_integer() || *a < 0 ||
+      *b >= kLatticeSize || *a > *b)
+    r.fail(*node, path + key, "expected [first, last], whole numbers with 0 <= first <= last <= 7");
+  return {static_cast<int>(*a), static_cast<int>(*b)};
+}
+
+void readPins(const Reader& r, const toml::table& root, const State& state, SceneSpec* spec) {
+  std::vector<char> pinned(kNumPoints, 0);
+  r.tables(root, "pin", [&](const toml::table& t, const std::string& path) {
+    r.onlyKeys(t, path, {"i", "j", "k", "lower", "upper"});
+    const bool region = t.get("lower") || t.get("upper");
+    if (region && (t.get("i") || t.get("j") || t.get("k")))
+      r.fail(t, path + "lower",
+             "give lattice ranges (i, j, k) or a region (lower, upper), not both");
+    int count = 0;
+    if (region) {
+      const Vec3 lower = r.vector(t, path, "lower").value_or(Vec3{-INFINITY, -INFINITY, -INFINITY});
+      const Vec3 upper = r.vector(t, path, "upper").value_or(Vec3{INFINITY, INFINITY, INFINITY});
+      for (int q = 0; q < kNumPoints; ++q) {
+        const Vec3 p = load(state.p(), q);
+        const bool inside = p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
+                            p.z >= lower.z && p.z <= upper.z;
+        if (inside) pinned[q] = 1, ++count;
+      }
+    } else {
+      const auto is = indexRange(r, t, path, "i"), js = indexRange(r, t, path, "j"),
+                 ks = indexRange(r, t, path, "k");
+      for (int i = is.first; i <= is.second; ++i)
+        for (int j = js.first; j <= js.second; ++j)
+          for (int k = ks.first; k <= ks.second; ++k) pinned[pointIndex(i, j, k)] = 1, ++count;
+    }
+    if (count == 0) r.fail(t, path.substr(0, path.size() - 1), "pins no point");
+  });
+  for (int q = 0; q < kNumPoints; ++q)
+    if (pinned[q]) spec->pinned.push_back(q);
+}
+
+void readObstacles(const Reader& r, const toml::table& root, ContactSpring spring,
+                   SceneSpec* spec) {
+  const std::pair<const char*, ObstacleShape> kinds[] = {{"sphere", ObstacleShape::Sphere},
+                                                         {"box", ObstacleShape::Box},
+                                                         {"plane", ObstacleShape::HalfSpace}};
+  for (const auto& [key, shape] : kinds)
+    r.tables(root, key, [&](const toml::table& t, const std::string& path) {
+      if (spec->obstacles.size() >= static_cast<std::size_t>(kMostObstacles))
+        r.fail(t, path.substr(0, path.size() - 1),
+               "more than " + std::to_string(kMostObstacles) + " obstacles");
+      spec->obstacles.push_back(readObstacle(r, t, path, shape, spring));
+    });
+}
+
+toml::table parseToml(std::string_view text, const std::string& name) {
+  try {
+    return toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw WorldFileError(name + ":" + std::to_string(e.source().begin.line) + ": " +
+                         std::string(e.description()) + " (TOML)");
+  }
+}
+
+}  // namespace
+
+WorldFile parseScene(std::string_view text, const std::string& name, const std::string& folder) {
+  const toml::table root = parseToml(text, name);
+  const Reader r(name, folder);
+  r.onlyKeys(root, "",
+             {"world", "integrator", "dt", "n", "gravity", "jelly", "contact", "bounds", "sphere",
+              "box", "plane", "pin"});
+  WorldFile file = baseWorld(r, root);
+  World& w = file.world;
+  readRun(r, root, &w);
+  readJelly(r, root, &file);
+  if (const toml::table* contact = r.table(root, "", "contact")) {
+    r.onlyKeys(*contact, "contact.", {"stiffness", "damping"});
+    const ContactSpring spring = readSpring(r, *contact, "contact.", {w.kCollision, w.dCollision});
+    w.kCollision = spring.k;
+    w.dCollision = spring.d;
+  }
+  auto spec = std::make_shared<SceneSpec>();
+  spec->gravity = r.vector(root, "", "gravity").value_or(Vec3{});
+  const ContactSpring spring{w.kCollision, w.dCollision};
+  readBounds(r, root, spring, spec.get());
+  readObstacles(r, root, spring, spec.get());
+  readPins(r, root, file.state, spec.get());
+  for (int q : spec->pinned) store(file.state.v(), q, Vec3{});
+  if (std::optional<WorldProblem> problem = findWorldProblem(w, file.state))
+    throw WorldFileError(name + ": " + problem->what);
+  w.scene = std::move(spec);
+  return file;
+}
+
+WorldFile readSceneFile(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode))
+    throw WorldFileError(path + ": not a regular file (a scene file is read whole)");
+  if (static_cast<std::size_t>(info.st_size) > kMostSceneBytes)
+    throw WorldFileError(path + ": larger than " + std::to_string(kMostSceneBytes) + " bytes");
+  std::string text(static_cast<std::size_t>(info.st_size), '\0');
+  std::size_t got = 0;
+  while (got < text.size()) {
+    const ssize_t n = ::read(fd, &text[got], text.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw WorldFileError(path + ": cannot read: " + std::strerror(n < 0 ? errno : EIO));
+    got += static_cast<std::size_t>(n);
+  }
+  const std::size_t slash = path.rfind('/');
+  return parseScene(text, path, slash == std::string::npos ? "" : path.substr(0, slash));
+}
+
+bool isSceneFile(const std::string& path) {
+  constexpr std::string_view kSuffix = ".toml";
+  return path.size() > kSuffix.size() &&
+         path.compare(path.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0;
+}
+
+}  // namespace jello

@@ -1,0 +1,28 @@
+// scene/reader.h: the scene file reader (TOML, docs/scenes.md). A scene starts from a course world
+// (its key `world`, a path relative to the scene file's folder) or from the defaults below, and
+// adds gravity, obstacles with friction, pinned points and a bounding box of any size.
+//
+// Every key is checked: an unknown key, a value of the wrong type and an impossible value are
+// refused with one line "FILE:LINE: what (key)", as a malformed world file is.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "world.h"
+
+namespace jello {
+
+// Whether `path` names a scene file rather than a course world: it ends in ".toml".
+bool isSceneFile(const std::string& path);
+
+// The most bytes a scene file may have: far more than any hand-written scene.
+constexpr std::size_t kMostSceneBytes = 1 << 20;
+
+// Parses a scene's text; `name` is used in messages, `folder` resolves its `world` key (the
+// current folder when empty). Throws WorldFileError.
+WorldFile parseScene(std::string_view text, const std::string& name, const std::string& folder);
+// Reads and parses a scene file (a regular file). Throws WorldFileError.
+WorldFile readSceneFile(const std::string& path);
+
+}  // namespace jello

@@ -1,0 +1,30 @@
+// scene/spec.h: what a scene file (docs/scenes.md) adds to a course world: gravity, obstacles
+// with friction, pinned points and the bounding box's size. A course world has none of it, and
+// its .w format is unchanged; a scene is read once and shared by the world's copies.
+//
+// Units: metres, seconds, kilograms; gravity in m/s^2.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "forces/obstacle.h"
+#include "vec3.h"
+
+namespace jello {
+
+// The most obstacles a scene may have (each is a term the kernel goes through).
+constexpr int kMostObstacles = 64;
+
+struct SceneSpec {
+  Vec3 gravity;                     // m/s^2, on every point, everywhere
+  std::vector<Obstacle> obstacles;  // in the order of the file
+  // Points that do not move (indices, see pointIndex), sorted, each once. Their velocities are 0.
+  std::vector<int> pinned;
+  // The box that holds the jelly: the course's walls of [-2,2]^3 with the world's kCollision and
+  // dCollision (nullopt), or a container obstacle of any size, with friction; or none at all.
+  bool boundsPresent = true;
+  std::optional<Obstacle> bounds;
+};
+
+}  // namespace jello
