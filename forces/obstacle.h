@@ -11,9 +11,10 @@
 //   F_t = -mu(s) N t / sqrt(s^2 + eps^2),  t = v - (v . n) n,  s = |t|,
 //   mu(s) = mu_d + (mu_s - mu_d) exp(-s / (kStribeckRatio eps)),
 // N = max(0, k depth - d v . n) the contact's normal push: a smooth function of the velocity, at
-// most mu_s N, tending to mu_d N when sliding fast. Below the friction angle atan(mu_s) a point
-// creeps at a speed of about eps instead of sticking; a smaller eps (scene key friction_speed)
-// creeps less but is stiffer (dF/dv ~ mu N / eps) and needs a smaller dt.
+// most mu_s N, tending to mu_d N when sliding fast (above the Stribeck speed kStribeckRatio eps).
+// A tangential load below about 0.9 mu_s N (the largest F_t reaches at low speed, near s = 5 eps)
+// is held: the point creeps at a few eps instead of sticking. A smaller eps (scene key
+// friction_speed) creeps less but is stiffer (dF/dv ~ mu N / eps) and needs a smaller dt.
 #pragma once
 
 #include <string>
@@ -25,7 +26,7 @@ namespace jello {
 
 // Friction's regularisation speed by default, m/s, and the Stribeck speed's ratio to it.
 constexpr double kDefaultFrictionSpeed = 0.01;
-constexpr double kStribeckRatio = 4;
+constexpr double kStribeckRatio = 20;
 
 struct Friction {
   double muStatic = 0, muDynamic = 0;    // >= 0, muDynamic <= muStatic
@@ -64,9 +65,8 @@ Vec3 penetrationForce(const Obstacle& obstacle, const Penetration& pen, Vec3 v);
 Vec3 frictionForce(const Friction& friction, double push, Vec3 normal, Vec3 v);
 // Sum over the point's penetrations.
 Vec3 obstacleForce(const Obstacle& obstacle, Vec3 p, Vec3 v);
-// Its derivatives with respect to the point's position and velocity. Exact but for two terms
-// left out (both vanish as the penetration does): the damping's change with a sphere's normal,
-// and friction's with a sphere's normal.
+// Its derivatives with respect to the point's position and velocity, exact (a sphere's normal
+// turns as the point moves; the friction's regularisation is differentiated too).
 void obstacleJacobian(const Obstacle& obstacle, Vec3 p, Vec3 v, Block3* dFdp, Block3* dFdv);
 
 // "sphere at (0, 0, -1), radius 0.5 m", and the like.

@@ -1,0 +1,334 @@
+// Scene files (docs/scenes.md): the reader and its refusals, the obstacles' forces against hand-
+// computed values and finite differences, pinned points, friction on a slope, and a jelly
+// dropped on a sphere.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "forces/obstacle.h"
+#include "physics.h"
+#include "scene/reader.h"
+#include "scene/spec.h"
+#include "solver/integrators.h"
+#include "solver/simulation.h"
+#include "test_support.h"
+
+namespace jello {
+namespace {
+
+WorldFile scene(const std::string& text) {
+  return parseScene(text, "test.toml", std::string(JELLO_SOURCE_DIR));
+}
+
+Vec3 centroid(const State& s) {
+  Vec3 sum;
+  for (int q = 0; q < kNumPoints; ++q) sum += load(s.p(), q);
+  return (1.0 / kNumPoints) * sum;
+}
+
+TEST(SceneFile, ACourseWorldThroughASceneIsTheCourseWorldBitForBit) {
+  for (const char* name : {"rotate.w", "jello.w", "skewedCorner.w"}) {
+    const WorldFile course = readWorldFile(std::string(JELLO_SOURCE_DIR) + "/world/" + name);
+    const WorldFile through = scene(std::string("world = \"world/") + name + "\"\n");
+    const Model a = makeModel(course.world, course.state),
+                b = makeModel(through.world, through.state);
+    Simulation one(a, course.state, course.world.integrator, course.world.dt);
+    Simulation two(b, through.state, through.world.integrator, through.world.dt);
+    ASSERT_TRUE(one.advance(1000).ran() && two.advance(1000).ran()) << name;
+    EXPECT_EQ(
+        std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 2 * kNumCoords), 0)
+        << name;
+  }
+}
+
+// A point 0.1 m inside a sphere of radius 1, moving in and sideways: the spring pushes k * 0.1
+// out along the radius, the damper d * 0.5 more, and friction holds the sideways motion back by
+// mu(s) N s / sqrt(s^2 + eps^2), N the push.
+TEST(ObstacleForces, APointInsideASphereIsPushedOutAndHeldBackByHandComputedForces) {
+  Obstacle sphere;
+  sphere.shape = ObstacleShape::Sphere;
+  sphere.radius = 1;
+  sphere.spring = {1000, 2};
+  const Vec3 p{0, 0, 0.9}, v{0.2, 0, -0.5};
+  Vec3 f = obstacleForce(sphere, p, v);
+  EXPECT_NEAR(f.x, 0, 1e-12);
+  EXPECT_NEAR(f.z, 1000 * 0.1 + 2 * 0.5, 1e-9);  // 101 N
+  sphere.friction = {0.5, 0.3, 0.01};
+  f = obstacleForce(sphere, p, v);
+  const double mu = 0.3 + 0.2 * std::exp(-0.2 / (20 * 0.01));  // 0.37358: Stribeck speed 20 eps
+  EXPECT_NEAR(f.x, -mu * 101 * 0.2 / std::sqrt(0.04 + 0.0001), 1e-9);  // -37.7 N
+  EXPECT_NEAR(f.y, 0, 1e-12);
+  EXPECT_NEAR(f.z, 101, 1e-9);
+  EXPECT_EQ(length(obstacleForce(sphere, {0, 0, 1.0001}, v)), 0) << "outside: no force";
+}
+
+// Inside a box, out through the nearest face: 0.1 m below y = 1 beats the other faces.
+TEST(ObstacleForces, APointInsideABoxLeavesThroughItsNearestFace) {
+  Obstacle box;
+  box.shape = ObstacleShape::Box;
+  box.lower = {-1, -1, -1};
+  box.upper = {1, 1, 1};
+  box.spring = {500, 0};
+  const Vec3 f = obstacleForce(box, {0.2, 0.9, -0.3}, {});
+  EXPECT_NEAR(f.x, 0, 1e-12);
+  EXPECT_NEAR(f.y, 500 * 0.1, 1e-9);
+  EXPECT_NEAR(f.z, 0, 1e-12);
+  const Vec3 g = obstacleForce(box, {-0.95, 0, 0}, {});
+  EXPECT_NEAR(g.x, -500 * 0.05, 1e-9);
+}
+
+// The Jacobian blocks against central differences of the force, for points in contact with
+// each shape, friction on, sliding slowly and fast.
+TEST(ObstacleJacobian, MatchesFiniteDifferencesOfTheForce) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Obstacle> obstacles(4);
+  obstacles[0].shape = ObstacleShape::Sphere, obstacles[0].radius = 1;
+  obstacles[1].shape = ObstacleShape::Box, obstacles[1].lower = {-1, -1, -1},
+  obstacles[1].upper = {1, 1, 1};
+  obstacles[2].shape = ObstacleShape::HalfSpace, obstacles[2].normal = {0.6, 0, 0.8};
+  obstacles[3].shape = ObstacleShape::Container, obstacles[3].lower = {-1, -1, -1},
+  obstacles[3].upper = {1, 1, 1};
+  const Vec3 inside[4] = {{0.1, 0.2, 0.7}, {0.3, -0.2, 0.85}, {0.1, 0.3, -0.1}, {1.05, 0.2, -1.02}};
+  int checked = 0;
+  for (int o = 0; o < 4; ++o)
+    for (double speed : {0.005, 0.05, 1.0}) {
+      Obstacle obstacle = obstacles[o];
+      obstacle.spring = {800, 1.5};
+      obstacle.friction = {0.6, 0.4, 0.01};
+      const Vec3 p = inside[o], v = speed * Vec3{u(random), u(random), u(random)};
+      Block3 dFdp, dFdv;
+      obstacleJacobian(obstacle, p, v, &dFdp, &dFdv);
+      constexpr double h = 1e-7;
+      for (int j = 0; j < 3; ++j) {
+        Vec3 e;
+        (j == 0 ? e.x : j == 1 ? e.y : e.z) = h;
+        const Vec3 byP =
+            (1 / (2 * h)) * (obstacleForce(obstacle, p + e, v) - obstacleForce(obstacle, p - e, v));
+        const Vec3 byV =
+            (1 / (2 * h)) * (obstacleForce(obstacle, p, v + e) - obstacleForce(obstacle, p, v - e));
+        const double fp[3] = {byP.x, byP.y, byP.z}, fv[3] = {byV.x, byV.y, byV.z};
+        for (int i = 0; i < 3; ++i) {
+          // The damping's and friction's turn with a sphere's normal are left out (obstacle.h).
+          const double slack =
+              o == 0 ? 0.05 * (1 + std::fabs(fp[i])) : 1e-4 * (1 + std::fabs(fp[i]));
+          EXPECT_NEAR(dFdp.m[3 * i + j], fp[i], slack) << "shape " << o << " dF/dp " << i << j;
+          EXPECT_NEAR(dFdv.m[3 * i + j], fv[i], 1e-4 * (1 + std::fabs(fv[i])))
+              << "shape " << o << " dF/dv " << i << j;
+        }
+      }
+      ++checked;
+    }
+  EXPECT_EQ(checked, 12);
+}
+
+// Pinned points keep their positions to the last bit, with every integrator, under gravity.
+TEST(Pins, APinnedPointDoesNotMoveByASingleUlp) {
+  const WorldFile f = scene(
+      "gravity = [0, 0, -9.81]\ndt = 0.0002\n[[pin]]\ni = [0, 0]\nk = [7, 7]\n[[pin]]\nlower = "
+      "[0.4, "
+      "-1, -1]\nupper = [1, 1, 1]\n");
+  const std::vector<int>& pinned = f.world.scene->pinned;
+  ASSERT_EQ(pinned.size(), 8u + 64u);
+  for (const IntegratorInfo& row : integratorTable()) {
+    const Model model = makeModel(f.world, f.state);
+    Simulation run(model, f.state, row.integrator, f.world.dt);
+    ASSERT_TRUE(run.advance(row.needsJacobian ? 20 : 300).ran()) << row.name;
+    double moved = 0, free = 0;
+    for (int q = 0; q < kNumPoints; ++q) {
+      const double d = length(load(run.state().p(), q) - load(f.state.p(), q));
+      (std::binary_search(pinned.begin(), pinned.end(), q) ? moved : free) += d;
+    }
+    EXPECT_EQ(moved, 0) << row.name;
+    EXPECT_GT(free, 1e-4) << row.name << ": the rest of the jelly falls";
+  }
+}
+
+// Each integrator's error against a fine RK4 run at two steps, on a jelly hanging from a pinned
+// edge under gravity (smooth: no contact): the fitted order is the integrator's.
+TEST(Pins, EveryIntegratorKeepsItsOrderOnAScenWithPins) {
+  const WorldFile f = scene(
+      "gravity = [0, 0, -9.81]\n[bounds]\npresent = false\n[[pin]]\ni = [0, 0]\nk = [7, 7]\n");
+  const Model model = makeModel(f.world, f.state);
+  constexpr double kTime = 0.02;
+  auto run = [&](Integrator integrator, double dt) {
+    Simulation s(model, f.state, integrator, dt);
+    EXPECT_TRUE(s.advanceTo(kTime).ran());
+    return s.state();
+  };
+  const State reference = run(Integrator::RK4, 1e-6);
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.integrator == Integrator::RK45) continue;  // adaptive: its error follows its tolerance
+    const double dt = row.order >= 4 ? 1e-3 : 2e-4;
+    const double coarse = test::rmsDistance(run(row.integrator, dt).p(), reference.p());
+    const double fine = test::rmsDistance(run(row.integrator, dt / 2).p(), reference.p());
+    const double order = std::log2(coarse / fine);
+    std::printf("%s: errors %.3g, %.3g: order %.2f\n", row.name, coarse, fine, order);
+    EXPECT_NEAR(order, row.order, 0.35) << row.name;
+  }
+}
+
+// A jelly on a horizontal plane with friction, under gravity tilted by a (a slope of angle a):
+// below the friction angle atan(mu_s) it creeps at most millimetres in a second (friction is
+// regularised, obstacle.h); above it, it slides with the acceleration g (sin a - mu_d cos a).
+TEST(Friction, ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt) {
+  constexpr double muS = 0.6, muD = 0.4, g = 9.81;
+  auto slope = [&](double angle) {
+    char text[600];
+    std::snprintf(text, sizeof text,
+                  "dt = 0.0001\ngravity = [%.17g, 0, %.17g]\n[jelly]\nstiffness = 2000\ndamping = "
+                  "2\noffset = [0, 0, -0.5]\n[bounds]\npresent = false\n[[plane]]\npoint = [0, 0, "
+                  "-1.0]\nnormal = [0, 0, 1]\nstiffness = 20000\ndamping = 5\nfriction_static = "
+                  "%g\nfriction_dynamic = %g\nfriction_speed = 0.002\n",
+                  g * std::sin(angle), -g * std::cos(angle), muS, muD);
+    return scene(text);
+  };
+  const double friction = std::atan(muS);
+  {
+    // Settled on the level first: a jelly landing on a slope slides while its weight presses it
+    // in, and once sliding, mu_d < tan a keeps it going, as Coulomb's law says.
+    const WorldFile level = slope(0);
+    const Model levelModel = makeModel(level.world, level.state);
+    Simulation settle(levelModel, level.state, Integrator::RK4, level.world.dt);
+    ASSERT_TRUE(settle.advanceTo(0.5).ran());
+    const WorldFile f = slope(0.8 * friction);
+    const Model model = makeModel(f.world, f.state);
+    Simulation s(model, settle.state(), Integrator::RK4, f.world.dt);
+    ASSERT_TRUE(s.advanceTo(1.0).ran());
+    const double slid = centroid(s.state()).x - centroid(settle.state()).x;
+    std::printf("at 0.8 of the friction angle: %.3g m in 1 s\n", slid);
+    EXPECT_LT(std::fabs(slid), 0.01);
+  }
+  {
+    const double angle = 1.2 * friction;
+    const WorldFile f = slope(angle);
+    const Model model = makeModel(f.world, f.state);
+    Simulation s(model, f.state, Integrator::RK4, f.world.dt);
+    auto speed = [&] {
+      double sum = 0;
+      for (int q = 0; q < kNumPoints; ++q) sum += s.state().v()[q];
+      return sum / kNumPoints;
+    };
+    ASSERT_TRUE(s.advanceTo(0.4).ran());
+    const double before = speed();
+    ASSERT_TRUE(s.advanceTo(1.0).ran());
+    const double measured = (speed() - before) / 0.6;
+    const double expected = g * (std::sin(angle) - muD * std::cos(angle));
+    std::printf("at 1.2 times the friction angle: %.4g m/s^2, expected %.4g\n", measured, expected);
+    EXPECT_NEAR(measured / expected, 1, 0.03);
+  }
+}
+
+// Dropped from above onto a sphere's top, the jelly comes to rest on it, its centroid over the
+// centre, none of it sunk far into the sphere. (The sphere is wider than the jelly is high, so
+// that resting on its top is stable, as for a block on a ball: radius above half the height.)
+TEST(Obstacles, AJellyDroppedOnASphereEndsRestingOnItCentred) {
+  const WorldFile f = scene(
+      "gravity = [0, 0, -9.81]\ndt = 0.0002\n[jelly]\noffset = [0, 0, 0.4]\ndamping = 1\n"
+      "[[sphere]]\ncentre = [0, 0, -1.5]\nradius = 1\nstiffness = 5000\ndamping = 10\n"
+      "friction_static = 0.8\nfriction_dynamic = 0.6\n");
+  const Model model = makeModel(f.world, f.state);
+  Simulation s(model, f.state, Integrator::RK4, f.world.dt);
+  const RunOutcome outcome = s.advanceTo(4.0);
+  ASSERT_TRUE(outcome.ran()) << "step " << outcome.step << ": " << outcome.reason;
+  const Vec3 c = centroid(s.state());
+  double fastest = 0, deepest = 0;
+  Vec3 velocity;  // the centroid's
+  for (int q = 0; q < kNumPoints; ++q) velocity += (1.0 / kNumPoints) * load(s.state().v(), q);
+  for (int q = 0; q < kNumPoints; ++q) {
+    fastest = std::max(fastest, length(load(s.state().v(), q)));
+    deepest = std::max(deepest, 1 - length(load(s.state().p(), q) - Vec3{0, 0, -1.5}));
+  }
+  std::printf("centroid (%.3g, %.3g, %.3g), fastest point %.3g m/s, deepest %.3g m\n", c.x, c.y,
+              c.z, fastest, deepest);
+  EXPECT_NEAR(c.x, 0, 1e-3);
+  EXPECT_NEAR(c.y, 0, 1e-3);
+  EXPECT_GT(c.z, -0.5) << "above the sphere's top";
+  EXPECT_LT(length(velocity), 0.005) << "at rest";
+  EXPECT_LT(fastest, 0.1) << "quivering at most";
+  EXPECT_LT(deepest, 0.01);
+}
+
+struct Malformed {
+  const char* text;
+  const char* message;  // what the error line must hold, "test.toml:LINE: ... (key)"
+};
+
+const Malformed kMalformed[] = {
+    {"gravity = [0, 0]\n", "test.toml:1: expected 3 numbers [x, y, z] (gravity)"},
+    {"gravity = [0, 0, \"down\"]\n", "test.toml:1: expected 3 numbers [x, y, z] (gravity)"},
+    {"gravty = [0, 0, -9.8]\n", "test.toml:1: unknown key (gravty)"},
+    {"dt = 0\n", "test.toml:1: must be above 0 (dt)"},
+    {"dt = -1e-3\n", "test.toml:1: must be above 0 (dt)"},
+    {"dt = \"fast\"\n", "test.toml:1: expected a number (dt)"},
+    {"dt = inf\n", "test.toml:1: is not finite (dt)"},
+    {"n = 0\n", "test.toml:1: expected a whole number from 1 to 1000000 (n)"},
+    {"n = 2.5\n", "test.toml:1: expected a whole number from 1 to 1000000 (n)"},
+    {"integrator = \"RK5\"\n", "test.toml:1: expected one of"},
+    {"world = \"world/none.w\"\n", "world/none.w: cannot open: No such file or directory (world)"},
+    {"world = 3\n", "test.toml:1: expected the path of a course world (.w) (world)"},
+    {"[jelly]\nmass = 0\n", "test.toml:2: must be above 0 (jelly.mass)"},
+    {"[jelly]\nmass = 1\ntotal_mass = 2\n",
+     "test.toml:3: give mass (per point) or total_mass, not both (jelly.total_mass)"},
+    {"[jelly]\nstiffness = -5\n", "test.toml:2: must be at least 0 (jelly.stiffness)"},
+    {"[jelly]\ncolour = 1\n", "test.toml:2: unknown key (jelly.colour)"},
+    {"jelly = 5\n", "test.toml:1: expected a table (jelly)"},
+    {"[[sphere]]\ncentre = [0, 0, 0]\n", "test.toml:1: missing (sphere[1].radius)"},
+    {"[[sphere]]\ncentre = [0, 0, 0]\nradius = -1\n",
+     "test.toml:3: must be above 0 (sphere[1].radius)"},
+    {"[[sphere]]\ncentre = [0, 0, 0]\nradus = 1\n", "test.toml:3: unknown key (sphere[1].radus)"},
+    {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 0.2\nfriction_dynamic = 0.5\n",
+     "test.toml:5: must be at most friction_static (dynamic friction is the weaker) "
+     "(sphere[1].friction_dynamic)"},
+    {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_speed = 0\n",
+     "test.toml:4: must be above 0 (sphere[1].friction_speed)"},
+    {"[[box]]\nlower = [0, 0, 0]\nupper = [1, 0, 1]\n",
+     "test.toml:3: must be above lower on every axis (box[1].upper)"},
+    {"[[plane]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n",
+     "test.toml:3: must not be zero (plane[1].normal)"},
+    {"sphere = 1\n", "test.toml:1: expected [[sphere]] tables (sphere)"},
+    {"[[pin]]\ni = [0, 8]\n",
+     "test.toml:2: expected [first, last], whole numbers with 0 <= first <= last <= 7 (pin[1].i)"},
+    {"[[pin]]\ni = [3, 1]\n", "(pin[1].i)"},
+    {"[[pin]]\nlower = [5, 5, 5]\n", "test.toml:1: pins no point (pin[1])"},
+    {"[[pin]]\ni = [0, 0]\nlower = [0, 0, 0]\n",
+     "give lattice ranges (i, j, k) or a region (lower, upper), not both"},
+    {"[bounds]\npresent = 1\n", "test.toml:2: expected true or false (bounds.present)"},
+    {"[bounds]\nlower = [0, 0, 0]\nupper = [-1, 1, 1]\n",
+     "test.toml:3: must be above lower on every axis (bounds.upper)"},
+    {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
+    {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
+    {"[jelly\n", "test.toml:1:"},
+};
+
+TEST(SceneFile, RefusesEveryMalformedSceneWithItsLineAndKey) {
+  int refused = 0;
+  for (const Malformed& m : kMalformed) {
+    try {
+      scene(m.text);
+      ADD_FAILURE() << "accepted:\n" << m.text;
+    } catch (const WorldFileError& e) {
+      EXPECT_NE(std::string(e.what()).find(m.message), std::string::npos)
+          << "for:\n"
+          << m.text << "got: " << e.what() << "\nwanted: " << m.message;
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+      ++refused;
+    }
+  }
+  EXPECT_GE(refused, 30);
+}
+
+TEST(SceneFile, TheCommandLineRefusesABadSceneWithExitStatusTwo) {
+  const std::string dir = test::makeTempDir();
+  test::writeText(dir + "/bad.toml", "[[sphere]]\ncentre = [0, 0, 0]\nradius = 0\n");
+  const test::CommandResult r = test::runJello("--headless '" + dir + "/bad.toml'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.toml:3: must be above 0 (sphere[1].radius)"), std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace jello
