@@ -14,6 +14,9 @@
 
 #include "app/commandline.h"
 #include "app/worldbuilder.h"
+#include "physics.h"
+#include "scene/reader.h"
+#include "scene/spec.h"
 #include "world.h"
 
 namespace jello::fuzz {
@@ -174,6 +177,34 @@ void checkCommandLine(const std::uint8_t* data, std::size_t size) {
     checkCommand(command);
   else if (status != 0 && status != kExitBadInput)
     failed("exit status", std::to_string(status));
+}
+
+// An accepted scene keeps the reader's promises: the world is one formatWorld can write, every
+// obstacle can be simulated, pins are sorted, distinct points, and the forces are finite.
+void checkSceneText(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const Outcome o = outcomeOf([&] { return parseScene(text, "fuzzed.toml", ""); });
+  if (!o.accepted) return;
+  const WorldFile& file = o.world;
+  if (auto problem = findWorldProblem(file.world, file.state))
+    failed("an accepted scene has a problem", problem->what);
+  const SceneSpec& spec = *file.world.scene;
+  for (const Obstacle& ob : spec.obstacles) {
+    const Friction& f = ob.friction;
+    if (!(ob.spring.k >= 0 && ob.spring.d >= 0 && f.muDynamic >= 0 && f.muDynamic <= f.muStatic &&
+          f.speed > 0))
+      failed("an accepted obstacle", obstacleText(ob));
+    if (ob.shape == ObstacleShape::Sphere && !(ob.radius > 0)) failed("a sphere", obstacleText(ob));
+  }
+  for (std::size_t i = 0; i < spec.pinned.size(); ++i)
+    if (spec.pinned[i] < 0 || spec.pinned[i] >= kNumPoints ||
+        (i > 0 && spec.pinned[i] <= spec.pinned[i - 1]))
+      failed("pins", "not sorted, distinct points");
+  const Model model = makeModel(file.world, file.state);
+  std::vector<double> force(kNumCoords);
+  computeForces(model, file.state.p(), file.state.v(), force.data());
+  for (double f : force)
+    if (std::isnan(f)) failed("a scene's forces", "not a number");
 }
 
 }  // namespace jello::fuzz

@@ -23,4 +23,9 @@ void checkFieldExpression(const std::uint8_t* data, std::size_t size);
 // range, names not empty). Aborts on any other outcome, an exception among them.
 void checkCommandLine(const std::uint8_t* data, std::size_t size);
 
+// A scene file's text (parsed from memory, with `world` keys relative to the current folder):
+// refused with a one-line WorldFileError, or accepted as a scene whose every value the reader
+// promises (obstacles, pins, a world that can be written) and whose forces are numbers.
+void checkSceneText(const std::uint8_t* data, std::size_t size);
+
 }  // namespace jello::fuzz

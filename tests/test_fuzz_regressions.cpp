@@ -52,6 +52,14 @@ TEST(FuzzRegressions, FieldExpressionInputs) {
   replay(files, fuzz::checkFieldExpression);
 }
 
+TEST(FuzzRegressions, SceneReaderInputs) {
+  std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "scene-");
+  std::vector<std::string> seeds = filesIn(std::string(JELLO_SOURCE_DIR) + "/scenes", "");
+  files.insert(files.end(), seeds.begin(), seeds.end());
+  ASSERT_GE(files.size(), 5u);
+  replay(files, fuzz::checkSceneText);
+}
+
 TEST(FuzzRegressions, CommandLineInputs) {
   std::vector<std::string> files = filesIn(test::dataPath("fuzz"), "cli-");
   std::vector<std::string> seeds = filesIn(std::string(JELLO_FUZZ_SEEDS) + "/commandline", "");
