@@ -328,13 +328,15 @@ void readObstacles(const Reader& r, const toml::table& root, ContactSpring sprin
   const std::pair<const char*, ObstacleShape> kinds[] = {{"sphere", ObstacleShape::Sphere},
                                                          {"box", ObstacleShape::Box},
                                                          {"plane", ObstacleShape::HalfSpace}};
-  for (const auto& [key, shape] : kinds)
-    r.tables(root, key, [&](const toml::table& t, const std::string& path) {
+  for (const auto& kind : kinds) {
+    const ObstacleShape shape = kind.second;  // (a structured binding cannot be captured in C++17)
+    r.tables(root, kind.first, [&](const toml::table& t, const std::string& path) {
       if (spec->obstacles.size() >= static_cast<std::size_t>(kMostObstacles))
         r.fail(t, path.substr(0, path.size() - 1),
                "more than " + std::to_string(kMostObstacles) + " obstacles");
       spec->obstacles.push_back(readObstacle(r, t, path, shape, spring));
     });
+  }
 }
 
 toml::table parseToml(std::string_view text, const std::string& name) {

@@ -390,13 +390,13 @@ std::string integratorHelp() {
   return help;
 }
 
-OdeSystem jelloSystem(const Model& model, const Pull* pull, Team* team) {
+OdeSystem jelloSystem(const JelloInputs& inputs) {
   OdeSystem system;
-  system.derivative = [&model, pull, team](const double* y, double* dydt) {
-    derivative(model, y, dydt, pull, team);
+  system.derivative = [&inputs](const double* y, double* dydt) {
+    derivative(*inputs.model, y, dydt, inputs.pull, inputs.team);
   };
-  system.jacobian = [&model, pull](const double* y, AccelerationJacobian& jacobian) {
-    accelerationJacobian(model, y, y + kNumCoords, pull, &jacobian);
+  system.jacobian = [&inputs](const double* y, AccelerationJacobian& jacobian) {
+    accelerationJacobian(*inputs.model, y, y + kNumCoords, inputs.pull, &jacobian);
   };
   return system;
 }
@@ -412,7 +412,8 @@ Stepper& Stepper::operator=(Stepper&&) noexcept = default;
 const StepStats& Stepper::stats() const { return work_->stats; }
 
 void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
-  step(jelloSystem(model, pull, team), state.y, dt);
+  const JelloInputs inputs{&model, pull, team};
+  step(jelloSystem(inputs), state.y, dt);
 }
 
 void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {

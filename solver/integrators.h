@@ -28,9 +28,17 @@ struct OdeSystem {
   std::function<void(const double* y, AccelerationJacobian& jacobian)> jacobian;
 };
 
-// The jello's system: derivative() and accelerationJacobian() of `model`, with `pull` if any;
-// its derivatives shared by `team`'s two threads when there is one (physics.h's derivative).
-OdeSystem jelloSystem(const Model& model, const Pull* pull = nullptr, Team* team = nullptr);
+// What the jello's system is made of: the model, the user's pull if any, and the team whose two
+// threads share each derivative (physics.h's derivative) if any.
+struct JelloInputs {
+  const Model* model;
+  const Pull* pull = nullptr;
+  Team* team = nullptr;
+};
+// The jello's system: derivative() and accelerationJacobian() of `inputs`, which it references:
+// they must outlive it. (One reference fits std::function's own storage: a step allocates
+// nothing.)
+OdeSystem jelloSystem(const JelloInputs& inputs);
 
 // Error control of RK45: a substep is accepted when its estimated local error, per component,
 // is within atol + rtol * |y| in the root-mean-square sense.
