@@ -13,6 +13,7 @@
 
 #include "app/bench.h"
 #include "app/commandline.h"
+#include "app/export.h"
 #include "app/headless.h"
 #include "app/report.h"
 #include "app/stability.h"
@@ -37,8 +38,26 @@ jello::Outcome check(const jello::JelloCommand& c) {
   return jello::succeeded();
 }
 
+// A headless run with its observers: the frames (rendered by the pictures' library, loaded
+// here when `graphics` is not yet) and the meshes of --export.
+jello::Outcome runHeadlessWithOutputs(const jello::JelloCommand& c,
+                                      const jello::GraphicsApi* graphics) {
+  std::unique_ptr<jello::FrameObserver> frames, meshes;
+  if (!c.pictures.framesDir.empty()) {
+    std::string why;
+    if (!graphics) graphics = jello::loadGraphics(&why);
+    if (!graphics) return jello::failed("--frames: " + why + ", so it cannot render frames");
+    frames = graphics->makeOffscreenFrames(c.pictures);
+  }
+  if (!c.pictures.exportDir.empty())
+    meshes = jello::makeMeshExport(c.pictures, c.run.worldPath, c.pictures.framesDir);
+  std::unique_ptr<jello::FrameObserver> both =
+      jello::bothObservers(std::move(frames), std::move(meshes));
+  return jello::runHeadless(c.run, both.get());
+}
+
 // A window where a display exists; otherwise headless, with frames where asked (or, when no
-// --headless was given, into a new folder of animation/).
+// --headless was given, into a new folder of animation/), and the meshes of --export.
 jello::Outcome simulate(jello::JelloCommand c) {
   // The pictures' library is loaded only from here on, and only for a window or frames.
   const jello::GraphicsApi* graphics = nullptr;
@@ -47,25 +66,22 @@ jello::Outcome simulate(jello::JelloCommand c) {
     graphics = jello::loadGraphics(&why);
     if (graphics && graphics->displayAvailable(&why)) {
       if (!c.framesGiven) c.pictures.framesDir = "animation";
-      c.pictures.saveFromStart = c.framesGiven;
+      c.pictures.framesNamed = c.framesGiven;
+      // --export records from the start as --frames does: the user named a folder to fill.
+      c.pictures.saveFromStart = c.framesGiven || !c.pictures.exportDir.empty();
       return graphics->runViewer(c.run, c.pictures);
     }
     if (!graphics) {
       jello::printError(why + "; running headless");
-      return jello::runHeadless(c.run);
+      c.pictures.framesDir.clear();  // no frames without the library; the meshes need none
+      return runHeadlessWithOutputs(c, nullptr);
     }
     if (!c.framesGiven)
       c.pictures.framesDir = jello::makeNewFolder("animation", jello::worldStem(c.run.worldPath));
     jello::printError("no display (" + why + "); running headless, writing frames into " +
                       c.pictures.framesDir + "/");
   }
-  std::unique_ptr<jello::FrameObserver> frames;
-  if (!c.pictures.framesDir.empty()) {
-    if (!graphics) graphics = jello::loadGraphics(&why);
-    if (!graphics) return jello::failed("--frames: " + why + ", so it cannot render frames");
-    frames = graphics->makeOffscreenFrames(c.pictures);
-  }
-  return jello::runHeadless(c.run, frames.get());
+  return runHeadlessWithOutputs(c, graphics);
 }
 
 // The exit status of an outcome, its line printed on stderr.

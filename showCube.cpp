@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "app/surface.h"
+
 namespace jello {
 
 namespace {
@@ -21,7 +23,6 @@ namespace {
 constexpr float kBackground[3] = {0.5f, 0.5f, 0.5f};
 constexpr float kJelly[3] = {0.86f, 0.18f, 0.24f};
 constexpr double kNear = 0.05, kFar = 100.0;
-constexpr int kLast = kLatticeSize - 1;
 
 // The spring kinds' line colours, shown by their legend too.
 constexpr float kStructuralColour[3] = {0.2f, 0.9f, 0.95f};
@@ -69,40 +70,6 @@ constexpr unsigned char kFont[64][kGlyphHeight] = {
 };
 
 void vertex(Vec3 p) { glVertex3d(p.x, p.y, p.z); }
-
-// Lattice point on face (axis, side) at face coordinates (u, v): index[axis] = side,
-// index[axis+1] = u, index[axis+2] = v (cyclically), so that d/du x d/dv points along +axis.
-int facePoint(int axis, int side, int u, int v) {
-  int index[3];
-  index[axis] = side;
-  index[(axis + 1) % 3] = u;
-  index[(axis + 2) % 3] = v;
-  return pointIndex(index[0], index[1], index[2]);
-}
-
-// The two triangles of every surface quad, wound counter-clockwise seen from outside the
-// cube at rest. Built once: the surface's connectivity never changes.
-const std::vector<std::array<int, 3>>& surfaceTriangles() {
-  static const std::vector<std::array<int, 3>> triangles = [] {
-    std::vector<std::array<int, 3>> t;
-    for (int axis = 0; axis < 3; ++axis)
-      for (int side : {0, kLast})
-        for (int u = 0; u < kLast; ++u)
-          for (int v = 0; v < kLast; ++v) {
-            int a = facePoint(axis, side, u, v), b = facePoint(axis, side, u + 1, v);
-            int c = facePoint(axis, side, u + 1, v + 1), d = facePoint(axis, side, u, v + 1);
-            if (side == kLast) {
-              t.push_back({a, b, c});
-              t.push_back({a, c, d});
-            } else {
-              t.push_back({a, c, b});
-              t.push_back({a, d, c});
-            }
-          }
-    return t;
-  }();
-  return triangles;
-}
 
 // 1, 2 or 5 times a power of ten, at least x: a legend scale that does not flicker with every
 // small change of the largest value.
@@ -260,17 +227,9 @@ void drawBox() {
 }
 
 void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe) {
-  const auto& triangles = surfaceTriangles();
-  std::vector<Vec3> normal(kNumPoints);
-  for (const auto& t : triangles) {
-    Vec3 a = load(state.p(), t[0]), b = load(state.p(), t[1]), c = load(state.p(), t[2]);
-    Vec3 n = cross(b - a, c - a);  // area-weighted
-    for (int q : t) normal[q] += n;
-  }
-  for (Vec3& n : normal) {
-    double len;
-    n = direction(n, &len);
-  }
+  // The surface mesh (app/surface.h: no GL, so that what is drawn can also be written as files).
+  const std::vector<Triangle>& triangles = surfaceTriangles();
+  const std::vector<Vec3> normal = surfaceNormals(state.p());
   glEnable(GL_LIGHTING);
   glShadeModel(GL_SMOOTH);
   glPolygonMode(GL_FRONT_AND_BACK, wireframe ? GL_LINE : GL_FILL);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "app/export.h"
 #include "core/output.h"
 #include "solver/integrators.h"
 
@@ -42,7 +43,7 @@ namespace {
 
 // The values of the options that are checked or converted after parsing, and which were given.
 struct Given {
-  std::string integrator, dump, kernel, size, integrators;
+  std::string integrator, dump, kernel, size, integrators, exportFormat;
   long long steps = 0;
   double time = 0, dt = 0;
   int n = 0;
@@ -51,6 +52,7 @@ struct Given {
   CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
       *checkOption;
   CLI::Option *jsonOption, *mapOption, *benchOption, *fpsOption, *worldOption;
+  CLI::Option *exportOption, *exportFormatOption;
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
@@ -115,7 +117,17 @@ void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
       ->transform(wholeNumber(1, kMaxFrames));
   g->sizeOption = app.add_option("--size", g->size, "picture size WxH (default 640x480)");
   app.add_flag("--overwrite", c->pictures.overwrite,
-               "replace the frames (or the report) a folder already holds");
+               "replace the frames, the exported meshes (or the report) a folder already holds");
+  g->exportOption =
+      app.add_option("--export", c->pictures.exportDir,
+                     "write the cube's surface mesh with normals at every saved frame's step: "
+                     "DIR/0000.obj, 0001.obj, ... numbered like the frames (metres, z up)")
+          ->type_name("DIR")
+          ->check(kNonEmpty);
+  g->exportFormatOption =
+      app.add_option("--export-format", g->exportFormat,
+                     "with --export: obj (Wavefront, the default) or ply (ASCII)")
+          ->type_name("FORMAT");
 }
 
 void addAnalysisOptions(CLI::App& app, JelloCommand* c, Given* g) {
@@ -174,8 +186,12 @@ int chooseMode(const Given& g, JelloCommand* c) {
   if (*g.integratorsOption && !*g.reportOption) return refuse("--integrators goes with --report");
   if (*g.toleranceOption && !*g.reportOption) return refuse("--tolerance goes with --report");
   const bool analysis = *g.benchOption || *g.checkOption || *g.reportOption;
-  if (*g.fpsOption && (analysis || (c->headless && !*g.framesOption)))
-    return refuse("--fps goes with --frames (or the window, where space records)");
+  if (*g.fpsOption && (analysis || (c->headless && !*g.framesOption && !*g.exportOption)))
+    return refuse("--fps goes with --frames or --export (or the window, where space records)");
+  if (*g.exportOption && analysis)
+    return refuse(
+        "--export goes with a run (headless or the window), not with --check, --report "
+        "or --bench");
   if (*g.benchOption)
     c->mode = JelloCommand::Mode::Bench;
   else if (*g.checkOption)
@@ -211,6 +227,10 @@ int readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.dumpOption) run.dumpPath = g.dump;
   run.worldDefaulted = g.worldOption->count() == 0;
   c->framesGiven = g.framesOption->count() > 0;
+  if (*g.exportFormatOption && !*g.exportOption)
+    return refuse("--export-format goes with --export DIR");
+  if (*g.exportFormatOption && !parseMeshFormat(g.exportFormat, &c->pictures.exportFormat))
+    return refuse("--export-format: unknown format '" + g.exportFormat + "', expected obj or ply");
   if (*g.sizeOption && !parseSize(g.size, &c->pictures.width, &c->pictures.height))
     return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) +
                   " to " + std::to_string(kMaxPictureSize) + " pixels, got '" + g.size + "'");

@@ -162,12 +162,12 @@ void printSummary(const RunOptions& options, const World& world, long long steps
 }
 
 // Said when --max-frames stopped the saving before the run's end.
-std::string frameLimitNote(const PictureOptions& pictures, double savedUntil, double runTime) {
+std::string frameLimitNote(const FrameObserver& frames, double savedUntil, double runTime) {
+  const int most = frames.options().maxFrames;
   return textf(
-      "note: %s/: saving stopped at %d frames, the most --max-frames %d allows, at %.3g s of the "
+      "note: %s: saving stopped at %d frames, the most --max-frames %d allows, at %.3g s of the "
       "run's %.3g s; raise --max-frames (up to %d) or lower --fps to save the whole run",
-      pictures.framesDir.c_str(), pictures.maxFrames, pictures.maxFrames, savedUntil, runTime,
-      kMaxFrames);
+      frames.folders().c_str(), most, most, savedUntil, runTime, kMaxFrames);
 }
 
 }  // namespace
@@ -223,7 +223,9 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
   RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();
-  const auto showFrame = [&] { frames->frame(model, simulation.state()); };
+  const auto showFrame = [&] {
+    frames->frame(model, simulation.state(), simulation.step(), simulation.time());
+  };
   if (frames) {
     if (Outcome begun = observed([&] {
           frames->begin();
@@ -257,7 +259,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   progress.finish(steps);
   printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
   if (frames && !frames->wantsMore() && lastFrame < steps)
-    printError(frameLimitNote(frames->options(), lastFrame * world.dt, steps * world.dt));
+    printError(frameLimitNote(*frames, lastFrame * world.dt, steps * world.dt));
 
   if (options.dumpPath) {
     try {

@@ -39,8 +39,8 @@ constexpr long long kDefaultFrames = 300;
 // 100 us an RK4 step it would take most of an hour, which nobody asks for without saying so.
 constexpr long long kMostDefaultSteps = 30'000'000;
 
-// Receives the frames to save: the state at step 0 and at the steps of a FrameClock
-// (pictures.h) made from the observer's options.
+// Receives the frames to save (pictures, meshes): the state at step 0 and at the steps of a
+// FrameClock (pictures.h) made from the observer's options.
 class FrameObserver {
  public:
   virtual ~FrameObserver() = default;
@@ -49,13 +49,16 @@ class FrameObserver {
   // Called once before the first frame (e.g. to claim the output folder). Throws
   // std::runtime_error with a one-line message to stop the run with exit status 2.
   virtual void begin() {}
-  // Throws std::runtime_error like begin().
-  virtual void frame(const Model& model, const State& state) = 0;
+  // The state of the run's step `step`, `time` simulated seconds in. Throws
+  // std::runtime_error like begin().
+  virtual void frame(const Model& model, const State& state, long long step, double time) = 0;
   // False once the observer wants no more frames (the run itself goes on).
   virtual bool wantsMore() const = 0;
   virtual int framesDone() const = 0;
   // How the summary line names the frames, e.g. "300 frames in animation/".
   virtual std::string describe() const = 0;
+  // The folders written, as messages name them: "animation/", "animation/ and meshes/".
+  virtual std::string folders() const = 0;
 };
 
 // --time T runs stepsForTime(T, dt) steps (simulation.h), whole ones: it ends at or just past T.

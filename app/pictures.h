@@ -1,5 +1,6 @@
 // app/pictures.h: what a command asks of pictures (--frames, --size, --max-frames,
-// --overwrite), apart from how they are made (graphics/, a library loaded only when needed).
+// --overwrite) and of the meshes saved with them (--export, --export-format), apart from how
+// pictures are made (graphics/, a library loaded only when needed).
 #pragma once
 
 #include <algorithm>
@@ -16,13 +17,19 @@ constexpr int kMaxFrames = 10000;   // what four digits can number
 constexpr double kDefaultFps = 30;  // saved frames per simulated second
 constexpr double kMaxFps = 1e6;
 
+// The file format of exported surface meshes (app/export.h).
+enum class MeshFormat { Obj, Ply };
+
 // How pictures are made and kept.
 struct PictureOptions {
   std::string framesDir;  // where frames go
+  std::string exportDir;  // where the surface meshes go (--export); "" for none
+  MeshFormat exportFormat = MeshFormat::Obj;
   int maxFrames = kDefaultMaxFrames;
   double fps = kDefaultFps;  // saved frames per simulated second; 0: one per drawn frame (n steps)
   bool overwrite = false;
-  bool saveFromStart = false;  // the window saves from its first frame (--frames was given)
+  bool framesNamed = false;    // --frames DIR was given: the window's recording goes there
+  bool saveFromStart = false;  // the window saves from its first frame (--frames or --export)
   int width = 640, height = 480;
 };
 

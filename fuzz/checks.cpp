@@ -142,6 +142,8 @@ void checkCommand(const JelloCommand& c) {
   if (p.maxFrames < 1 || p.maxFrames > kMaxFrames)
     failed("--max-frames", std::to_string(p.maxFrames));
   if (c.framesGiven && p.framesDir.empty()) failed("--frames", "empty");
+  if (!p.exportDir.empty() && c.mode != JelloCommand::Mode::Run)
+    failed("--export", "with --check, --report or --bench");
   if (c.mode == JelloCommand::Mode::Report &&
       (c.report.dir.empty() || !positive(c.report.time) || !positive(c.report.visualTolerance)))
     failed("--report", c.report.dir);

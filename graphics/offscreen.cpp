@@ -82,14 +82,15 @@ class OffscreenFrames : public FrameObserver {
 
   const PictureOptions& options() const override { return options_; }
   void begin() override { sequence_.open(); }
-  void frame(const Model& model, const State& state) override {
+  void frame(const Model& model, const State& state, long long, double) override {
     sequence_.save(renderer_.render(model, state, camera_, draw_));
   }
   bool wantsMore() const override { return !sequence_.full(); }
   int framesDone() const override { return sequence_.written(); }
   std::string describe() const override {
-    return std::to_string(sequence_.written()) + " frames in " + sequence_.dir() + "/";
+    return std::to_string(sequence_.written()) + " frames in " + folders();
   }
+  std::string folders() const override { return sequence_.dir() + "/"; }
 
  private:
   PictureOptions options_;

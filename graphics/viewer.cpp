@@ -21,6 +21,7 @@
 #include <string>
 #include <thread>
 
+#include "app/export.h"
 #include "app/stability.h"
 #include "core/output.h"
 #include "forces/term.h"
@@ -72,10 +73,13 @@ struct Viewer {
   std::future<std::string> diagnosis;  // of the divergence, while it is under way
   std::string divergedAt;              // "diverged at step N (t=T s): reason"
 
-  // Recording (space, --frames): frames at the steps of `clock`, as a headless run saves them.
+  // Recording (space, --frames, --export): frames at the steps of `clock`, as a headless run
+  // saves them, and with --export each frame's surface mesh, numbered as the frame.
   PictureOptions pictures;
+  std::string worldPath;                  // names the world in the meshes' headers
   std::string stem;                       // names new folders of recordings
   std::unique_ptr<FrameSequence> frames;  // the latest recording's
+  std::unique_ptr<MeshSequence> meshes;   // its meshes, with --export
   int recordings = 0;
   FrameClock clock;
   bool saving = false;
@@ -114,6 +118,7 @@ struct Viewer {
         lastGood(file.state),
         n(file.world.n),
         pictures(pictures),
+        worldPath(run.worldPath),
         stem(worldStem(run.worldPath)),
         clock(pictures.fps, file.world.n, file.world.dt),
         width(pictures.width),
@@ -202,27 +207,57 @@ void drawOverlay(const Viewer& v) {
 // recording that reached --max-frames, a new folder in the first one.
 std::string newRecordingFolder(const Viewer& v) {
   const std::string& first = v.pictures.framesDir;
-  const bool named = v.pictures.saveFromStart;  // --frames DIR was given
+  const bool named = v.pictures.framesNamed;
   if (v.recordings == 0 && (named || v.pictures.overwrite || countFrames(first) == 0)) return first;
   return makeNewFolder(first, v.stem);
+}
+
+// The folder of a new recording's meshes: the frames' folder when --export names the frames'
+// first folder (the names do not clash: .jpg and .obj or .ply); otherwise --export DIR, and
+// after a recording that reached --max-frames, a new folder in it, as for frames.
+std::string newExportFolder(const Viewer& v, const std::string& framesFolder) {
+  const std::string& first = v.pictures.exportDir;
+  if (sameFile(first, v.pictures.framesDir)) return framesFolder;
+  if (v.recordings == 0) return first;
+  return makeNewFolder(first, v.stem);
+}
+
+// The folders a recording writes into, as its messages name them.
+std::string recordingFolders(const Viewer& v) {
+  std::string text = "frames into " + v.frames->dir() + "/";
+  if (v.meshes) text += " and meshes into " + v.meshes->dir() + "/";
+  return text;
+}
+
+// A new recording: its frames' folder and, with --export, its meshes' folder, both claimed (or
+// neither, when one cannot be). Throws OutputError or FrameError, saying why not.
+void startNewRecording(Viewer& v) {
+  // The claims on the last recording's folders go first: makeNewFolder claims the parents.
+  v.frames.reset();
+  v.meshes.reset();
+  auto frames = std::make_unique<FrameSequence>(newRecordingFolder(v), v.pictures.maxFrames,
+                                                v.pictures.overwrite);
+  frames->open();
+  std::unique_ptr<MeshSequence> meshes;
+  if (!v.pictures.exportDir.empty()) {
+    meshes = std::make_unique<MeshSequence>(newExportFolder(v, frames->dir()),
+                                            v.pictures.exportFormat, v.pictures.overwrite);
+    meshes->open(frames->dir());
+  }
+  v.frames = std::move(frames);
+  v.meshes = std::move(meshes);
+  ++v.recordings;
 }
 
 // Starts or resumes saving; a recording that is full gives way to one in a new folder. Throws
 // OutputError or FrameError, saying why not.
 void startRecording(Viewer& v) {
-  if (!v.frames || v.frames->full()) {
-    v.frames.reset();  // its claim on its folder goes first: makeNewFolder claims the parent
-    auto frames = std::make_unique<FrameSequence>(newRecordingFolder(v), v.pictures.maxFrames,
-                                                  v.pictures.overwrite);
-    frames->open();
-    v.frames = std::move(frames);
-    ++v.recordings;
-  }
+  if (!v.frames || v.frames->full()) startNewRecording(v);
   v.saving = true;
   // This drawn frame is saved first, unless it already was.
   const long long step = v.simulation.step();
   v.nextFrame = step == v.savedStep ? v.clock.nextAfter(step) : step;
-  v.say("saving frames into " + v.frames->dir() + "/ (space stops)");
+  v.say("saving " + recordingFolders(v) + " (space stops)");
 }
 
 void toggleSaving(Viewer& v) {
@@ -244,8 +279,11 @@ void toggleSaving(Viewer& v) {
 void saveFrame(Viewer& v) {
   v.savedStep = v.simulation.step();
   v.nextFrame = v.clock.nextAfter(v.savedStep);
+  const int index = v.frames->written();  // the mesh is named as its frame
   try {
     v.frames->save(readWindow(v.width, v.height));
+    if (v.meshes)
+      v.meshes->write(index, v.state().p(), MeshStamp{v.worldPath, v.savedStep, v.time()});
   } catch (const std::exception& e) {
     v.saving = false;
     v.say(e.what());

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "app/export.h"
 #include "graphics/frames.h"
 #include "graphics/image.h"
 #include "graphics/offscreen.h"
@@ -338,6 +339,35 @@ TEST(CliFrames, HittingMaxFramesIsSaidNamingTheOption) {
   for (const char* part : {"f/: saving stopped at 4 frames", "--max-frames 4",
                            "at 0.3 s of the run's 1 s", "raise --max-frames", "--fps"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing from: " << r.err;
+  test::removeTree(dir);
+}
+
+// The meshes of --export are written at the frames' steps and numbered as the frames, in one
+// folder shared with them (the names do not clash) or in folders of their own.
+TEST(CliFrames, ExportedMeshesAreNamedLikeTheFramesOfTheSameSteps) {
+  std::string dir = test::makeTempDir();
+  const std::string world = " '" + dataPath("rotate.w") + "'";
+  test::CommandResult r =
+      test::runJello("--headless --time 0.1 --size 64x48 --frames both --export both" + world, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("4 frames in both/; 4 meshes (OBJ) in both/"), std::string::npos) << r.out;
+  EXPECT_EQ(countFrames(dir + "/both"), 4);
+  EXPECT_EQ(countMeshes(dir + "/both"), 4);
+  for (const char* name : {"0000.jpg", "0000.obj", "0003.jpg", "0003.obj"}) {
+    struct stat info;
+    EXPECT_EQ(::stat((dir + "/both/" + name).c_str(), &info), 0) << name;
+  }
+  r = test::runJello(
+      "--headless --time 1 --max-frames 5 --size 64x48 --frames f --export m" + world, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(countFrames(dir + "/f"), 5);
+  EXPECT_EQ(countMeshes(dir + "/m"), 5);
+  EXPECT_NE(r.err.find("note: f/ and m/: saving stopped at 5 frames"), std::string::npos) << r.err;
+  // Without a display, the frames go into a folder jello names; the meshes where --export says.
+  r = test::runJello("--time 0.1 --size 64x48 --export m2" + world, dir, "env -u DISPLAY");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 4);
+  EXPECT_EQ(countMeshes(dir + "/m2"), 4);
   test::removeTree(dir);
 }
 

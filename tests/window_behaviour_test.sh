@@ -12,17 +12,24 @@ said() { grep -qF -- "$1" err; }
 
 # --time: the window pauses on the run's last frame and says so; its frames are the headless
 # run's, frame for frame, though it draws every 10 steps (a frame is due every 66 or 67, and a
-# step late is a picture 0.2 apart); p runs on.
+# step late is a picture 0.2 apart); so are the meshes of --export, written beside them (the
+# same folder: .jpg and .obj) and byte for byte the headless run's; p runs on.
 mkdir "$work/time" && cd "$work/time"
-start_jello --time 0.2 --n 10 --frames window "$moving"
+meshes_in() { ls "$1" 2>/dev/null | grep -c '^[0-9][0-9][0-9][0-9]\.obj$'; }
+start_jello --time 0.2 --n 10 --frames window --export window "$moving"
 wait_for 'said "reached --time 0.2 s (step 400): paused"' || fail "--time 0.2 did not end the run"
 sleep 0.5  # the last frame is saved when it is drawn, just after the end is said
 ended=$(frames_in window)
 sleep 1
 [ "$(frames_in window)" -eq "$ended" ] || fail "frames kept coming after the run's end"
-"$jello" --headless --time 0.2 --frames headless "$moving" >/dev/null 2>>err || fail "headless run"
+"$jello" --headless --time 0.2 --frames headless --export headless "$moving" >/dev/null 2>>err ||
+  fail "headless run"
 [ "$ended" -eq "$(frames_in headless)" ] ||
   fail "the window saved $ended frames, the headless run $(frames_in headless)"
+[ "$(meshes_in window)" -eq "$ended" ] || fail "the window saved $(meshes_in window) meshes"
+for mesh in headless/*.obj; do
+  cmp -s "window/${mesh#headless/}" "$mesh" || fail "window/${mesh#headless/} is not $mesh"
+done
 for frame in headless/*.jpg; do
   "$difference" "window/${frame#headless/}" "$frame" 0.1 >/dev/null ||
     fail "window/${frame#headless/} is not the headless run's frame"
