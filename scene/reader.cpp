@@ -203,8 +203,11 @@ Friction readFriction(const Reader& r, const toml::table& t, const std::string& 
 // lower < upper on every axis.
 void checkBox(const Reader& r, const toml::table& t, const std::string& path, Vec3 lower,
               Vec3 upper) {
-  if (!(lower.x < upper.x && lower.y < upper.y && lower.z < upper.z))
-    r.fail(*t.get("upper"), path + "upper", "must be above lower on every axis");
+  if (lower.x < upper.x && lower.y < upper.y && lower.z < upper.z) return;
+  // The bounds may give one corner alone, the other being the course's.
+  const char* key = t.get("upper") ? "upper" : "lower";
+  r.fail(*t.get(key), path + key,
+         key[0] == 'u' ? "must be above lower on every axis" : "must be below upper on every axis");
 }
 
 Obstacle readObstacle(const Reader& r, const toml::table& t, const std::string& path,

@@ -299,6 +299,8 @@ const Malformed kMalformed[] = {
     {"[bounds]\npresent = 1\n", "test.toml:2: expected true or false (bounds.present)"},
     {"[bounds]\nlower = [0, 0, 0]\nupper = [-1, 1, 1]\n",
      "test.toml:3: must be above lower on every axis (bounds.upper)"},
+    {"[bounds]\nlower = [3, 0, 0]\n",
+     "test.toml:2: must be below upper on every axis (bounds.lower)"},
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
     {"[jelly\n", "test.toml:1:"},
