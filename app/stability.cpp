@@ -155,6 +155,14 @@ double gershgorinLowerBound(const SparseMatrix& m) {
   return (diagonal - off).minCoeff();
 }
 
+// Adds a mode to `out`, with its highest frequency and damping range.
+void addMode(const Mode& mode, Linearisation* out) {
+  out->modes.push_back(mode);
+  out->highestFrequency = std::max(out->highestFrequency, std::sqrt(mode.omegaSquared));
+  out->lowestDamping = std::min(out->lowestDamping, mode.damping);
+  out->highestDamping = std::max(out->highestDamping, mode.damping);
+}
+
 // Adds the eigenpairs' modes to `out` (omega^2 above `rigid`; the damping rate along each
 // eigenvector), with their highest frequency and damping range.
 void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid,
@@ -163,11 +171,7 @@ void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid
     const double w2 = pairs.values[i];
     if (w2 <= rigid) continue;
     const Eigen::VectorXd phi = pairs.vectors.col(i);
-    const double c = phi.dot(damping * phi);
-    out->modes.push_back({w2, c});
-    out->highestFrequency = std::max(out->highestFrequency, std::sqrt(w2));
-    out->lowestDamping = std::min(out->lowestDamping, c);
-    out->highestDamping = std::max(out->highestDamping, c);
+    addMode({w2, phi.dot(damping * phi)}, out);
   }
 }
 
@@ -236,6 +240,19 @@ Linearisation lineariseDensely(const SparseMatrix& stiffness, const SparseMatrix
   return out;
 }
 
+// Every mode, as the dense analysis took them, from the eigenvalues of the stiffness and the
+// damping's quotients along its eigenvectors (mirrorSymmetricQuotients).
+Linearisation everyMode(const Eigenquotients& all) {
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * all.values.cwiseAbs().maxCoeff();
+  out.growing = static_cast<int>((all.values.array() < -rigid).count());
+  for (Eigen::Index i = 0; i < all.values.size(); ++i)
+    if (all.values[i] > rigid) addMode({all.values[i], all.quotients[i]}, &out);
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
 }  // namespace
 
 Linearisation linearise(const Model& model, const State& state) {
@@ -249,6 +266,12 @@ Linearisation linearise(const Model& model, const State& state) {
   }
   const SparseMatrix stiffness = negatedSymmetricPart(jacobian.dAdp);
   const SparseMatrix damping = negatedSymmetricPart(jacobian.dAdv);
+  // A state the three mirrors of the lattice leave as it is (the rest lattice moved, or scaled
+  // about its centre as tornado.w's compressed cube): every mode, exactly, from 8 blocks, in
+  // less time than the Lanczos iterations. (A degenerate mode's eigenvector is any in its
+  // space, here one within a block, as the dense solver's was one of its own choosing.)
+  if (std::optional<Eigenquotients> all = mirrorSymmetricQuotients(stiffness, damping))
+    return everyMode(*all);
   std::optional<Linearisation> ends = lineariseByLanczos(stiffness, damping);
   return ends ? *ends : lineariseDensely(stiffness, damping);
 }
