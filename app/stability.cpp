@@ -187,26 +187,20 @@ std::optional<AboveShift> slowestModes(const SparseMatrix& stiffness, double rig
   }
 }
 
-// Explicit Euler's limit for a mode is about (c + kHorizonRate) / omega^2, so a
-// mode inside the spectrum damped less for its speed than those at its ends can
-// set it: a strained corner's (the tension across its springs is stiffness no
-// damper follows), the cube's on deep contact springs (damped less for their
-// stiffness than the lattice's). Such a mode lives where a point's own
-// stiffness is damped least for its size, and is found from there
-// (addInteriorModes):
-//  - a start vector weighted to those points (localHotspots);
-//  - kRitzSteps Lanczos steps from it: a Ritz pair inside the spectrum is a
-//  mixture of the
-//    eigenvectors near its value, dominated by those the start weighs most, so
-//    one whose own Euler limit is below the modes' points at the frequency of
-//    such a mode;
-//  - the kWindowModes eigenpairs nearest that frequency, exactly
-//  (shift-invert), added to the
-//    modes; again while a Ritz pair outside the windows promises a lower limit
-//    than the modes' (at most kMostWindows).
-// Every mode added is an eigenpair of the stiffness, so a limit only comes
-// nearer the one of every mode. The windows, the costly part, open only where a
-// Ritz pair promises a lower limit.
+// Explicit Euler's limit for a mode is about (c + kHorizonRate) / omega^2, so a mode inside the
+// spectrum damped less for its speed than those at its ends can set it: a strained corner's (the
+// tension across its springs is stiffness no damper follows), the cube's on deep contact springs
+// (damped less for their stiffness than the lattice's springs). Such a mode lives where a point's
+// own stiffness is damped least for its size, and is looked for from there (addInteriorModes):
+//  - a start vector weighted to those points (hotspotStart);
+//  - kRitzSteps Lanczos steps from it: a Ritz pair inside the spectrum is a mixture of the
+//    eigenvectors near its value, dominated by those the start weighs most, so one whose own Euler
+//    limit is below the modes' points at the frequency of such a mode;
+//  - the kWindowModes eigenpairs nearest that frequency, exactly (shift-invert), added to the
+//    modes; again while a Ritz pair outside the windows promises a lower limit than the modes'
+//    (at most kMostWindows).
+// Every mode added is an eigenpair of the stiffness, so a limit only comes nearer the one of every
+// mode. The windows, the costly part, open only where a Ritz pair promises a lower limit.
 constexpr double kHorizonRate = 2 * 0.6931471805599453 / kHorizon;  // 1/s: 2 ln 2 / kHorizon
 constexpr int kRitzSteps = 100;
 constexpr int kWindowModes = 24;
@@ -214,9 +208,8 @@ constexpr int kMostWindows = 2;
 constexpr double kHotspotPower = 4;  // how sharply the start favours the least damped points
 constexpr double kStartNoise = 0.3;  // a little of every coordinate, in case no point stands out
 
-// Each point's direction in which its own 3x3 stiffness block is damped least
-// for its size, and that ratio (s: (c + kHorizonRate) / k along it); infinite
-// where the block is not positive.
+// Each point's direction in which its own 3x3 stiffness block is damped least for its size, and
+// that ratio (s: (c + kHorizonRate) / k along it); infinite where the block is not positive.
 struct LocalRatios {
   std::vector<double> ratio;
   std::vector<Eigen::Vector3d> direction;
@@ -231,8 +224,7 @@ LocalRatios localRatios(const SparseMatrix& stiffness, const SparseMatrix& dampi
         k(a, b) = stiffness.coeff(coordIndex(q, a), coordIndex(q, b));
         c(a, b) = damping.coeff(coordIndex(q, a), coordIndex(q, b));
       }
-    // k v = s (c + rate) v: the largest s is the least damped direction, 1 / s
-    // its ratio.
+    // k v = s (c + rate) v: the largest s is the least damped direction, 1 / s its ratio.
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> local(
         k, c + kHorizonRate * Eigen::Matrix3d::Identity());
     if (local.info() != Eigen::Success || !(local.eigenvalues()[2] > 0)) continue;
@@ -242,8 +234,8 @@ LocalRatios localRatios(const SparseMatrix& stiffness, const SparseMatrix& dampi
   return out;
 }
 
-// The start vector: each point's least damped direction weighted by (best ratio
-// / its ratio)^kHotspotPower, plus kStartNoise of a fixed pseudo-random vector.
+// The start vector: each point's least damped direction weighted by (best ratio / its
+// ratio)^kHotspotPower, plus kStartNoise of a fixed pseudo-random vector.
 Eigen::VectorXd hotspotStart(const SparseMatrix& stiffness, const SparseMatrix& damping) {
   const LocalRatios local = localRatios(stiffness, damping);
   const double best = *std::min_element(local.ratio.begin(), local.ratio.end());
@@ -261,9 +253,9 @@ Eigen::VectorXd hotspotStart(const SparseMatrix& stiffness, const SparseMatrix& 
   return start + kStartNoise * noise.normalized();
 }
 
-// The Ritz pairs from hotspotStart. The converged ones (residual within
-// Spectra's tolerance) are eigenpairs: added to `out` as modes. The others are
-// returned as (their Euler limit in s, omega^2 in 1/s^2), lowest limit first.
+// The Ritz pairs from hotspotStart. The converged ones (residual within Spectra's tolerance) are
+// eigenpairs: added to `out` as modes. The others are returned as (their Euler limit in s, omega^2
+// in 1/s^2), lowest limit first.
 std::vector<std::pair<double, double>> ritzCandidates(const SparseMatrix& stiffness,
                                                       const SparseMatrix& damping, double rigid,
                                                       Linearisation* out) {
@@ -284,8 +276,8 @@ std::vector<std::pair<double, double>> ritzCandidates(const SparseMatrix& stiffn
   return candidates;
 }
 
-// Adds the modes inside the spectrum that may set explicit Euler's limit (see
-// above) to `out`, which holds those at its ends; `rigid` as there.
+// Adds the modes inside the spectrum that may set explicit Euler's limit (see above) to `out`,
+// which holds those at its ends; `rigid` as there.
 void addInteriorModes(const SparseMatrix& stiffness, const SparseMatrix& damping, double rigid,
                       Linearisation* out) {
   const std::vector<std::pair<double, double>> candidates =
