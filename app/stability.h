@@ -52,9 +52,12 @@ struct Linearisation {
 };
 
 // The modes of the world linearised at `state` (its springs, and the collision springs active
-// there), at both ends of the spectrum. Takes about 0.2 s: Lanczos iterations on the sparse
-// 1536 x 1536 stiffness, one of them on its factorisation; a dense eigensolver (seconds) only when
-// an iteration does not converge.
+// there): every one when the lattice's mirrors leave the state as it is (the 8 mirror blocks,
+// about 0.1 s); otherwise those at both ends of the spectrum and those inside it that may set
+// explicit Euler's limit (see above). Takes about 0.2-0.3 s then: Lanczos iterations on the
+// sparse 1536 x 1536 stiffness, one of them on its factorisation, and one more factorisation
+// where a window inside the spectrum opens; a dense eigensolver (seconds) only when an iteration
+// does not converge.
 Linearisation linearise(const Model& model, const State& state);
 
 // The modes of the rest lattice (restState()) for the world's springs, all of them. At rest every
