@@ -88,6 +88,49 @@ std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shi
   return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
 }
 
+std::optional<Eigenpairs> eigenpairsNear(const SparseMatrix& matrix, double shift, int count) {
+  JELLO_ASSERT(count > 0 && count < matrix.rows());
+  ShiftSolve inverse(matrix);
+  Spectra::SymEigsShiftSolver<ShiftSolve> solver(inverse, count, basisSize(count, matrix.rows()),
+                                                 shift);
+  if (!inverse.factorised()) return std::nullopt;
+  solver.init();
+  // 1 / (lambda - shift) is largest in size for the eigenvalues nearest the shift, on both sides.
+  solver.compute(Spectra::SortRule::LargestMagn, kMaxRestarts, kTolerance);
+  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
+  return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
+}
+
+RitzPairs ritzPairs(const SparseMatrix& matrix, const Eigen::VectorXd& start, int steps) {
+  JELLO_ASSERT(steps > 0 && steps < matrix.rows() && start.size() == matrix.rows());
+  Eigen::MatrixXd basis(matrix.rows(), steps);
+  Eigen::VectorXd diagonal(steps), offDiagonal(steps);
+  basis.col(0) = start.normalized();
+  int size = 0;
+  while (size < steps) {
+    const int j = size++;
+    Eigen::VectorXd next = matrix * basis.col(j);
+    diagonal[j] = basis.col(j).dot(next);
+    // Against every earlier vector, twice: the basis stays orthonormal to rounding, so no
+    // spurious copies of converged values appear.
+    for (int pass = 0; pass < 2; ++pass)
+      next.noalias() -= basis.leftCols(size) * (basis.leftCols(size).transpose() * next);
+    offDiagonal[j] = next.norm();
+    // Zero: the space is invariant, every Ritz pair exact.
+    if (!(offDiagonal[j] > kTolerance * std::fabs(diagonal[j]))) break;
+    if (size < steps) basis.col(size) = next / offDiagonal[j];
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal;
+  tridiagonal.computeFromTridiagonal(diagonal.head(size), offDiagonal.head(size - 1));
+  // Each Ritz vector's residual is the last off-diagonal times its last coordinate.
+  const Eigen::VectorXd residuals =
+      (offDiagonal[size - 1] * tridiagonal.eigenvectors().row(size - 1)).cwiseAbs().transpose();
+  // Ascending from the solver: reversed, as every Eigenpairs.
+  return RitzPairs{{tridiagonal.eigenvalues().reverse(),
+                    basis.leftCols(size) * tridiagonal.eigenvectors().rowwise().reverse()},
+                   residuals.reverse()};
+}
+
 namespace {
 
 constexpr int kMirrors = 3;                         // x, y, z
@@ -155,21 +198,61 @@ Eigen::MatrixXd projected(const SparseMatrix& matrix, const std::vector<MirrorVe
 
 }  // namespace
 
-Eigen::VectorXd mirrorSymmetricEigenvalues(const SparseMatrix& matrix) {
+namespace {
+
+// The 8 sectors' blocks of `matrix` and their bases; nothing when the blocks do not hold all of
+// the matrix (it does not commute with the mirrors: the squared norms differ by more than
+// kCommuting of the matrix's, where rounding alone leaves about 1e-16).
+constexpr double kCommuting = 1e-12;
+struct MirrorBlocks {
+  std::array<std::vector<MirrorVector>, kSectors> bases;
+  std::array<Eigen::MatrixXd, kSectors> blocks;
+};
+std::optional<MirrorBlocks> mirrorBlocks(const SparseMatrix& matrix) {
   JELLO_ASSERT(matrix.rows() == kNumCoords && matrix.cols() == kNumCoords);
-  Eigen::VectorXd values(kNumCoords);
+  MirrorBlocks out;
   double inBlocks = 0;
   for (int s = 0; s < kSectors; ++s) {
-    const Eigen::MatrixXd block = projected(matrix, mirrorBasis(s));
-    inBlocks += block.squaredNorm();
-    values.segment(s * kSectorSize, kSectorSize) =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(block, Eigen::EigenvaluesOnly).eigenvalues();
+    out.bases[s] = mirrorBasis(s);
+    out.blocks[s] = projected(matrix, out.bases[s]);
+    inBlocks += out.blocks[s].squaredNorm();
   }
-  // The basis is orthonormal and the matrix commutes with the mirrors: the blocks hold all of it
-  // (the squared norms agree to rounding).
-  JELLO_ASSERT(std::fabs(matrix.squaredNorm() - inBlocks) <= 1e-10 * matrix.squaredNorm());
+  // The basis is orthonormal: the blocks hold all of a commuting matrix.
+  if (std::fabs(matrix.squaredNorm() - inBlocks) > kCommuting * matrix.squaredNorm())
+    return std::nullopt;
+  return out;
+}
+
+}  // namespace
+
+Eigen::VectorXd mirrorSymmetricEigenvalues(const SparseMatrix& matrix) {
+  const std::optional<MirrorBlocks> split = mirrorBlocks(matrix);
+  JELLO_ASSERT(split);
+  Eigen::VectorXd values(kNumCoords);
+  for (int s = 0; s < kSectors; ++s) {
+    values.segment(s * kSectorSize, kSectorSize) =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(split->blocks[s], Eigen::EigenvaluesOnly)
+            .eigenvalues();
+  }
   std::sort(values.begin(), values.end());
   return values;
+}
+
+std::optional<Eigenquotients> mirrorSymmetricQuotients(const SparseMatrix& matrix,
+                                                       const SparseMatrix& other) {
+  const std::optional<MirrorBlocks> split = mirrorBlocks(matrix), otherSplit = mirrorBlocks(other);
+  if (!split || !otherSplit) return std::nullopt;
+  Eigenquotients out{Eigen::VectorXd(kNumCoords), Eigen::VectorXd(kNumCoords)};
+  for (int s = 0; s < kSectors; ++s) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> block(split->blocks[s]);
+    const Eigen::MatrixXd& y = block.eigenvectors();
+    // y's columns are unit vectors of the sector's orthonormal basis: their quotients of `other`
+    // are those of its block.
+    out.values.segment(s * kSectorSize, kSectorSize) = block.eigenvalues();
+    out.quotients.segment(s * kSectorSize, kSectorSize) =
+        (y.transpose() * otherSplit->blocks[s] * y).diagonal();
+  }
+  return out;
 }
 
 }  // namespace jello

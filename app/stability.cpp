@@ -155,6 +155,14 @@ double gershgorinLowerBound(const SparseMatrix& m) {
   return (diagonal - off).minCoeff();
 }
 
+// Adds a mode to `out`, with its highest frequency and damping range.
+void addMode(const Mode& mode, Linearisation* out) {
+  out->modes.push_back(mode);
+  out->highestFrequency = std::max(out->highestFrequency, std::sqrt(mode.omegaSquared));
+  out->lowestDamping = std::min(out->lowestDamping, mode.damping);
+  out->highestDamping = std::max(out->highestDamping, mode.damping);
+}
+
 // Adds the eigenpairs' modes to `out` (omega^2 above `rigid`; the damping rate along each
 // eigenvector), with their highest frequency and damping range.
 void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid,
@@ -163,11 +171,7 @@ void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid
     const double w2 = pairs.values[i];
     if (w2 <= rigid) continue;
     const Eigen::VectorXd phi = pairs.vectors.col(i);
-    const double c = phi.dot(damping * phi);
-    out->modes.push_back({w2, c});
-    out->highestFrequency = std::max(out->highestFrequency, std::sqrt(w2));
-    out->lowestDamping = std::min(out->lowestDamping, c);
-    out->highestDamping = std::max(out->highestDamping, c);
+    addMode({w2, phi.dot(damping * phi)}, out);
   }
 }
 
@@ -183,13 +187,126 @@ std::optional<AboveShift> slowestModes(const SparseMatrix& stiffness, double rig
   }
 }
 
-// The modes at both ends of the spectrum, by Lanczos iterations. The fastest set the limits of the
-// integrators stable on undamped modes (RK4's is 2.83 / omega), and every limit where the modes
-// are damped alike. Explicit Euler's and the midpoint rule's follow each mode's damping ratio
-// (Euler's is about c / omega^2), so a mode damped less for its speed than the rest sets them:
-// the slowest, at a wall (the cube on its contact springs) or in a collapsed cube; one in the
-// middle of the spectrum (a strained corner's) is missed (stability.h). Nothing when an
-// iteration does not converge.
+// Explicit Euler's limit for a mode is about (c + kHorizonRate) / omega^2, so a mode inside the
+// spectrum damped less for its speed than those at its ends can set it: a strained corner's (the
+// tension across its springs is stiffness no damper follows), the cube's on deep contact springs
+// (damped less for their stiffness than the lattice's springs). Such a mode lives where a point's
+// own stiffness is damped least for its size, and is looked for from there (addInteriorModes):
+//  - a start vector weighted to those points (hotspotStart);
+//  - kRitzSteps Lanczos steps from it: a Ritz pair inside the spectrum is a mixture of the
+//    eigenvectors near its value, dominated by those the start weighs most, so one whose own Euler
+//    limit is below the modes' points at the frequency of such a mode;
+//  - the kWindowModes eigenpairs nearest that frequency, exactly (shift-invert), added to the
+//    modes; again while a Ritz pair outside the windows promises a lower limit than the modes'
+//    (at most kMostWindows).
+// Every mode added is an eigenpair of the stiffness, so a limit only comes nearer the one of every
+// mode. The windows, the costly part, open only where a Ritz pair promises a lower limit.
+constexpr double kHorizonRate = 2 * 0.6931471805599453 / kHorizon;  // 1/s: 2 ln 2 / kHorizon
+constexpr int kRitzSteps = 100;
+constexpr int kWindowModes = 24;
+constexpr int kMostWindows = 2;
+constexpr double kHotspotPower = 4;  // how sharply the start favours the least damped points
+constexpr double kStartNoise = 0.3;  // a little of every coordinate, in case no point stands out
+
+// Each point's direction in which its own 3x3 stiffness block is damped least for its size, and
+// that ratio (s: (c + kHorizonRate) / k along it); infinite where the block is not positive.
+struct LocalRatios {
+  std::vector<double> ratio;
+  std::vector<Eigen::Vector3d> direction;
+};
+LocalRatios localRatios(const SparseMatrix& stiffness, const SparseMatrix& damping) {
+  LocalRatios out{std::vector<double>(kNumPoints, INFINITY),
+                  std::vector<Eigen::Vector3d>(kNumPoints, Eigen::Vector3d::Zero())};
+  for (int q = 0; q < kNumPoints; ++q) {
+    Eigen::Matrix3d k, c;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        k(a, b) = stiffness.coeff(coordIndex(q, a), coordIndex(q, b));
+        c(a, b) = damping.coeff(coordIndex(q, a), coordIndex(q, b));
+      }
+    // k v = s (c + rate) v: the largest s is the least damped direction, 1 / s its ratio.
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> local(
+        k, c + kHorizonRate * Eigen::Matrix3d::Identity());
+    if (local.info() != Eigen::Success || !(local.eigenvalues()[2] > 0)) continue;
+    out.ratio[q] = 1 / local.eigenvalues()[2];
+    out.direction[q] = local.eigenvectors().col(2).normalized();
+  }
+  return out;
+}
+
+// The start vector: each point's least damped direction weighted by (best ratio / its
+// ratio)^kHotspotPower, plus kStartNoise of a fixed pseudo-random vector.
+Eigen::VectorXd hotspotStart(const SparseMatrix& stiffness, const SparseMatrix& damping) {
+  const LocalRatios local = localRatios(stiffness, damping);
+  const double best = *std::min_element(local.ratio.begin(), local.ratio.end());
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(kNumCoords), noise(kNumCoords);
+  for (int q = 0; q < kNumPoints && std::isfinite(best); ++q)
+    for (int a = 0; a < 3; ++a)
+      start[coordIndex(q, a)] =
+          std::pow(best / local.ratio[q], kHotspotPower) * local.direction[q][a];
+  unsigned seed = 12345;  // a linear congruential generator: the same vector every run
+  for (Eigen::Index i = 0; i < noise.size(); ++i) {
+    seed = seed * 1103515245u + 12345u;
+    noise[i] = double(seed >> 8) / double(1u << 24) - 0.5;
+  }
+  if (start.norm() > 0) start.normalize();
+  return start + kStartNoise * noise.normalized();
+}
+
+// The Ritz pairs from hotspotStart. The converged ones (residual within Spectra's tolerance) are
+// eigenpairs: added to `out` as modes. The others are returned as (their Euler limit in s, omega^2
+// in 1/s^2), lowest limit first.
+std::vector<std::pair<double, double>> ritzCandidates(const SparseMatrix& stiffness,
+                                                      const SparseMatrix& damping, double rigid,
+                                                      Linearisation* out) {
+  constexpr double kConverged = 1e-10;  // residual / |omega^2|
+  const RitzPairs ritz = ritzPairs(stiffness, hotspotStart(stiffness, damping), kRitzSteps);
+  std::vector<std::pair<double, double>> candidates;
+  for (Eigen::Index i = 0; i < ritz.pairs.values.size(); ++i) {
+    const double w2 = ritz.pairs.values[i];
+    if (w2 <= rigid) continue;
+    if (ritz.residuals[i] <= kConverged * w2) {
+      addModes({ritz.pairs.values.segment(i, 1), ritz.pairs.vectors.col(i)}, damping, rigid, out);
+      continue;
+    }
+    const Eigen::VectorXd y = ritz.pairs.vectors.col(i);
+    candidates.push_back({criticalStep(Integrator::Euler, {Mode{w2, y.dot(damping * y)}}), w2});
+  }
+  std::sort(candidates.begin(), candidates.end());
+  return candidates;
+}
+
+// Adds the modes inside the spectrum that may set explicit Euler's limit (see above) to `out`,
+// which holds those at its ends; `rigid` as there.
+void addInteriorModes(const SparseMatrix& stiffness, const SparseMatrix& damping, double rigid,
+                      Linearisation* out) {
+  const std::vector<std::pair<double, double>> candidates =
+      ritzCandidates(stiffness, damping, rigid, out);
+  double limit = criticalStep(Integrator::Euler, out->modes);
+  std::vector<std::pair<double, double>> windows;  // omega^2 from, to
+  for (const auto& [h, w2] : candidates) {
+    // Lowest first: once one promises no lower limit, none after it does.
+    if (h >= limit || static_cast<int>(windows.size()) == kMostWindows) break;
+    // Its eigenvectors, the window's modes, are known already.
+    if (std::any_of(windows.begin(), windows.end(), [w2 = w2](const auto& window) {
+          return window.first <= w2 && w2 <= window.second;
+        }))
+      continue;
+    const std::optional<Eigenpairs> window = eigenpairsNear(stiffness, w2, kWindowModes);
+    if (!window) continue;
+    windows.push_back({window->values.minCoeff(), window->values.maxCoeff()});
+    addModes(*window, damping, rigid, out);
+    limit = criticalStep(Integrator::Euler, out->modes);
+  }
+}
+
+// The modes at both ends of the spectrum, by Lanczos iterations, and those inside it that may set
+// explicit Euler's limit. The fastest set the limits of the integrators stable on undamped modes
+// (RK4's is 2.83 / omega), and every limit where the modes are damped alike. Explicit Euler's and
+// the midpoint rule's follow each mode's damping ratio (Euler's is about c / omega^2), so a mode
+// damped less for its speed than the rest sets them: the slowest, at a wall (the cube on its
+// contact springs) or in a collapsed cube; one in the middle of the spectrum (a strained
+// corner's: addInteriorModes). Nothing when an iteration does not converge.
 std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
                                                 const SparseMatrix& damping) {
   std::optional<Eigenpairs> fast = largestEigenpairs(stiffness, kFastModes);
@@ -219,6 +336,7 @@ std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
   addModes(*fast, damping, rigid, &out);
   addModes(slow->pairs, damping, rigid, &out);
   out.growing = slow->below;
+  if (!out.modes.empty()) addInteriorModes(stiffness, damping, rigid, &out);
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;
 }
@@ -236,6 +354,19 @@ Linearisation lineariseDensely(const SparseMatrix& stiffness, const SparseMatrix
   return out;
 }
 
+// Every mode, as the dense analysis took them, from the eigenvalues of the stiffness and the
+// damping's quotients along its eigenvectors (mirrorSymmetricQuotients).
+Linearisation everyMode(const Eigenquotients& all) {
+  Linearisation out;
+  out.lowestDamping = INFINITY;
+  const double rigid = kRigid * all.values.cwiseAbs().maxCoeff();
+  out.growing = static_cast<int>((all.values.array() < -rigid).count());
+  for (Eigen::Index i = 0; i < all.values.size(); ++i)
+    if (all.values[i] > rigid) addMode({all.values[i], all.quotients[i]}, &out);
+  if (out.modes.empty()) out.lowestDamping = 0;
+  return out;
+}
+
 }  // namespace
 
 Linearisation linearise(const Model& model, const State& state) {
@@ -249,6 +380,12 @@ Linearisation linearise(const Model& model, const State& state) {
   }
   const SparseMatrix stiffness = negatedSymmetricPart(jacobian.dAdp);
   const SparseMatrix damping = negatedSymmetricPart(jacobian.dAdv);
+  // A state the three mirrors of the lattice leave as it is (the rest lattice moved, or scaled
+  // about its centre as tornado.w's compressed cube): every mode, exactly, from 8 blocks, in
+  // less time than the Lanczos iterations. (A degenerate mode's eigenvector is any in its
+  // space, here one within a block, as the dense solver's was one of its own choosing.)
+  if (std::optional<Eigenquotients> all = mirrorSymmetricQuotients(stiffness, damping))
+    return everyMode(*all);
   std::optional<Linearisation> ends = lineariseByLanczos(stiffness, damping);
   return ends ? *ends : lineariseDensely(stiffness, damping);
 }

@@ -7,12 +7,15 @@
 // x'' = -omega^2 x - c x'. An integrator is stable at dt when the one-step map of every such
 // mode, computed by running the integrator itself on it, has spectral radius at most 1.
 //
-// Of a general state only the modes at both ends of the spectrum are found (Lanczos iterations,
+// Of a general state the modes at both ends of the spectrum are found (Lanczos iterations,
 // spectrum.h): the fastest set every limit of the course and stress worlds but explicit Euler's,
 // whose limit is about c / omega^2 for each mode, and the slowest set that one at a wall or in a
 // collapsed cube. A mode in the middle of the spectrum damped less for its speed than all of
-// those (a strained corner's, a contact's) is not found, and the Euler limit is then higher than
-// the dense analysis's of every mode was, by up to 33% on the course's worlds
+// those (a strained corner's, the cube's on deep contact springs) is looked for from the points
+// whose own stiffness is damped least for its size (a short Lanczos run from there, then a
+// shift-invert window where its Ritz pairs promise a lower Euler limit). A state the lattice's
+// mirrors leave as it is (a compressed cube) has every mode found, from the mirror blocks. Every
+// limit is then within 2% of the dense analysis's of every mode on the course and stress worlds
 // (tests/test_stability_limits.cpp).
 #pragma once
 
@@ -37,8 +40,9 @@ struct Linearisation {
   // False when the forces' derivatives at the state hold a number that is not finite: no
   // eigen-analysis is run on such a matrix, and there are no modes.
   bool finite = true;
-  // Oscillating modes (omega > 0): the fastest (24, more when they end in a cluster) and the 24
-  // slowest of a state (linearise), every one of the rest lattice (lineariseAtRest).
+  // Oscillating modes (omega > 0): the fastest (24, more when they end in a cluster), the 24
+  // slowest and those of the windows inside the spectrum of a state (linearise), every one of
+  // the rest lattice (lineariseAtRest) and of a state the mirrors leave as it is.
   std::vector<Mode> modes;
   // Modes with negative stiffness (buckling): physical, not numerical. All of them, counted by
   // the inertia of a factorisation, not only those in `modes`.
@@ -48,9 +52,12 @@ struct Linearisation {
 };
 
 // The modes of the world linearised at `state` (its springs, and the collision springs active
-// there), at both ends of the spectrum. Takes about 0.2 s: Lanczos iterations on the sparse
-// 1536 x 1536 stiffness, one of them on its factorisation; a dense eigensolver (seconds) only when
-// an iteration does not converge.
+// there): every one when the lattice's mirrors leave the state as it is (the 8 mirror blocks,
+// about 0.1 s); otherwise those at both ends of the spectrum and those inside it that may set
+// explicit Euler's limit (see above). Takes about 0.2-0.3 s then: Lanczos iterations on the
+// sparse 1536 x 1536 stiffness, one of them on its factorisation, and one more factorisation
+// where a window inside the spectrum opens; a dense eigensolver (seconds) only when an iteration
+// does not converge.
 Linearisation linearise(const Model& model, const State& state);
 
 // The modes of the rest lattice (restState()) for the world's springs, all of them. At rest every
