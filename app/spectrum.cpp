@@ -73,7 +73,12 @@ std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int coun
   return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
 }
 
-std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count) {
+namespace {
+
+// Shift-and-invert Lanczos: the `count` eigenpairs whose 1 / (lambda - shift) comes first by
+// `rule`, and the number of negative pivots of matrix - shift I (its eigenvalues below the shift).
+std::optional<AboveShift> shiftInverted(const SparseMatrix& matrix, double shift, int count,
+                                        Spectra::SortRule rule) {
   JELLO_ASSERT(count > 0 && count < matrix.rows());
   ShiftSolve inverse(matrix);
   // The solver's constructor factorises matrix - shift I.
@@ -81,24 +86,25 @@ std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shi
                                                  shift);
   if (!inverse.factorised()) return std::nullopt;
   solver.init();
-  // 1 / (lambda - shift) is largest for the eigenvalues just above the shift; those below it
-  // give negative values, left out.
-  solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
+  solver.compute(rule, kMaxRestarts, kTolerance);
   if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
   return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
 }
 
+}  // namespace
+
+std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shift, int count) {
+  // 1 / (lambda - shift) is largest for the eigenvalues just above the shift; those below it
+  // give negative values, left out.
+  return shiftInverted(matrix, shift, count, Spectra::SortRule::LargestAlge);
+}
+
 std::optional<Eigenpairs> eigenpairsNear(const SparseMatrix& matrix, double shift, int count) {
-  JELLO_ASSERT(count > 0 && count < matrix.rows());
-  ShiftSolve inverse(matrix);
-  Spectra::SymEigsShiftSolver<ShiftSolve> solver(inverse, count, basisSize(count, matrix.rows()),
-                                                 shift);
-  if (!inverse.factorised()) return std::nullopt;
-  solver.init();
   // 1 / (lambda - shift) is largest in size for the eigenvalues nearest the shift, on both sides.
-  solver.compute(Spectra::SortRule::LargestMagn, kMaxRestarts, kTolerance);
-  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
-  return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
+  std::optional<AboveShift> near =
+      shiftInverted(matrix, shift, count, Spectra::SortRule::LargestMagn);
+  if (!near) return std::nullopt;
+  return std::move(near->pairs);
 }
 
 RitzPairs ritzPairs(const SparseMatrix& matrix, const Eigen::VectorXd& start, int steps) {

@@ -326,7 +326,7 @@ TEST(SceneFile, RefusesEveryMalformedSceneWithItsLineAndKey) {
 TEST(SceneFile, TheCommandLineRefusesABadSceneWithExitStatusTwo) {
   const std::string dir = test::makeTempDir();
   test::writeText(dir + "/bad.toml", "[[sphere]]\ncentre = [0, 0, 0]\nradius = 0\n");
-  const test::CommandResult r = test::runJello("--headless '" + dir + "/bad.toml'");
+  const test::CommandResult r = test::runJelloArgs({"--headless", dir + "/bad.toml"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("bad.toml:3: must be above 0 (sphere[1].radius)"), std::string::npos)
       << r.err;
