@@ -20,6 +20,30 @@ namespace jello {
 
 namespace {
 
+// `text` in one line: a control character (a quoted TOML key may hold one, and toml++ quotes
+// the character it stopped at) is named instead, as <newline>, <tab> or <U+00NN>. Not through
+// printable(): printError escapes the whole message again, which would double its backslashes.
+std::string oneLine(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u != 0x7f)
+      out += c;
+    else if (c == '\n')
+      out += "<newline>";
+    else if (c == '\t')
+      out += "<tab>";
+    else {
+      static const char kHex[] = "0123456789ABCDEF";
+      out += "<U+00";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+      out += '>';
+    }
+  }
+  return out;
+}
+
 // Reads the scene's keys, refusing any it does not know and any value it cannot use.
 class Reader {
  public:
@@ -28,8 +52,8 @@ class Reader {
 
   [[noreturn]] void fail(const toml::node& at, const std::string& key,
                          const std::string& what) const {
-    throw WorldFileError(name_ + ":" + std::to_string(at.source().begin.line) + ": " + what + " (" +
-                         key + ")");
+    throw WorldFileError(name_ + ":" + std::to_string(at.source().begin.line) + ": " +
+                         oneLine(what) + " (" + oneLine(key) + ")");
   }
 
   // Every key of `table` is one of `known`.
@@ -347,7 +371,7 @@ toml::table parseToml(std::string_view text, const std::string& name) {
     return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     throw WorldFileError(name + ":" + std::to_string(e.source().begin.line) + ": " +
-                         std::string(e.description()) + " (TOML)");
+                         oneLine(e.description()) + " (TOML)");
   }
 }
 

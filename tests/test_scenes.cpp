@@ -304,6 +304,11 @@ const Malformed kMalformed[] = {
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
     {"[jelly\n", "test.toml:1:"},
+    // toml++ quotes the character it stopped at, and a quoted key may hold any: both are named
+    {"n = n\n",
+     "test.toml:1: Error while parsing floating-point: expected 'nan', saw 'n<newline>'"},
+    {"\"a\\nb\" = 1\n", "test.toml:1: unknown key (a<newline>b)"},
+    {"\"a\\u0001\" = 1\n", "test.toml:1: unknown key (a<U+0001>)"},
 };
 
 TEST(SceneFile, RefusesEveryMalformedSceneWithItsLineAndKey) {
