@@ -18,17 +18,17 @@
 
 namespace jello {
 
-struct AccelerationJacobian;  // jacobian.h: only IMPLICIT's step needs its Eigen types
+struct NewtonMatrix;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
   // Writes f(y) into dydt; both hold the same number of doubles.
   std::function<void(const double* y, double* dydt)> derivative;
-  // For y = [p; v]: the Jacobians of the accelerations with respect to p and to v. Needed by
-  // IMPLICIT only.
-  std::function<void(const double* y, AccelerationJacobian& jacobian)> jacobian;
+  // For y = [p; v]: the matrix I - cv dA/dv - cp dA/dp, A the accelerations. Needed by IMPLICIT
+  // only.
+  std::function<void(const double* y, double cv, double cp, NewtonMatrix& matrix)> newtonMatrix;
 };
 
-// The jello's system: derivative() and accelerationJacobian() of `model`, with `pull` if any.
+// The jello's system: derivative() and newtonMatrix() of `model`, with `pull` if any.
 OdeSystem jelloSystem(const Model& model, const Pull* pull = nullptr);
 
 // Error control of RK45: a substep is accepted when its estimated local error, per component,

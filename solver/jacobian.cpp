@@ -30,34 +30,41 @@ std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
   return blocks;
 }
 
-// The shared pattern and the index of every block in it.
-void buildPattern(const std::vector<std::pair<int, int>>& blocks, AccelerationJacobian* out) {
+// The pattern of `blocks` as a sparse matrix of zeros, in either storage order.
+template <class Matrix>
+Matrix patternMatrix(const std::vector<std::pair<int, int>>& blocks) {
   std::vector<Eigen::Triplet<double>> entries;
   for (auto [row, column] : blocks)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
-  SparseMatrix pattern(kNumCoords, kNumCoords);
+  Matrix pattern(kNumCoords, kNumCoords);
   pattern.setFromTriplets(entries.begin(), entries.end());
   pattern.makeCompressed();
-  out->dAdp = pattern;
-  out->dAdv = pattern;
+  return pattern;
+}
+
+// Where every block's entries, and every diagonal entry, are in `pattern`'s value array.
+template <class Matrix>
+void findSlots(const std::vector<std::pair<int, int>>& blocks, const Matrix& pattern,
+               std::vector<BlockSlots>* blockSlots, std::vector<int>* diagonal) {
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
   auto find = [&](int row, int column) {
-    const int* at = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
+    const int major = Matrix::IsRowMajor ? row : column, minor = Matrix::IsRowMajor ? column : row;
+    const int* at = std::lower_bound(inner + outer[major], inner + outer[major + 1], minor);
     return static_cast<int>(at - inner);
   };
-  out->blockSlots.clear();
+  blockSlots->clear();
   for (auto [row, column] : blocks) {
     BlockSlots slots;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         slots[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
-    out->blockSlots.push_back(slots);
+    blockSlots->push_back(slots);
   }
-  out->diagonal.resize(kNumCoords);
-  for (int i = 0; i < kNumCoords; ++i) out->diagonal[i] = find(i, i);
+  diagonal->resize(kNumCoords);
+  for (int i = 0; i < kNumCoords; ++i) (*diagonal)[i] = find(i, i);
 }
 
 void addBlock(double* values, const BlockSlots& slots, const Block3& block, double scale) {
@@ -68,57 +75,105 @@ void accumulate(Block3* sum, const Block3& block) {
   for (int e = 0; e < 9; ++e) sum->m[e] += block.m[e];
 }
 
+// How many blocks the model's pattern has: a matrix whose slots list as many fits it.
+std::size_t patternBlockCount(const Model& model) {
+  std::size_t blocks = kNumPoints;
+  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
+  return blocks;
+}
+
 // Pair blocks go straight into the matrices (their slots in order); point blocks are summed
-// over the terms first, then scaled once, as the point's whole force would be.
+// over the terms first, then written once, as the point's whole force would be. `Write` puts a
+// block's derivatives by position and by velocity, times a sign, at the block's slots:
+// write(slots, dFdp, dFdv, sign).
+template <class Write>
 class Assembly final : public JacobianSink {
  public:
-  Assembly(AccelerationJacobian* out, double perMass) : out_(out), perMass_(perMass) {}
+  Assembly(const std::vector<BlockSlots>& slots, std::vector<Block3>* pointP,
+           std::vector<Block3>* pointV, Write write)
+      : slots_(slots), pointP_(*pointP), pointV_(*pointV), write_(write) {
+    pointP_.assign(kNumPoints, Block3{});
+    pointV_.assign(kNumPoints, Block3{});
+  }
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
-    JELLO_ASSERT(slot_ + 4 + kNumPoints <= out_->blockSlots.size());
-    for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
-      addBlock(out_->dAdp.valuePtr(), out_->blockSlots[slot_], dFdL, sign * perMass_);
-      addBlock(out_->dAdv.valuePtr(), out_->blockSlots[slot_], dFdw, sign * perMass_);
-      ++slot_;
-    }
+    JELLO_ASSERT(slot_ + 4 + kNumPoints <= slots_.size());
+    for (double sign : {1.0, -1.0, -1.0, 1.0})  // aa, ab, ba, bb
+      write_(slots_[slot_++], dFdL, dFdw, sign);
   }
   void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
-    accumulate(&out_->pointP[q], dFdp);
-    accumulate(&out_->pointV[q], dFdv);
+    accumulate(&pointP_[q], dFdp);
+    accumulate(&pointV_[q], dFdv);
   }
   // The diagonal blocks, with the user's pull (a spring to a fixed target: -stiffness I).
   void finish(const Pull* pull) {
     // Every pair term gave as many pairs as it listed when the pattern was built.
-    JELLO_ASSERT(slot_ + kNumPoints == out_->blockSlots.size());
+    JELLO_ASSERT(slot_ + kNumPoints == slots_.size());
     for (int q = 0; q < kNumPoints; ++q, ++slot_) {
-      Block3& blockP = out_->pointP[q];
+      Block3& blockP = pointP_[q];
       if (pull && pull->point == q)
         for (int axis = 0; axis < 3; ++axis) blockP.m[4 * axis] -= pull->stiffness;
-      addBlock(out_->dAdp.valuePtr(), out_->blockSlots[slot_], blockP, perMass_);
-      addBlock(out_->dAdv.valuePtr(), out_->blockSlots[slot_], out_->pointV[q], perMass_);
+      write_(slots_[slot_], blockP, pointV_[q], 1.0);
     }
   }
 
  private:
-  AccelerationJacobian* out_;
-  double perMass_;
+  const std::vector<BlockSlots>& slots_;
+  std::vector<Block3>&pointP_, &pointV_;
+  Write write_;
   std::size_t slot_ = 0;
 };
+
+template <class Write>
+void assemble(const Model& model, const double* p, const double* v, const Pull* pull,
+              const std::vector<BlockSlots>& slots, std::vector<Block3>* pointP,
+              std::vector<Block3>* pointV, Write write) {
+  Assembly<Write> assembly(slots, pointP, pointV, write);
+  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
+  assembly.finish(pull);
+}
 
 }  // namespace
 
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out) {
   // The pattern is made once per model shape; later calls only check that it still fits.
-  std::size_t blocks = kNumPoints;
-  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
-  if (out->blockSlots.size() != blocks) buildPattern(patternBlocks(model), out);
-  std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
-  std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
-  out->pointP.assign(kNumPoints, Block3{});
-  out->pointV.assign(kNumPoints, Block3{});
-  Assembly assembly(out, 1.0 / model.world.mass);
-  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
-  assembly.finish(pull);
+  if (out->blockSlots.size() != patternBlockCount(model)) {
+    const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
+    out->dAdp = patternMatrix<SparseMatrix>(blocks);
+    out->dAdv = out->dAdp;
+    findSlots(blocks, out->dAdp, &out->blockSlots, &out->diagonal);
+  }
+  double* dp = out->dAdp.valuePtr();
+  double* dv = out->dAdv.valuePtr();
+  std::fill(dp, dp + out->dAdp.nonZeros(), 0.0);
+  std::fill(dv, dv + out->dAdv.nonZeros(), 0.0);
+  const double perMass = 1.0 / model.world.mass;
+  assemble(model, p, v, pull, out->blockSlots, &out->pointP, &out->pointV,
+           [dp, dv, perMass](const BlockSlots& slots, const Block3& dFdp, const Block3& dFdv,
+                             double sign) {
+             addBlock(dp, slots, dFdp, sign * perMass);
+             addBlock(dv, slots, dFdv, sign * perMass);
+           });
+}
+
+void newtonMatrix(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
+                  double cp, NewtonMatrix* out) {
+  if (out->blockSlots.size() != patternBlockCount(model)) {
+    const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
+    out->matrix = patternMatrix<RowMajorMatrix>(blocks);
+    findSlots(blocks, out->matrix, &out->blockSlots, &out->diagonal);
+  }
+  double* a = out->matrix.valuePtr();
+  std::fill(a, a + out->matrix.nonZeros(), 0.0);
+  // -cp dA/dp - cv dA/dv, dA = dF / mass.
+  const double byPosition = -cp / model.world.mass, byVelocity = -cv / model.world.mass;
+  assemble(model, p, v, pull, out->blockSlots, &out->pointP, &out->pointV,
+           [a, byPosition, byVelocity](const BlockSlots& slots, const Block3& dFdp,
+                                       const Block3& dFdv, double sign) {
+             for (int e = 0; e < 9; ++e)
+               a[slots[e]] += sign * (byPosition * dFdp.m[e] + byVelocity * dFdv.m[e]);
+           });
+  for (int i : out->diagonal) a[i] += 1;
 }
 
 }  // namespace jello

@@ -39,4 +39,20 @@ struct AccelerationJacobian {
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out);
 
+using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// The Newton matrix of an implicit step, I - cv dA/dv - cp dA/dp (backward Euler: cv = dt,
+// cp = dt^2), assembled from the terms' blocks in one pass: a matrix of its own rather than two
+// Jacobians combined, so that each block is written once. Row-major, because the iterative
+// solver's products run along its rows. Its pattern is AccelerationJacobian's, built on the
+// first assembly; later ones only write values.
+struct NewtonMatrix {
+  RowMajorMatrix matrix;
+  std::vector<BlockSlots> blockSlots;  // as AccelerationJacobian's, in this matrix's layout
+  std::vector<int> diagonal;
+  std::vector<Block3> pointP, pointV;  // scratch, as AccelerationJacobian's
+};
+void newtonMatrix(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
+                  double cp, NewtonMatrix* out);
+
 }  // namespace jello
