@@ -2,8 +2,9 @@
 //
 // Every run starts from the world's initial state and ends at the same time T, so that all
 // of them are compared at one instant with one reference: RK4 at a much smaller step, whose
-// own error is estimated against a run at half its step. Steps are T/2^k, so that every run
-// lands on T exactly (the world's own dt need not: its last step is shortened, see simulate).
+// own error is estimated against a run at twice its step (see Reference). Steps are T/2^k, so
+// that every run lands on T exactly (the world's own dt need not: its last step is shortened,
+// see simulate).
 
 #include "app/report.h"
 
