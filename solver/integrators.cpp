@@ -104,10 +104,13 @@ struct StepWork {
   // sparse LU of the 3D lattice fills in and takes 100-200 ms here. (A 3x3 block-Jacobi
   // preconditioner took as many iterations: what slows BiCGSTAB at large steps is the lattice's
   // stiffness, dt^2 k/m, which no per-point preconditioner touches.) SparseLU stays as the
-  // fallback for the rare system BiCGSTAB does not converge on.
-  NewtonMatrix newton;
-  Eigen::BiCGSTAB<RowMajorMatrix, Eigen::DiagonalPreconditioner<double>> iterative;
-  SparseMatrix columnMajor;  // the fallback's copy of the Newton matrix
+  // fallback for the rare system BiCGSTAB does not converge on. BiCGSTAB is written here, as
+  // Eigen's is, around the Newton matrix's blocks (NewtonBlocks), whose product reads a third
+  // of the data a sparse matrix's does.
+  NewtonBlocks newton;
+  Eigen::VectorXd inverseDiagonal;          // the Jacobi preconditioner
+  Eigen::VectorXd r, r0, p, v, s, t, y, z;  // BiCGSTAB's vectors
+  SparseMatrix fallback;                    // the Newton matrix for the direct solver
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   bool analysed = false;
   Eigen::VectorXd residual, update;
@@ -289,12 +292,57 @@ double firstIterate(StepWork& w, const OdeSystem& system, const std::vector<doub
   return implicitResidual(w, system, y, dt);
 }
 
-// The Newton matrix I - dt dA/dv - dt^2 dA/dp at the state in w.temp, and BiCGSTAB's
-// preconditioner for it.
+// The Newton matrix I - dt dA/dv - dt^2 dA/dp at the state in w.temp, and BiCGSTAB's Jacobi
+// preconditioner for it (1 where a diagonal entry is 0, as Eigen's).
 void assembleNewton(StepWork& w, const OdeSystem& system, double dt) {
   system.newtonMatrix(w.temp.data(), dt, dt * dt, w.newton);
   ++w.stats.jacobians;
-  w.iterative.compute(w.newton.matrix);
+  w.inverseDiagonal.resize(kNumCoords);
+  w.newton.diagonal(w.inverseDiagonal.data());
+  for (double& d : w.inverseDiagonal) d = d != 0 ? 1 / d : 1;
+}
+
+// BiCGSTAB from zero, preconditioned on the right by the diagonal: Eigen's algorithm (its restart
+// when r0 and r turn orthogonal included), until |N x - b| <= tolerance |b|. x is w.update, b
+// w.residual. False when it does not converge within kNumCoords * 2 iterations, as Eigen's.
+bool bicgstab(StepWork& w, double tolerance) {
+  const Eigen::VectorXd& b = w.residual;
+  Eigen::VectorXd &x = w.update, &r = w.r, &r0 = w.r0, &p = w.p, &v = w.v, &s = w.s, &t = w.t,
+                  &y = w.y, &z = w.z;
+  const double rhsNorm2 = b.squaredNorm(),
+               eps2 = Eigen::NumTraits<double>::epsilon() * Eigen::NumTraits<double>::epsilon();
+  x.setZero(b.size());
+  if (rhsNorm2 == 0) return true;
+  r = b;
+  r0 = r;
+  double r0Norm2 = rhsNorm2, rho = 1, alpha = 1, omega = 1;
+  v.setZero(b.size());
+  p.setZero(b.size());
+  t.resize(b.size());
+  const double threshold = tolerance * tolerance * rhsNorm2;
+  for (int i = 0, restarts = 0; r.squaredNorm() > threshold;) {
+    if (i++ >= 2 * kNumCoords) return false;
+    const double rhoOld = rho;
+    rho = r0.dot(r);
+    if (std::fabs(rho) < eps2 * r0Norm2) {  // r0 and r have turned orthogonal: restart
+      r0 = r;
+      rho = r0Norm2 = r.squaredNorm();
+      if (restarts++ == 0) i = 0;
+    }
+    const double beta = (rho / rhoOld) * (alpha / omega);
+    p = r + beta * (p - omega * v);
+    y = w.inverseDiagonal.cwiseProduct(p);
+    w.newton.multiply(y.data(), v.data());
+    alpha = rho / r0.dot(v);
+    s = r - alpha * v;
+    z = w.inverseDiagonal.cwiseProduct(s);
+    w.newton.multiply(z.data(), t.data());
+    const double tt = t.squaredNorm();
+    omega = tt > 0 ? t.dot(s) / tt : 0;
+    x += alpha * y + omega * z;
+    r = s - omega * t;
+  }
+  return true;
 }
 
 // w.update = the Newton matrix's solution for w.residual, to a relative residual that keeps the
@@ -303,15 +351,13 @@ void assembleNewton(StepWork& w, const OdeSystem& system, double dt) {
 bool solveNewton(StepWork& w, double tolerance) {
   const double residualNorm = w.residual.norm();
   const double relative = residualNorm > 0 ? kLinearShareOfTolerance * tolerance / residualNorm : 1;
-  w.iterative.setTolerance(std::clamp(relative, kLinearTolerance, kLoosestLinearTolerance));
-  w.update = w.iterative.solve(w.residual);
-  if (w.iterative.info() == Eigen::Success) return true;
-  w.columnMajor = w.newton.matrix;
+  if (bicgstab(w, std::clamp(relative, kLinearTolerance, kLoosestLinearTolerance))) return true;
+  w.fallback = sparseOf(w.newton);
   if (!w.analysed) {
-    w.lu.analyzePattern(w.columnMajor);
+    w.lu.analyzePattern(w.fallback);
     w.analysed = true;
   }
-  w.lu.factorize(w.columnMajor);
+  w.lu.factorize(w.fallback);
   if (w.lu.info() != Eigen::Success) return false;
   w.update = w.lu.solve(w.residual);
   return true;
@@ -448,8 +494,8 @@ OdeSystem jelloSystem(const Model& model, const Pull* pull) {
     derivative(model, y, dydt, pull);
   };
   system.newtonMatrix = [&model, pull](const double* y, double cv, double cp,
-                                       NewtonMatrix& matrix) {
-    newtonMatrix(model, y, y + kNumCoords, pull, cv, cp, &matrix);
+                                       NewtonBlocks& matrix) {
+    newtonBlocks(model, y, y + kNumCoords, pull, cv, cp, &matrix);
   };
   return system;
 }

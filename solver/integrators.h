@@ -18,14 +18,14 @@
 
 namespace jello {
 
-struct NewtonMatrix;  // jacobian.h: only IMPLICIT's step needs its Eigen types
+struct NewtonBlocks;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
   // Writes f(y) into dydt; both hold the same number of doubles.
   std::function<void(const double* y, double* dydt)> derivative;
   // For y = [p; v]: the matrix I - cv dA/dv - cp dA/dp, A the accelerations. Needed by IMPLICIT
   // only.
-  std::function<void(const double* y, double cv, double cp, NewtonMatrix& matrix)> newtonMatrix;
+  std::function<void(const double* y, double cv, double cp, NewtonBlocks& matrix)> newtonMatrix;
 };
 
 // The jello's system: derivative() and newtonMatrix() of `model`, with `pull` if any.

@@ -156,24 +156,106 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
            });
 }
 
-void newtonMatrix(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
-                  double cp, NewtonMatrix* out) {
-  if (out->blockSlots.size() != patternBlockCount(model)) {
-    const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
-    out->matrix = patternMatrix<RowMajorMatrix>(blocks);
-    findSlots(blocks, out->matrix, &out->blockSlots, &out->diagonal);
+namespace {
+
+// Block B of each pair, as the terms give them, and the point terms' blocks summed per point.
+class BlockAssembly final : public JacobianSink {
+ public:
+  BlockAssembly(NewtonBlocks* out, double byPosition, double byVelocity)
+      : out_(*out), byPosition_(byPosition), byVelocity_(byVelocity) {
+    out_.pointP.assign(kNumPoints, Block3{});
+    out_.pointV.assign(kNumPoints, Block3{});
   }
-  double* a = out->matrix.valuePtr();
-  std::fill(a, a + out->matrix.nonZeros(), 0.0);
+  void addPair(const Block3& dFdL, const Block3& dFdw) override {
+    JELLO_ASSERT(pair_ < out_.pair.size());
+    Block3& b = out_.pair[pair_++];
+    for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * dFdL.m[e] + byVelocity_ * dFdw.m[e];
+  }
+  void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
+    accumulate(&out_.pointP[q], dFdp);
+    accumulate(&out_.pointV[q], dFdv);
+  }
+  // The diagonal blocks: the identity, the point terms and the user's pull (-stiffness I).
+  void finish(const Pull* pull) {
+    JELLO_ASSERT(pair_ == out_.pair.size());
+    for (int q = 0; q < kNumPoints; ++q) {
+      Block3& blockP = out_.pointP[q];
+      if (pull && pull->point == q)
+        for (int axis = 0; axis < 3; ++axis) blockP.m[4 * axis] -= pull->stiffness;
+      Block3& b = out_.point[q];
+      for (int e = 0; e < 9; ++e)
+        b.m[e] = byPosition_ * blockP.m[e] + byVelocity_ * out_.pointV[q].m[e];
+      for (int axis = 0; axis < 3; ++axis) b.m[4 * axis] += 1;
+    }
+  }
+
+ private:
+  NewtonBlocks& out_;
+  double byPosition_, byVelocity_;
+  std::size_t pair_ = 0;
+};
+
+Vec3 times(const Block3& b, Vec3 x) {
+  return {b.m[0] * x.x + b.m[1] * x.y + b.m[2] * x.z, b.m[3] * x.x + b.m[4] * x.y + b.m[5] * x.z,
+          b.m[6] * x.x + b.m[7] * x.y + b.m[8] * x.z};
+}
+
+}  // namespace
+
+void NewtonBlocks::multiply(const double* x, double* y) const {
+  for (int q = 0; q < kNumPoints; ++q) store(y, q, times(point[q], load(x, q)));
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto [a, b] = pairs[k];
+    const Vec3 f = times(pair[k], load(x, a) - load(x, b));
+    store(y, a, load(y, a) + f);
+    store(y, b, load(y, b) - f);
+  }
+}
+
+void NewtonBlocks::diagonal(double* d) const {
+  for (int q = 0; q < kNumPoints; ++q)
+    for (int axis = 0; axis < 3; ++axis) d[coordIndex(q, axis)] = point[q].m[4 * axis];
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    for (int axis = 0; axis < 3; ++axis) {
+      d[coordIndex(pairs[k].first, axis)] += pair[k].m[4 * axis];
+      d[coordIndex(pairs[k].second, axis)] += pair[k].m[4 * axis];
+    }
+}
+
+void newtonBlocks(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
+                  double cp, NewtonBlocks* out) {
+  // The pairs are listed once per model shape; later calls only check that they still fit.
+  if (4 * out->pairs.size() + kNumPoints != patternBlockCount(model)) {
+    out->pairs.clear();
+    for (const auto& term : model.scene.terms)
+      for (auto pair : term->pairs()) out->pairs.push_back(pair);
+    out->pair.resize(out->pairs.size());
+    out->point.resize(kNumPoints);
+  }
   // -cp dA/dp - cv dA/dv, dA = dF / mass.
-  const double byPosition = -cp / model.world.mass, byVelocity = -cv / model.world.mass;
-  assemble(model, p, v, pull, out->blockSlots, &out->pointP, &out->pointV,
-           [a, byPosition, byVelocity](const BlockSlots& slots, const Block3& dFdp,
-                                       const Block3& dFdv, double sign) {
-             for (int e = 0; e < 9; ++e)
-               a[slots[e]] += sign * (byPosition * dFdp.m[e] + byVelocity * dFdv.m[e]);
-           });
-  for (int i : out->diagonal) a[i] += 1;
+  BlockAssembly assembly(out, -cp / model.world.mass, -cv / model.world.mass);
+  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
+  assembly.finish(pull);
+}
+
+SparseMatrix sparseOf(const NewtonBlocks& blocks) {
+  std::vector<Eigen::Triplet<double>> entries;
+  auto add = [&](int row, int column, const Block3& b, double sign) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        entries.emplace_back(coordIndex(row, i), coordIndex(column, j), sign * b.m[3 * i + j]);
+  };
+  for (int q = 0; q < kNumPoints; ++q) add(q, q, blocks.point[q], 1);
+  for (std::size_t k = 0; k < blocks.pairs.size(); ++k) {
+    const auto [a, b] = blocks.pairs[k];
+    add(a, a, blocks.pair[k], 1);
+    add(a, b, blocks.pair[k], -1);
+    add(b, a, blocks.pair[k], -1);
+    add(b, b, blocks.pair[k], 1);
+  }
+  SparseMatrix matrix(kNumCoords, kNumCoords);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
 }
 
 }  // namespace jello

@@ -463,9 +463,10 @@ TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
   EXPECT_LT(relative, 1e-6);
 }
 
-// The Newton matrix, assembled in one pass, is I - cv dA/dv - cp dA/dp of the Jacobians checked
-// above against differences of the force, on a state with every term and the user's pull.
-TEST(Implicit, NewtonMatrixIsTheIdentityLessTheScaledJacobians) {
+// The Newton matrix's blocks make I - cv dA/dv - cp dA/dp of the Jacobians checked above against
+// differences of the force, on a state with every term and the user's pull; and their product
+// with a vector is the matrix's.
+TEST(Implicit, NewtonBlocksAreTheIdentityLessTheScaledJacobians) {
   World w = test::springsOnlyWorld();
   w.dElastic = 0.8;
   w.hasPlane = true;
@@ -483,20 +484,27 @@ TEST(Implicit, NewtonMatrixIsTheIdentityLessTheScaledJacobians) {
   const double cv = 0.01, cp = 1e-4;
   AccelerationJacobian jacobian;
   accelerationJacobian(model, state.p(), state.v(), &pull, &jacobian);
-  NewtonMatrix newton;
-  newtonMatrix(model, state.p(), state.v(), &pull, cv, cp, &newton);
-  const Eigen::MatrixXd expected = Eigen::MatrixXd::Identity(kNumCoords, kNumCoords) -
-                                   cv * Eigen::MatrixXd(jacobian.dAdv) -
-                                   cp * Eigen::MatrixXd(jacobian.dAdp);
-  const Eigen::MatrixXd assembled(newton.matrix);
+  NewtonBlocks newton;
+  newtonBlocks(model, state.p(), state.v(), &pull, cv, cp, &newton);
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(kNumCoords, kNumCoords);
+  const Eigen::MatrixXd expected =
+      identity - cv * Eigen::MatrixXd(jacobian.dAdv) - cp * Eigen::MatrixXd(jacobian.dAdp);
+  const Eigen::MatrixXd assembled(sparseOf(newton));
   const double relative = (assembled - expected).norm() / expected.norm();
-  std::printf("Newton matrix against the Jacobians: relative difference %.3g\n", relative);
+  std::printf("Newton blocks against the Jacobians: relative difference %.3g\n", relative);
   EXPECT_LT(relative, 1e-14);
-  // A second assembly at another state reuses the pattern and leaves nothing of the first.
-  newtonMatrix(model, test::restLattice().p(), test::restLattice().v(), nullptr, cv, cp, &newton);
-  accelerationJacobian(model, test::restLattice().p(), test::restLattice().v(), nullptr, &jacobian);
-  EXPECT_LT((Eigen::MatrixXd(newton.matrix) - Eigen::MatrixXd::Identity(kNumCoords, kNumCoords) +
-             cv * Eigen::MatrixXd(jacobian.dAdv) + cp * Eigen::MatrixXd(jacobian.dAdp))
+  Eigen::VectorXd x(kNumCoords), product(kNumCoords), diagonal(kNumCoords);
+  for (double& e : x) e = any(random);
+  newton.multiply(x.data(), product.data());
+  EXPECT_LT((product - expected * x).norm(), 1e-14 * (expected * x).norm());
+  newton.diagonal(diagonal.data());
+  EXPECT_LT((diagonal - expected.diagonal()).norm(), 1e-14 * expected.diagonal().norm());
+  // A second assembly at another state reuses the list of pairs and leaves nothing of the first.
+  const State rest = test::restLattice();
+  newtonBlocks(model, rest.p(), rest.v(), nullptr, cv, cp, &newton);
+  accelerationJacobian(model, rest.p(), rest.v(), nullptr, &jacobian);
+  EXPECT_LT((Eigen::MatrixXd(sparseOf(newton)) - identity + cv * Eigen::MatrixXd(jacobian.dAdv) +
+             cp * Eigen::MatrixXd(jacobian.dAdp))
                 .norm(),
             1e-14 * expected.norm());
 }
@@ -514,8 +522,8 @@ TEST(Implicit, EachStepSolvesBackwardEulerToItsTolerance) {
     State state = f.state;
     std::vector<double> rate(2 * kNumCoords);
     Eigen::VectorXd residual(kNumCoords);
-    NewtonMatrix newton;
-    Eigen::BiCGSTAB<RowMajorMatrix> solver;
+    NewtonBlocks newton;
+    Eigen::BiCGSTAB<SparseMatrix> solver;
     solver.setTolerance(1e-14);
     double worst = 0;
     const int steps = dt > 0.01 ? 4 : 40;
@@ -527,8 +535,9 @@ TEST(Implicit, EachStepSolvesBackwardEulerToItsTolerance) {
         residual[c] = state.v()[c] - before.v()[c] - dt * rate[kNumCoords + c];
         EXPECT_EQ(state.p()[c], before.p()[c] + dt * state.v()[c]);
       }
-      newtonMatrix(model, state.p(), state.v(), nullptr, dt, dt * dt, &newton);
-      const Eigen::VectorXd update = solver.compute(newton.matrix).solve(residual);
+      newtonBlocks(model, state.p(), state.v(), nullptr, dt, dt * dt, &newton);
+      const SparseMatrix matrix = sparseOf(newton);
+      const Eigen::VectorXd update = solver.compute(matrix).solve(residual);
       const double largestVelocity =
           Eigen::Map<const Eigen::VectorXd>(state.v(), kNumCoords).cwiseAbs().maxCoeff();
       worst = std::max(worst, update.cwiseAbs().maxCoeff() / (1 + largestVelocity));
