@@ -18,14 +18,14 @@
 
 namespace jello {
 
-struct AccelerationJacobian;  // jacobian.h: only IMPLICIT's step needs its Eigen types
+struct NewtonBlocks;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
   // Writes f(y) into dydt; both hold the same number of doubles.
   std::function<void(const double* y, double* dydt)> derivative;
-  // For y = [p; v]: the Jacobians of the accelerations with respect to p and to v. Needed by
-  // IMPLICIT only.
-  std::function<void(const double* y, AccelerationJacobian& jacobian)> jacobian;
+  // For y = [p; v]: the matrix I - cv dA/dv - cp dA/dp, A the accelerations. Needed by IMPLICIT
+  // only.
+  std::function<void(const double* y, double cv, double cp, NewtonBlocks& matrix)> newtonMatrix;
 };
 
 // What the jello's system is made of: the model, the user's pull if any, and the team whose two
@@ -35,7 +35,7 @@ struct JelloInputs {
   const Pull* pull = nullptr;
   Team* team = nullptr;
 };
-// The jello's system: derivative() and accelerationJacobian() of `inputs`, which it references:
+// The jello's system: derivative() and newtonMatrix() of `inputs`, which it references:
 // they must outlive it. (One reference fits std::function's own storage: a step allocates
 // nothing.)
 OdeSystem jelloSystem(const JelloInputs& inputs);

@@ -39,4 +39,27 @@ struct AccelerationJacobian {
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out);
 
+// The Newton matrix of an implicit step, N = I - cv dA/dv - cp dA/dp (backward Euler: cv = dt,
+// cp = dt^2), kept as its blocks: a pair's four blocks are +B, -B, -B, +B of one block B, which
+// is stored once, and each point's diagonal block (the identity, its point terms' blocks) once.
+// Its product with a vector reads each block once: a third of the data of the sparse matrix,
+// which stores every pair's block four times with an index per entry.
+struct NewtonBlocks {
+  std::vector<std::pair<int, int>> pairs;  // (a, b), in the pair terms' order
+  std::vector<Block3> pair;                // B of each pair
+  std::vector<Block3> point;               // each point's diagonal block, I included
+  std::vector<Block3> pointP, pointV;      // scratch: the point terms' blocks, summed
+  // The model's pinned points: their rows of dA are zero, so their rows of N are the identity's
+  // (the blocks above still hold what the terms gave, multiply() and diagonal() override them).
+  std::vector<int> pinned;
+  // y = N x; x and y are per-point arrays of kNumCoords doubles, not the same.
+  void multiply(const double* x, double* y) const;
+  // The diagonal of N, a per-point array.
+  void diagonal(double* d) const;
+};
+void newtonBlocks(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
+                  double cp, NewtonBlocks* out);
+// N as a sparse matrix (the direct solver's fallback, the tests).
+SparseMatrix sparseOf(const NewtonBlocks& blocks);
+
 }  // namespace jello

@@ -1,6 +1,7 @@
 // Time stepping: conservation laws, energy, order of convergence (docs/physics.md).
 #include <gtest/gtest.h>
 
+#include <Eigen/IterativeLinearSolvers>
 #include <cctype>
 #include <cmath>
 #include <random>
@@ -460,6 +461,98 @@ TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
   double relative = std::sqrt(errorSquared / normSquared);
   std::printf("Jacobian against central differences: relative error %.3g\n", relative);
   EXPECT_LT(relative, 1e-6);
+}
+
+// The Newton matrix's blocks make I - cv dA/dv - cp dA/dp of the Jacobians checked above against
+// differences of the force, on a state with every term and the user's pull; and their product
+// with a vector is the matrix's.
+TEST(Implicit, NewtonBlocksAreTheIdentityLessTheScaledJacobians) {
+  World w = test::springsOnlyWorld();
+  w.dElastic = 0.8;
+  w.hasPlane = true;
+  w.plane = {1, 1, 1, 0.6};
+  w.field.resolution = 3;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> any(-0.05, 0.05);
+  for (int i = 0; i < 27 * 3; ++i) w.field.forces.push_back(any(random));
+  State state = tumblingCube(17, 0.05);
+  for (int c = 0; c < kNumCoords; ++c) state.p()[c] += 0.3;
+  Model model = makeModel(w, state);
+  store(state.p(), 0, {-2.1, 2.05, 0.2});   // past two walls
+  store(state.p(), 1, {-0.5, -0.5, -0.5});  // across the plane
+  Pull pull{100, {1, 1, 1}, 300};
+  const double cv = 0.01, cp = 1e-4;
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, state.p(), state.v(), &pull, &jacobian);
+  NewtonBlocks newton;
+  newtonBlocks(model, state.p(), state.v(), &pull, cv, cp, &newton);
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(kNumCoords, kNumCoords);
+  const Eigen::MatrixXd expected =
+      identity - cv * Eigen::MatrixXd(jacobian.dAdv) - cp * Eigen::MatrixXd(jacobian.dAdp);
+  const Eigen::MatrixXd assembled(sparseOf(newton));
+  const double relative = (assembled - expected).norm() / expected.norm();
+  std::printf("Newton blocks against the Jacobians: relative difference %.3g\n", relative);
+  EXPECT_LT(relative, 1e-14);
+  Eigen::VectorXd x(kNumCoords), product(kNumCoords), diagonal(kNumCoords);
+  for (double& e : x) e = any(random);
+  newton.multiply(x.data(), product.data());
+  EXPECT_LT((product - expected * x).norm(), 1e-14 * (expected * x).norm());
+  newton.diagonal(diagonal.data());
+  EXPECT_LT((diagonal - expected.diagonal()).norm(), 1e-14 * expected.diagonal().norm());
+  // A second assembly at another state reuses the list of pairs and leaves nothing of the first.
+  const State rest = test::restLattice();
+  newtonBlocks(model, rest.p(), rest.v(), nullptr, cv, cp, &newton);
+  accelerationJacobian(model, rest.p(), rest.v(), nullptr, &jacobian);
+  EXPECT_LT((Eigen::MatrixXd(sparseOf(newton)) - identity + cv * Eigen::MatrixXd(jacobian.dAdv) +
+             cp * Eigen::MatrixXd(jacobian.dAdp))
+                .norm(),
+            1e-14 * expected.norm());
+}
+
+// Each IMPLICIT step solves backward Euler, v' = v + dt a(p + dt v', v'), to its tolerance: the
+// Newton update its residual still asks for is below 1e-12 (1 + |v'|), at steps from the small
+// ones a user takes to T/16 of a report on rotate.w. At the small ones it takes one Jacobian a
+// step (the Newton matrix kept for the update that confirms convergence, after a fixed-point first
+// iterate).
+TEST(Implicit, EachStepSolvesBackwardEulerToItsTolerance) {
+  WorldFile f = readWorldFile(test::dataPath("rotate.w"));
+  Model model = makeModel(f.world, f.state);
+  for (double dt : {0.0625, 0.00390625, 1.220703125e-4}) {
+    Stepper stepper(Integrator::Implicit);
+    State state = f.state;
+    std::vector<double> rate(2 * kNumCoords);
+    Eigen::VectorXd residual(kNumCoords);
+    NewtonBlocks newton;
+    Eigen::BiCGSTAB<SparseMatrix> solver;
+    solver.setTolerance(1e-14);
+    double worst = 0;
+    const int steps = dt > 0.01 ? 4 : 40;
+    for (int s = 0; s < steps; ++s) {
+      const State before = state;
+      stepper.step(model, state, dt);
+      derivative(model, state.y.data(), rate.data());
+      for (int c = 0; c < kNumCoords; ++c) {
+        residual[c] = state.v()[c] - before.v()[c] - dt * rate[kNumCoords + c];
+        EXPECT_EQ(state.p()[c], before.p()[c] + dt * state.v()[c]);
+      }
+      newtonBlocks(model, state.p(), state.v(), nullptr, dt, dt * dt, &newton);
+      const SparseMatrix matrix = sparseOf(newton);
+      const Eigen::VectorXd update = solver.compute(matrix).solve(residual);
+      const double largestVelocity =
+          Eigen::Map<const Eigen::VectorXd>(state.v(), kNumCoords).cwiseAbs().maxCoeff();
+      worst = std::max(worst, update.cwiseAbs().maxCoeff() / (1 + largestVelocity));
+    }
+    const StepStats& stats = stepper.stats();
+    std::printf(
+        "IMPLICIT dt=%g: largest update left %.3g (against 1 + |v|); %.2f Newton "
+        "iterations, %.2f Jacobians a step\n",
+        dt, worst, double(stats.newtonIterations) / steps, double(stats.jacobians) / steps);
+    EXPECT_LT(worst, 1e-12) << dt;
+    if (dt < 1e-3) {
+      EXPECT_EQ(stats.jacobians, steps) << dt;
+      EXPECT_EQ(stats.newtonIterations, 2 * steps) << dt;
+    }
+  }
 }
 
 // The table: a row per enumerator, in enum order, and names that read back as the integrator.

@@ -424,8 +424,10 @@ TEST(ReportOrders, AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun) {
   EXPECT_NE(r.out.find("note: RK4's fitted order is "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(", not 4: the cube touched the walls during "), std::string::npos) << r.out;
   const std::string md = test::readText(dir + "/out/report.md");
-  EXPECT_LT(fittedInTable(md, "RK4"), 2) << md;
-  EXPECT_NE(md.find("**RK4: error \u221d dt^1."), std::string::npos) << md;
+  // About order 1 across contacts (0.94 over the runs above the reference's floor, 1.05 with the
+  // finest too when the reference's error was estimated against half its step, not twice).
+  EXPECT_NEAR(fittedInTable(md, "RK4"), 1, 0.25) << md;
+  EXPECT_NE(md.find("**RK4: error \u221d dt^"), std::string::npos) << md;
   EXPECT_NE(md.find("- The cube touched the walls during "), std::string::npos) << md;
   EXPECT_NE(md.find("not a fault of RK4"), std::string::npos) << md;
   EXPECT_EQ(md.find("The cube touched the plane"), std::string::npos) << "this world has none";
