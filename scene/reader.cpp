@@ -75,10 +75,16 @@ class Reader {
     std::optional<double> value = node->is_number() ? node->value<double>() : std::nullopt;
     if (!value) fail(*node, full, "expected a number");
     if (!std::isfinite(*value)) fail(*node, full, "is not finite");
+    checkMagnitude(*node, full, *value);
     if (strictly ? !(*value > lowest) : !(*value >= lowest))
       fail(*node, full,
            std::string("must be ") + (strictly ? "above " : "at least ") + textOf(lowest));
     return value;
+  }
+
+  void checkMagnitude(const toml::node& at, const std::string& key, double value) const {
+    if (std::fabs(value) > kLargestSceneNumber)
+      fail(at, key, "is beyond " + textOf(kLargestSceneNumber) + " in magnitude");
   }
 
   std::optional<Vec3> vector(const toml::table& table, const std::string& path,
@@ -93,6 +99,7 @@ class Reader {
       std::optional<double> value = item.is_number() ? item.value<double>() : std::nullopt;
       if (!value) fail(item, path + key, "expected 3 numbers [x, y, z]");
       if (!std::isfinite(*value)) fail(item, path + key, "is not finite");
+      checkMagnitude(item, path + key, *value);
       xyz[i] = *value;
     }
     return Vec3{xyz[0], xyz[1], xyz[2]};
@@ -218,6 +225,9 @@ Friction readFriction(const Reader& r, const toml::table& t, const std::string& 
   f.muStatic = r.number(t, path, "friction_static", 0).value_or(0);
   f.muDynamic = r.number(t, path, "friction_dynamic", 0).value_or(f.muStatic);
   f.speed = r.number(t, path, "friction_speed", 0, true).value_or(kDefaultFrictionSpeed);
+  if (f.muStatic > kMostFriction)
+    r.fail(*t.get("friction_static"), path + "friction_static",
+           "must be at most " + std::to_string(static_cast<int>(kMostFriction)));
   if (f.muDynamic > f.muStatic)
     r.fail(*t.get("friction_dynamic"), path + "friction_dynamic",
            "must be at most friction_static (dynamic friction is the weaker)");
