@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "forces/term.h"
 #include "physics.h"
 #include "solver/integrators.h"
 #include "world.h"
@@ -38,6 +39,19 @@ void Forces(benchmark::State& bench, int world, KernelChoice choice) {
       benchmark::Counter(static_cast<double>(bench.iterations()), benchmark::Counter::kIsRate);
 }
 
+// One force term alone (the scene's term `index`, in its list order), everything in reach: where
+// an evaluation's time goes.
+void Term(benchmark::State& bench, int world, int index) {
+  const WorldFile& f = courseWorld(world);
+  Model model = makeModel(f.world, f.state, KernelChoice::Specialised);
+  const ForceTerm& term = *model.scene.terms[static_cast<std::size_t>(index)];
+  std::vector<double> force(kNumCoords);
+  for (auto _ : bench) {
+    term.addForces(f.state.p(), f.state.v(), nullptr, force.data());
+    benchmark::DoNotOptimize(force.data());
+  }
+}
+
 void Step(benchmark::State& bench, int world, KernelChoice choice, Integrator integrator) {
   const WorldFile& f = courseWorld(world);
   Model model = makeModel(f.world, f.state, choice);
@@ -65,6 +79,19 @@ void registerAll() {
           ->Unit(benchmark::kMicrosecond);
       benchmark::RegisterBenchmark((std::string("StepRK4/") + kWorlds[w] + "/" + name).c_str(),
                                    Step, w, choice, Integrator::RK4)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  for (int w = 0; w < static_cast<int>(std::size(kWorlds)); ++w) {
+    const WorldFile& f = courseWorld(w);
+    const Model model = makeModel(f.world, f.state, KernelChoice::Specialised);
+    for (std::size_t t = 0; t < model.scene.terms.size(); ++t) {
+      std::vector<std::string> kept, leftOut;
+      model.scene.terms[t]->summarise(&kept, &leftOut);
+      const std::string name = kept.empty() ? std::to_string(t) : kept.front();
+      benchmark::RegisterBenchmark(
+          (std::string("Term/") + kWorlds[w] + "/" + std::to_string(t) + " " + name).c_str(), Term,
+          w, static_cast<int>(t))
           ->Unit(benchmark::kMicrosecond);
     }
   }
