@@ -12,7 +12,6 @@
 
 namespace jello {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFieldOfView = 72.0;  // degrees, vertical: the whole box at the default camera
 
 // A camera on a sphere around the origin, looking at it, +z up (README: The viewer).

@@ -14,6 +14,7 @@
 #include <future>
 #include <limits>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -23,6 +24,7 @@
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
+#include "scene/spec.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
@@ -137,6 +139,21 @@ constexpr int kMostSlowModes = 384;
 // stiffness is positive.
 SparseMatrix negatedSymmetricPart(const SparseMatrix& m) {
   return SparseMatrix(-0.5 * (m + SparseMatrix(m.transpose())));
+}
+
+// The matrix on the free coordinates: a pinned point's rows and columns zeroed. Its rows of the
+// Jacobian are zero already (it does not accelerate), but the symmetric part would take half of
+// its column, coupling a point that cannot move: spurious modes, some of them "growing". With
+// both zeroed its coordinates are zero eigenvalues, left out with the rigid motions.
+SparseMatrix withoutPinned(SparseMatrix m, const std::vector<int>& pinned) {
+  if (pinned.empty()) return m;
+  std::vector<char> isPinned(kNumCoords, 0);
+  for (int q : pinned)
+    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+  m.prune([&](Eigen::Index row, Eigen::Index column, double) {
+    return !isPinned[row] && !isPinned[column];
+  });
+  return m;
 }
 
 bool allFinite(const SparseMatrix& m) {
@@ -349,6 +366,7 @@ Linearisation lineariseDensely(const SparseMatrix& stiffness, const SparseMatrix
   out.lowestDamping = INFINITY;
   const double rigid = kRigid * solver.eigenvalues().cwiseAbs().maxCoeff();
   out.growing = static_cast<int>((solver.eigenvalues().array() < -rigid).count());
+  out.allModes = true;
   addModes({solver.eigenvalues(), solver.eigenvectors()}, damping, rigid, &out);
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;
@@ -361,6 +379,7 @@ Linearisation everyMode(const Eigenquotients& all) {
   out.lowestDamping = INFINITY;
   const double rigid = kRigid * all.values.cwiseAbs().maxCoeff();
   out.growing = static_cast<int>((all.values.array() < -rigid).count());
+  out.allModes = true;
   for (Eigen::Index i = 0; i < all.values.size(); ++i)
     if (all.values[i] > rigid) addMode({all.values[i], all.quotients[i]}, &out);
   if (out.modes.empty()) out.lowestDamping = 0;
@@ -378,8 +397,8 @@ Linearisation linearise(const Model& model, const State& state) {
     out.finite = false;
     return out;
   }
-  const SparseMatrix stiffness = negatedSymmetricPart(jacobian.dAdp);
-  const SparseMatrix damping = negatedSymmetricPart(jacobian.dAdv);
+  const SparseMatrix stiffness = withoutPinned(negatedSymmetricPart(jacobian.dAdp), model.pinned);
+  const SparseMatrix damping = withoutPinned(negatedSymmetricPart(jacobian.dAdv), model.pinned);
   // A state the three mirrors of the lattice leave as it is (the rest lattice moved, or scaled
   // about its centre as tornado.w's compressed cube): every mode, exactly, from 8 blocks, in
   // less time than the Lanczos iterations. (A degenerate mode's eigenvector is any in its
@@ -391,6 +410,18 @@ Linearisation linearise(const Model& model, const State& state) {
 }
 
 Linearisation lineariseAtRest(const World& world) {
+  // Pins change the lattice's modes (no rigid motions are left): its springs and pins alone, at
+  // rest, through the general analysis.
+  if (world.scene && !world.scene->pinned.empty()) {
+    World springs = world;
+    auto pinsOnly = std::make_shared<SceneSpec>();
+    pinsOnly->pinned = world.scene->pinned;
+    pinsOnly->boundsPresent = false;
+    springs.scene = pinsOnly;
+    springs.hasPlane = false;
+    springs.field = {};
+    return linearise(makeModel(springs, restState()), restState());
+  }
   // Eigenvalues of the lattice with unit stiffness and unit mass, computed once: all of them,
   // by the lattice's mirror symmetries (spectrum.h), in milliseconds.
   static const Eigen::VectorXd unitLattice = [] {
@@ -408,6 +439,7 @@ Linearisation lineariseAtRest(const World& world) {
     return out;
   }
   out.lowestDamping = INFINITY;
+  out.allModes = true;
   const double rigid = kRigid * unitLattice.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
     double mu = unitLattice[i];
@@ -807,12 +839,14 @@ namespace {
 std::string modesText(const StabilityReport& r) {
   std::string out;
   char line[256];
+  // The count only where every mode was found (not only the spectrum's ends)
+  const std::string count =
+      r.rest.allModes ? " " + std::to_string(r.rest.modes.size()) + " oscillating modes," : "";
   std::snprintf(line, sizeof line,
-                "  at rest: %zu oscillating modes, highest frequency %.4g rad/s (%.4g Hz), damping "
-                "rates %.3g to %.3g 1/s\n",
-                r.rest.modes.size(), r.rest.highestFrequency,
-                r.rest.highestFrequency / (2 * 3.14159265358979), r.rest.lowestDamping,
-                r.rest.highestDamping);
+                "  at rest:%s highest frequency %.4g rad/s (%.4g Hz), damping rates %.3g to %.3g "
+                "1/s\n",
+                count.c_str(), r.rest.highestFrequency, r.rest.highestFrequency / (2 * kPi),
+                r.rest.lowestDamping, r.rest.highestDamping);
   out += line;
   std::snprintf(
       line, sizeof line,

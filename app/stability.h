@@ -44,6 +44,7 @@ struct Linearisation {
   // slowest and those of the windows inside the spectrum of a state (linearise), every one of
   // the rest lattice (lineariseAtRest) and of a state the mirrors leave as it is.
   std::vector<Mode> modes;
+  bool allModes = false;  // whether `modes` holds every oscillating mode
   // Modes with negative stiffness (buckling): physical, not numerical. All of them, counted by
   // the inertia of a factorisation, not only those in `modes`.
   int growing = 0;

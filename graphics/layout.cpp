@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "showCube.h"  // kPi
+#include "showCube.h"
 
 namespace jello {
 

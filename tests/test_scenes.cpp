@@ -3,16 +3,19 @@
 // dropped on a sphere.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
 
+#include "app/stability.h"
 #include "forces/obstacle.h"
 #include "physics.h"
 #include "scene/reader.h"
 #include "scene/spec.h"
 #include "solver/integrators.h"
+#include "solver/jacobian.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -145,6 +148,41 @@ TEST(Pins, APinnedPointDoesNotMoveByASingleUlp) {
     EXPECT_EQ(moved, 0) << row.name;
     EXPECT_GT(free, 1e-4) << row.name << ": the rest of the jelly falls";
   }
+}
+
+// --check on a jelly hanging from two pinned corners: its modes are those of the free coordinates
+// (a dense solve of the stiffness with the pinned rows and columns removed, here): no growing
+// mode, the same highest frequency, at rest and at the initial state.
+TEST(Pins, TheStabilityAnalysisSeesOnlyTheFreeCoordinates) {
+  const WorldFile f = scene(
+      "gravity = [0, 0, -9.81]\n[jelly]\nstiffness = 60\ndamping = 0.2\n"
+      "[[pin]]\ni = [0, 0]\nj = [0, 0]\nk = [7, 7]\n[[pin]]\ni = [0, 0]\nj = [7, 7]\nk = [7, 7]\n");
+  const std::vector<int>& pinned = f.world.scene->pinned;
+  ASSERT_EQ(pinned.size(), 2u);
+  const Model model = makeModel(f.world, f.state);
+  AccelerationJacobian jacobian;
+  accelerationJacobian(model, f.state.p(), f.state.v(), nullptr, &jacobian);
+  const Eigen::MatrixXd dAdp(jacobian.dAdp);
+  std::vector<int> free;
+  for (int c = 0; c < kNumCoords; ++c)
+    if (!std::binary_search(pinned.begin(), pinned.end(), c % kNumPoints)) free.push_back(c);
+  const Eigen::Index n = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd stiffness(n, n);
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      stiffness(r, c) = -0.5 * (dAdp(free[r], free[c]) + dAdp(free[c], free[r]));
+  const Eigen::VectorXd values =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(stiffness).eigenvalues();
+  ASSERT_GT(values[0], -1e-9 * values[n - 1]) << "the pinned lattice at rest does not buckle";
+  const double fastest = std::sqrt(values[n - 1]);
+
+  const StabilityReport report = analyseStability(f.world, f.state);
+  EXPECT_EQ(report.initial.growing, 0);
+  EXPECT_EQ(report.rest.growing, 0);
+  EXPECT_NEAR(report.initial.highestFrequency, fastest, 1e-9 * fastest);
+  EXPECT_NEAR(report.rest.highestFrequency, fastest, 1e-9 * fastest);
+  for (std::size_t i = 0; i < report.criticalRest.size(); ++i)
+    EXPECT_NEAR(report.criticalRest[i], report.criticalInitial[i], 1e-9 * report.criticalRest[i]);
 }
 
 // Each integrator's error against a fine RK4 run at two steps, on a jelly hanging from a pinned
