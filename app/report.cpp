@@ -26,6 +26,7 @@
 #include "core/plot.h"
 #include "core/progress.h"
 #include "physics.h"
+#include "scene/reader.h"
 #include "solver/integrators.h"
 #include "solver/simulation.h"
 
@@ -595,10 +596,12 @@ Recommendations recommend(const std::vector<ReportRow>& rows, double visualToler
 }
 
 // What to tell about one recommended run: its setting and figures, the command that runs it,
-// and the one that keeps it in a world file ("" when no world file can).
+// and the one that keeps it in a world file ("" when no world file can). A scene keeps it in its
+// own keys instead (createWorld writes course worlds, which hold no obstacles or pins).
 struct Advice {
   std::string setting;  // "MIDPOINT dt=0.00078125: 0.0141 s, error 8.11e-08 m, 2.3 times ..."
   std::string run, keep;
+  std::string sceneKeys;  // `integrator = "MIDPOINT"` and `dt = 0.00078125`, for a scene
 };
 
 Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own) {
@@ -608,6 +611,12 @@ Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRo
   if (own && !own->diverged && own->cpuSeconds > 0 && row.cpuSeconds > 0)
     advice.setting += ", " + speedAgainstOwn(own->cpuSeconds, row.cpuSeconds);
   advice.run = shellLine(runCommand(worldPath, row));
+  if (isSceneFile(worldPath)) {
+    if (worldFileHolds(row))
+      advice.sceneKeys = "integrator = \"" + std::string(integratorName(row.integrator)) +
+                         "\" and dt = " + exactNumber(row.dt);
+    return advice;
+  }
   const std::vector<std::string> keep = worldFileCommand(worldPath, row);
   if (!keep.empty()) advice.keep = shellLine(keep);
   return advice;
@@ -698,6 +707,8 @@ void markdownAdvice(const std::string& worldPath, const ReportRow& row, const Re
   const Advice advice = advise(worldPath, row, own);
   md << advice.setting << ".\n  - Run it: " << codeSpan(advice.run) << "\n";
   if (!advice.keep.empty()) md << "  - Keep it in a world file: " << codeSpan(advice.keep) << "\n";
+  if (!advice.sceneKeys.empty())
+    md << "  - Keep it in the scene file: " << codeSpan(advice.sceneKeys) << "\n";
 }
 
 // report.md's recommendations.
@@ -776,6 +787,8 @@ void printChoice(const std::string& what, const std::string& worldPath, const Ch
     const Advice advice = advise(worldPath, row, own);
     std::printf("  run it:  %s\n", advice.run.c_str());
     if (!advice.keep.empty()) std::printf("  keep it: %s\n", advice.keep.c_str());
+    if (!advice.sceneKeys.empty())
+      std::printf("  keep it: %s in %s\n", advice.sceneKeys.c_str(), printable(worldPath).c_str());
   };
   std::printf("%s: %s\n", what.c_str(), advise(worldPath, *choice.best, own).setting.c_str());
   print(*choice.best);

@@ -380,6 +380,42 @@ TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
 // RK4: settings a world file holds; RK45: tolerances it does not.
 INSTANTIATE_TEST_SUITE_P(Report, RecommendedCommands, ::testing::Values("RK4", "RK45"));
 
+// A scene's recommended setting is kept in the scene's own keys (createWorld writes course worlds,
+// which hold no gravity, obstacles or pins): the keys as printed, added to the scene, run where
+// the printed command ran, bit for bit.
+TEST(Report, ASceneKeepsItsRecommendedSettingInItsOwnKeys) {
+  const std::string dir = test::makeTempDir();
+  const std::string body = "world = \"" + test::dataPath("rotate.w") + "\"\n";
+  const std::string scene = dir + "/spin.toml";
+  test::writeText(scene, body + "gravity = [0, 0, -9.81]\n");
+  const test::CommandResult report =
+      test::runJelloArgs({"--report", dir + "/out", "--time", "0.02", "--dt", "0.0001",
+                          "--integrators", "RK4", scene});
+  ASSERT_EQ(report.status, 0) << report.err;
+  EXPECT_EQ(report.out.find("createWorld"), std::string::npos) << report.out;
+  const std::vector<std::string> keeps = linesAfter(report.out, "  keep it: ");
+  const std::vector<std::string> runs = linesAfter(report.out, "  run it:  ");
+  ASSERT_FALSE(keeps.empty()) << report.out;
+  ASSERT_EQ(keeps.size(), runs.size());
+  const std::string& keep = keeps[0];
+  const std::size_t dt = keep.find("\" and dt = "), in = keep.find(" in ");
+  ASSERT_EQ(keep.rfind("integrator = \"RK4\" and dt = ", 0), 0u) << keep;
+  ASSERT_NE(in, std::string::npos) << keep;
+  EXPECT_EQ(keep.substr(in + 4), scene);
+  const std::string kept = dir + "/kept.toml";
+  test::writeText(kept, body + "integrator = \"RK4\"\ndt = " + keep.substr(dt + 10, in - dt - 10) +
+                            "\ngravity = [0, 0, -9.81]\n");
+  std::vector<std::string> words = shellWords(runs[0]);
+  words.erase(words.begin());
+  words.insert(words.end() - 1, {"--headless", "--time", "0.02", "--dump", dir + "/run.w"});
+  ASSERT_EQ(test::runJelloArgs(words).status, 0);
+  ASSERT_EQ(
+      test::runJelloArgs({"--headless", "--time", "0.02", "--dump", dir + "/kept.w", kept}).status,
+      0);
+  EXPECT_EQ(readWorldFile(dir + "/run.w").state.y, readWorldFile(dir + "/kept.w").state.y);
+  test::removeTree(dir);
+}
+
 // A soft, spinning cube (createWorld's recipe), `where`: by a wall it hits, or in the middle of
 // the box. Soft, so that RK4 is stable at T/8 and the report takes a second or two.
 std::string writeSpinningCube(const std::string& dir, const std::vector<std::string>& where) {
