@@ -8,21 +8,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/fieldrecipe.h"
 #include "vec3.h"
 #include "world.h"
 
 namespace jello {
-
-// How the force field is made. Node positions are those of docs/world-format.md.
-struct FieldRecipe {
-  enum class Source { None, Uniform, Swirl, Radial, Expression, Given };
-  Source source = Source::None;
-  int resolution = 30;     // the course's
-  Vec3 uniform;            // N, Uniform
-  double strength = 0;     // N/m: Swirl F = s (-y, x, 0), Radial F = s (x, y, z)
-  std::string expression;  // Expression: "fx; fy; fz" in x, y, z (muparser syntax)
-  ForceField given;        // Given: this field as it is (e.g. copied from another world)
-};
 
 // How the initial state is made: the lattice of a cube of edge cubeSize, its corner p[0][0][0]
 // at the origin (the course's [0,1]^3) unless centred elsewhere, then rotated about its centre,
@@ -45,12 +35,6 @@ struct Recipe {
   StateRecipe state;
 };
 
-// A recipe that cannot be built; what() is one line.
-class RecipeError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 // The defaults of createWorld: the course's springs and mass, RK4 at dt = 1 ms, a cube on
 // [0,1]^3 at rest, no plane, no field.
 Recipe defaultRecipe();
@@ -60,8 +44,6 @@ Recipe defaultRecipe();
 // Throws RecipeError for an unknown name.
 Recipe coursePreset(const std::string& name);
 
-// The field of a recipe. Throws RecipeError (bad expression: the library's message).
-ForceField buildField(const FieldRecipe& recipe);
 // The initial state of a recipe.
 State buildState(const StateRecipe& recipe);
 

@@ -14,6 +14,7 @@
 #include <iterator>
 #include <memory>
 
+#include "scene/fieldrecipe.h"
 #include "scene/spec.h"
 
 namespace jello {
@@ -190,6 +191,50 @@ void readRun(const Reader& r, const toml::table& root, World* w) {
     if (!n || *n < 1 || *n > 1000000)
       r.fail(*node, "n", "expected a whole number from 1 to 1000000");
     w->n = static_cast<int>(*n);
+  }
+}
+
+// [field]: the force field (N on each point), replacing the course world's: "fx; fy; fz"
+// expressions or one uniform force, at a resolution; or none (present = false).
+void readField(const Reader& r, const toml::table& root, ForceField* field) {
+  const toml::table* t = r.table(root, "", "field");
+  if (!t) return;
+  r.onlyKeys(*t, "field.", {"present", "expression", "uniform", "resolution"});
+  const int given =
+      (t->get("present") ? 1 : 0) + (t->get("expression") ? 1 : 0) + (t->get("uniform") ? 1 : 0);
+  if (given != 1) r.fail(*t, "field", "give one of expression, uniform or present = false");
+  if (const toml::node* present = t->get("present")) {
+    if (present->value<bool>() != std::optional<bool>(false))
+      r.fail(*present, "field.present",
+             "expected false (no field; a field gives expression or uniform)");
+    *field = ForceField{};
+    return;
+  }
+  FieldRecipe recipe;
+  recipe.label = "";
+  if (const toml::node* node = t->get("resolution")) {
+    const std::optional<std::int64_t> n =
+        node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+    if (!n || *n < 2 || *n > kMostSceneFieldResolution)
+      r.fail(*node, "field.resolution",
+             "expected a whole number from 2 to " + std::to_string(kMostSceneFieldResolution));
+    recipe.resolution = static_cast<int>(*n);
+  }
+  const char* key = t->get("expression") ? "expression" : "uniform";
+  const toml::node& node = *t->get(key);
+  if (key[0] == 'u') {
+    recipe.source = FieldRecipe::Source::Uniform;
+    recipe.uniform = *r.vector(*t, "field.", "uniform");
+  } else {
+    const std::optional<std::string> text = node.value<std::string>();
+    if (!text) r.fail(node, "field.expression", "expected a string \"fx; fy; fz\"");
+    recipe.source = FieldRecipe::Source::Expression;
+    recipe.expression = *text;
+  }
+  try {
+    *field = buildField(recipe);
+  } catch (const RecipeError& e) {
+    r.fail(node, std::string("field.") + key, e.what());
   }
 }
 
@@ -391,12 +436,13 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   const toml::table root = parseToml(text, name);
   const Reader r(name, folder);
   r.onlyKeys(root, "",
-             {"world", "integrator", "dt", "n", "gravity", "jelly", "contact", "bounds", "sphere",
-              "box", "plane", "pin"});
+             {"world", "integrator", "dt", "n", "gravity", "field", "jelly", "contact", "bounds",
+              "sphere", "box", "plane", "pin"});
   WorldFile file = baseWorld(r, root);
   World& w = file.world;
   readRun(r, root, &w);
   readJelly(r, root, &file);
+  readField(r, root, &w.field);
   if (const toml::table* contact = r.table(root, "", "contact")) {
     r.onlyKeys(*contact, "contact.", {"stiffness", "damping"});
     const ContactSpring spring = readSpring(r, *contact, "contact.", {w.kCollision, w.dCollision});

@@ -24,6 +24,9 @@ constexpr double kLargestSceneNumber = 1e12;
 // A friction coefficient is at most this (few pairs of materials exceed 2; a point that must
 // not slide is pinned instead).
 constexpr double kMostFriction = 10;
+// The most nodes per edge of a scene's [field]: a million nodes, each its expressions evaluated,
+// read in under a second (a course world's file holds its field already evaluated; 30 nodes).
+constexpr int kMostSceneFieldResolution = 100;
 
 // Parses a scene's text; `name` is used in messages, `folder` resolves its `world` key (the
 // current folder when empty). Throws WorldFileError.

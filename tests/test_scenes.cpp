@@ -10,6 +10,7 @@
 #include <string>
 
 #include "app/stability.h"
+#include "forces/field.h"
 #include "forces/obstacle.h"
 #include "physics.h"
 #include "scene/reader.h"
@@ -45,6 +46,40 @@ TEST(SceneFile, ACourseWorldThroughASceneIsTheCourseWorldBitForBit) {
         std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 2 * kNumCoords), 0)
         << name;
   }
+}
+
+// [field] replaces the course world's field: expressions evaluated at the nodes (node (i, j, k) of
+// R^3 at -2 + 4 i / (R - 1), docs/world-format.md), one uniform force, or none at all, in which
+// the jelly moves as the course world's springs and walls alone move it.
+TEST(SceneFile, AFieldFromExpressionsUniformOrNone) {
+  const WorldFile swirl = scene(
+      "world = \"world/rotate.w\"\n[field]\nexpression = \"-2 * y; x + z^2; 0.5\"\nresolution "
+      "= 5\n");
+  ASSERT_EQ(swirl.world.field.resolution, 5);
+  for (int n : {0, 7, 62, 124}) {
+    const int i = n / 25, j = n / 5 % 5, k = n % 5;
+    const double x = -2.0 + i, y = -2.0 + j, z = -2.0 + k;
+    const Vec3 f = swirl.world.field.node(static_cast<std::size_t>(n));
+    EXPECT_EQ(f.x, -2 * y) << n;
+    EXPECT_EQ(f.y, x + z * z) << n;
+    EXPECT_EQ(f.z, 0.5) << n;
+  }
+  const WorldFile uniform = scene("[field]\nuniform = [0, 0, -0.02]\n");
+  EXPECT_EQ(uniform.world.field.resolution, 30);
+  EXPECT_EQ(uniform.world.field.node(1234).z, -0.02);
+
+  const WorldFile course = readWorldFile(std::string(JELLO_SOURCE_DIR) + "/world/rotate.w");
+  const WorldFile none = scene("world = \"world/rotate.w\"\n[field]\npresent = false\n");
+  ASSERT_GT(course.world.field.resolution, 0);
+  EXPECT_EQ(none.world.field.resolution, 0);
+  EXPECT_TRUE(none.world.field.forces.empty());
+  World withoutField = course.world;
+  withoutField.field = ForceField{};
+  const Model a = makeModel(withoutField, course.state), b = makeModel(none.world, none.state);
+  Simulation one(a, course.state, Integrator::RK4, course.world.dt);
+  Simulation two(b, none.state, Integrator::RK4, none.world.dt);
+  ASSERT_TRUE(one.advance(500).ran() && two.advance(500).ran());
+  EXPECT_EQ(one.state().y, two.state().y);
 }
 
 // A point 0.1 m inside a sphere of radius 1, moving in and sideways: the spring pushes k * 0.1
@@ -344,6 +379,18 @@ const Malformed kMalformed[] = {
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 11\n",
      "test.toml:4: must be at most 10 (sphere[1].friction_static)"},
     {"gravity = [0, 0, -1e13]\n", "test.toml:1: is beyond 1e+12 in magnitude (gravity)"},
+    {"[field]\nexpression = \"x +; 0; 0\"\n", "test.toml:2: fx: Unexpected end of expression"},
+    {"[field]\nexpression = \"x; 0\"\n",
+     "test.toml:2: needs three expressions \"fx; fy; fz\", got 2 (field.expression)"},
+    {"[field]\nexpression = \"1/0; 0; 0\"\nresolution = 2\n",
+     "test.toml:2: fx is not finite at (-2, -2, -2) (field.expression)"},
+    {"[field]\nuniform = [0, 0, 1]\npresent = false\n",
+     "test.toml:1: give one of expression, uniform or present = false (field)"},
+    {"[field]\npresent = true\n", "test.toml:2: expected false"},
+    {"[field]\nuniform = [0, 0, 1]\nresolution = 1\n",
+     "test.toml:3: expected a whole number from 2 to 100 (field.resolution)"},
+    {"[field]\nexpression = 3\n", "test.toml:2: expected a string"},
+    {"[field]\nuniform = [0, 0, 1]\nresolution = 101\n", "(field.resolution)"},
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
     {"[jelly\n", "test.toml:1:"},
