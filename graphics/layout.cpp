@@ -216,7 +216,7 @@ const std::vector<KeyLine>& windowKeys() {
       {"E", "reset the camera"},
       {"V", "wireframe"},
       {"S H B", "springs by kind, as lines"},
-      {"C", "colour by strain, force"},
+      {"C", "colour: strain, force, friction"},
       {"F", "hold or free colour scale"},
       {"P", "pause, run on"},
       {"R", "real-time pacing"},

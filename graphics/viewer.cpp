@@ -36,8 +36,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kZoomStep = 0.2;   // m per z/x key press
-constexpr double kMinRadius = 0.5;  // m
+constexpr double kZoomStep = 0.2;                  // m per z/x key press
+constexpr double kMinRadius = kMinCameraDistance;  // m
 constexpr double kMaxElevation = kPi / 2 - 0.01;
 constexpr int kGrabPixels = 40;            // how near the cursor a grabbed point must be
 constexpr double kMinPullStiffness = 100;  // N/m
@@ -121,8 +121,11 @@ struct Viewer {
         worldPath(run.worldPath),
         stem(worldStem(run.worldPath)),
         clock(pictures.fps, file.world.n, file.world.dt),
+        camera(cameraFor(model, pictures.camera)),
         width(pictures.width),
-        height(pictures.height) {}
+        height(pictures.height) {
+    draw.coloring = static_cast<Coloring>(pictures.colouring);
+  }
 
   double time() const { return simulation.time(); }
   const State& state() const { return simulation.state(); }
@@ -173,7 +176,9 @@ OverlayText overlayText(const Viewer& v) {
   if (v.saving)
     text.recording = textf("SAVING %d/%d INTO %s/", v.frames->written(), v.frames->maxFrames(),
                            v.frames->dir().c_str());
-  if (v.draw.coloring != Coloring::Plain)
+  if (v.draw.coloring == Coloring::Friction)
+    text.colouring = "friction: sticking or sliding";
+  else if (v.draw.coloring != Coloring::Plain)
     text.colouring =
         std::string(coloringName(v.draw.coloring)) +
         (v.draw.colourScale > 0 ? " SCALE HELD (F FREES)" : " SCALE FITS EACH FRAME (F HOLDS)");
@@ -466,6 +471,8 @@ void togglePause(Viewer& v) {
 void toggleColourHold(Viewer& v) {
   if (v.draw.coloring == Coloring::Plain) {
     v.say("f holds the scale of a coloured surface: c colours it first");
+  } else if (v.draw.coloring == Coloring::Friction) {
+    v.say("the friction colouring has no scale to hold: its colours are states");
   } else if (v.draw.colourScale > 0) {
     v.draw.colourScale = 0;
     v.say("the colour scale fits each frame again");
@@ -489,7 +496,7 @@ void keyboard(unsigned char key, int, int) {
       v.camera.radius += kZoomStep;
       break;
     case 'e':
-      v.camera = Camera{};
+      v.camera = cameraFor(v.model, v.pictures.camera);
       break;
     case 'v':
       v.draw.wireframe = !v.draw.wireframe;
@@ -510,7 +517,8 @@ void keyboard(unsigned char key, int, int) {
       toggleSaving(v);
       break;
     case 'c':  // a held scale belongs to the colouring it was held for
-      v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % 3);
+      v.draw.coloring =
+          static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
       v.draw.colourScale = 0;
       break;
     case 'f':
