@@ -218,6 +218,8 @@ const std::vector<KeyLine>& windowKeys() {
       {"S H B", "springs by kind, as lines"},
       {"C", "colour: strain, force, friction"},
       {"F", "hold or free colour scale"},
+      {"ARROWS", "push the jelly as seen"},
+      {"J", "make it jump"},
       {"P", "pause, run on"},
       {"R", "real-time pacing"},
       {"SPACE", "record frames, stop"},
