@@ -9,7 +9,6 @@
 #include <GL/glu.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>

@@ -487,6 +487,11 @@ void toggleColourHold(Viewer& v) {
   }
 }
 
+void nextColouring(Viewer& v) {
+  v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
+  v.draw.colourScale = 0;  // a held scale belongs to the colouring it was held for
+}
+
 // Adds `dv` to every free point's velocity (Simulation::addVelocity: pinned points stay).
 void kick(Viewer& v, Vec3 dv, const char* what) {
   if (v.diverged) {
@@ -555,10 +560,8 @@ void keyboard(unsigned char key, int, int) {
     case ' ':
       toggleSaving(v);
       break;
-    case 'c':  // a held scale belongs to the colouring it was held for
-      v.draw.coloring =
-          static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
-      v.draw.colourScale = 0;
+    case 'c':
+      nextColouring(v);
       break;
     case 'f':
       toggleColourHold(v);

@@ -6,6 +6,8 @@
 set -u
 jello=$1 scenes=$2
 source "$(dirname "$0")/window_support.sh"
+# window_support's, saying what jello said in the folder the run is in.
+fail() { echo "FAILED: $*"; [ -f err ] && sed 's/^/  jello: /' err; exit 1; }
 
 # The mean of an OBJ file's vertices, "x y z".
 centroid() { awk '$1 == "v" { x += $2; y += $3; z += $4; n++ } END { printf "%.6f %.6f %.6f", x / n, y / n, z / n }' "$1"; }
