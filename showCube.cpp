@@ -9,12 +9,14 @@
 #include <GL/glu.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
+#include "app/contacts.h"
 #include "app/surface.h"
+#include "graphics/scenedraw.h"
+#include "scene/spec.h"
 
 namespace jello {
 
@@ -104,7 +106,19 @@ struct SurfaceColors {
   double scale = 1;         // the value at the end of the legend
   const char* title = "";
   bool diverging = false;
+  bool frictionStates = false;  // a swatch per state in the legend, no colour bar
 };
+
+// The friction colouring's colours, by FrictionState: out of frictional contact a faded jelly,
+// so that the green of sticking and the orange of sliding stand out; and the legend's words.
+constexpr float kFrictionColours[3][3] = {
+    {0.8f, 0.62f, 0.64f}, {0.15f, 0.72f, 0.25f}, {1.0f, 0.55f, 0.05f}};
+constexpr const char* kFrictionLabels[3] = {"NONE", "STICKS", "SLIDES"};
+
+Vec3 frictionColour(FrictionState state) {
+  const float* c = kFrictionColours[static_cast<int>(state)];
+  return {c[0], c[1], c[2]};
+}
 
 // The coloured quantity at every point: strain (relative stretch, signed) or force (N).
 struct SurfaceValues {
@@ -150,6 +164,13 @@ SurfaceColors colorsFor(const Model& model, const State& state, Coloring colorin
   SurfaceColors out;
   out.color.assign(kNumPoints, Vec3{kJelly[0], kJelly[1], kJelly[2]});
   if (coloring == Coloring::Plain) return out;
+  if (coloring == Coloring::Friction) {
+    out.frictionStates = true;
+    out.title = "FRICTION";
+    const std::vector<FrictionState> states = frictionStates(model, state);
+    for (int q = 0; q < kNumPoints; ++q) out.color[q] = frictionColour(states[q]);
+    return out;
+  }
   const SurfaceValues values = valuesFor(model, state, coloring);
   out.scale =
       heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(coloring)));
@@ -174,7 +195,7 @@ void setUpCamera(const Camera& camera, int width, int height) {
   glLightfv(GL_LIGHT0, GL_POSITION, key);
   glLightfv(GL_LIGHT1, GL_POSITION, fill);
   Vec3 eye = camera.eye();
-  gluLookAt(eye.x, eye.y, eye.z, 0, 0, 0, 0, 0, 1);
+  gluLookAt(eye.x, eye.y, eye.z, 0, 0, 0, camera.up.x, camera.up.y, camera.up.z);
 }
 
 void setUpLighting() {
@@ -194,32 +215,12 @@ void setUpLighting() {
   glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40);
 }
 
-// The 12 edges of the box [-2,2]^3, each as its two ends.
-const std::vector<std::array<Vec3, 2>>& boxEdges() {
-  static const std::vector<std::array<Vec3, 2>> edges = [] {
-    std::vector<std::array<Vec3, 2>> e;
-    const double h = kBoxHalfSize;
-    for (int axis = 0; axis < 3; ++axis)
-      for (double a : {-h, h})
-        for (double b : {-h, h}) {
-          double from[3], to[3];
-          from[axis] = -h;
-          to[axis] = h;
-          from[(axis + 1) % 3] = to[(axis + 1) % 3] = a;
-          from[(axis + 2) % 3] = to[(axis + 2) % 3] = b;
-          e.push_back({Vec3{from[0], from[1], from[2]}, Vec3{to[0], to[1], to[2]}});
-        }
-    return e;
-  }();
-  return edges;
-}
-
-void drawBox() {
+void drawBox(const std::vector<Edge>& edges) {
   glDisable(GL_LIGHTING);
   glColor3f(0.92f, 0.92f, 0.92f);
   glLineWidth(1.5f);
   glBegin(GL_LINES);
-  for (const auto& [from, to] : boxEdges()) {
+  for (const auto& [from, to] : edges) {
     vertex(from);
     vertex(to);
   }
@@ -286,39 +287,8 @@ void drawSprings(const Model& model, const State& state, const DrawOptions& opti
   glEnd();
 }
 
-// The polygon where the plane cuts the box: its crossings of the box's 12 edges, in order
-// around their centroid.
-std::vector<Vec3> planeInBox(const Plane& plane) {
-  const Vec3 n{plane.a, plane.b, plane.c};
-  std::vector<Vec3> points;
-  for (const auto& [p, q] : boxEdges()) {
-    double sp = planeValue(plane, p), sq = planeValue(plane, q);
-    // sp == sq: the edge lies in the plane (its ends come from the edges that meet it there)
-    // or parallel to it.
-    if (sp * sq > 0 || sp == sq) continue;
-    Vec3 x = lerp(p, q, sp / (sp - sq));
-    // A corner on the plane is found by each of its three edges: keep it once.
-    bool seen =
-        std::any_of(points.begin(), points.end(), [&](Vec3 y) { return length(x - y) < 1e-9; });
-    if (!seen) points.push_back(x);
-  }
-  if (points.size() < 3) return {};
-  Vec3 centre;
-  for (Vec3 p : points) centre += p;
-  centre = (1.0 / points.size()) * centre;
-  double len;
-  Vec3 unitNormal = direction(n, &len);
-  Vec3 e1 = direction(points[0] - centre, &len);
-  Vec3 e2 = cross(unitNormal, e1);
-  std::sort(points.begin(), points.end(), [&](Vec3 p, Vec3 q) {
-    return std::atan2(dot(p - centre, e2), dot(p - centre, e1)) <
-           std::atan2(dot(q - centre, e2), dot(q - centre, e1));
-  });
-  return points;
-}
-
-void drawPlane(const Plane& plane) {
-  std::vector<Vec3> polygon = planeInBox(plane);
+void drawPlane(const Plane& plane, const std::vector<Edge>& clip) {
+  std::vector<Vec3> polygon = planeInBox(plane, clip);
   if (polygon.empty()) return;
   glDisable(GL_LIGHTING);
   glEnable(GL_BLEND);
@@ -374,7 +344,30 @@ std::string formatValue(double v) {
   return text;
 }
 
+// The friction colouring's legend: its title, then a swatch of each state's colour, one a line,
+// in the bar's column with its word beside it; at the bottom of the legend's place, where the
+// other colourings' legends end.
+void drawFrictionLegend(const SurfaceColors& colors, const LegendLayout& legend, int width,
+                        int height) {
+  const int scale = legend.scale, glyph = kGlyphHeight * scale, line = kLineAdvance * scale;
+  const FrictionState order[] = {FrictionState::Sticking, FrictionState::Sliding,
+                                 FrictionState::None};
+  int y = std::max(legend.bar.y, legend.bar.bottom() - 3 * line);
+  drawText(colors.title, legend.colours.x, y - line, width, height, scale, 1, 1, 1);
+  for (FrictionState state : order) {
+    const float* c = kFrictionColours[static_cast<int>(state)];
+    drawPanel({legend.bar.x, y, legend.bar.width, glyph}, width, height, c[0], c[1], c[2], 1);
+    drawText(kFrictionLabels[static_cast<int>(state)], legend.barLabelX, y, width, height, scale, 1,
+             1, 1);
+    y += line;
+  }
+}
+
 void drawLegend(const SurfaceColors& colors, const LegendLayout& legend, int width, int height) {
+  if (colors.frictionStates) {
+    drawFrictionLegend(colors, legend, width, height);
+    return;
+  }
   const PixelRect& bar = legend.bar;
   const int scale = legend.scale, glyph = kGlyphHeight * scale;
   beginPixels(width, height);
@@ -422,21 +415,66 @@ void drawSpringLegend(const DrawOptions& options, const LegendLayout& legend, in
 
 }  // namespace
 
+Vec3 Camera::horizontalAxis(int which) const {
+  // Beyond this |up.x|, +x is too near `up` to give the azimuth's zero: +y does.
+  constexpr double kNearX = 0.9;
+  const Vec3 reference = std::fabs(up.x) > kNearX ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+  double len;
+  const Vec3 zero = direction(reference - dot(reference, up) * up, &len);
+  return which == 0 ? zero : cross(up, zero);
+}
+
+// With up +z the axes are +x and +y exactly, and this is the course viewer's eye to the bit.
 Vec3 Camera::eye() const {
-  return {radius * std::cos(phi) * std::cos(theta), radius * std::sin(phi) * std::cos(theta),
-          radius * std::sin(theta)};
+  return (radius * std::cos(phi) * std::cos(theta)) * horizontalAxis(0) +
+         (radius * std::sin(phi) * std::cos(theta)) * horizontalAxis(1) +
+         (radius * std::sin(theta)) * up;
+}
+
+Vec3 Camera::away() const {
+  return (-std::cos(phi)) * horizontalAxis(0) + (-std::sin(phi)) * horizontalAxis(1);
+}
+
+Vec3 Camera::right() const { return cross(away(), up); }
+
+namespace {
+
+// cameraFor without a request.
+Camera defaultCamera(const Model& model) {
+  Camera camera;
+  const SceneSpec* spec = model.world.scene.get();
+  if (!spec) return camera;
+  double g;
+  const Vec3 up = direction((-1.0) * spec->gravity, &g);
+  if (g > 0) camera.up = up;
+  // The default distance sees the course's box whole: as far back again as a larger box's
+  // farthest corner is beyond the course box's.
+  if (const std::optional<BoxExtent> box = drawnBox(model)) {
+    const Vec3 corner{std::max(std::fabs(box->lower.x), std::fabs(box->upper.x)),
+                      std::max(std::fabs(box->lower.y), std::fabs(box->upper.y)),
+                      std::max(std::fabs(box->lower.z), std::fabs(box->upper.z))};
+    const double courseCorner = kBoxHalfSize * std::sqrt(3.0);
+    camera.radius = std::clamp(camera.radius * length(corner) / courseCorner, camera.radius,
+                               kMaxCameraDistance);
+  }
+  return camera;
+}
+
+}  // namespace
+
+Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request) {
+  Camera camera = defaultCamera(model);
+  if (request) {
+    camera.phi = request->azimuth * kPi / 180;
+    camera.theta = request->elevation * kPi / 180;
+    if (request->distance > 0) camera.radius = request->distance;
+  }
+  return camera;
 }
 
 const char* coloringName(Coloring coloring) {
-  switch (coloring) {
-    case Coloring::Strain:
-      return "strain";
-    case Coloring::Force:
-      return "force";
-    case Coloring::Plain:
-      return "plain";
-  }
-  return "plain";  // not reached: every colouring is named above
+  static_assert(kColoringCount == kColouringCount, "a name for every colouring (app/pictures.h)");
+  return kColouringNames[static_cast<int>(coloring)];
 }
 
 void drawScene(const Model& model, const State& state, const Camera& camera,
@@ -450,11 +488,18 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
   setUpLighting();
   setUpCamera(camera, width, height);
 
-  drawBox();
+  // A course world draws what it always drew, the same way: a scene's additions draw nothing
+  // for it.
+  const std::vector<Edge> clip = boxEdges(clipBox(model));
+  if (drawnBox(model)) drawBox(clip);
+  drawSolidObstacles(model);
   SurfaceColors colors = colorsFor(model, state, options.coloring, options.colourScale);
   drawSurface(state, colors, options.wireframe);
   drawSprings(model, state, options);
-  if (model.world.hasPlane) drawPlane(model.plane());
+  drawPinnedPoints(model, state);
+  // Translucent, after everything opaque, so that what lies behind them shows through.
+  if (model.world.hasPlane) drawPlane(model.plane(), clip);
+  drawHalfSpaces(model, clip);
   if (pull && pull->point >= 0) drawPull(state, *pull);
   const bool coloured = options.coloring != Coloring::Plain;
   const LegendLayout legend = layoutLegends(width, height, options.springKinds(), coloured);
@@ -463,7 +508,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
 }
 
 double fittedColourScale(const Model& model, const State& state, Coloring coloring) {
-  if (coloring == Coloring::Plain) return 0;
+  if (coloring == Coloring::Plain || coloring == Coloring::Friction) return 0;
   return colorsFor(model, state, coloring, 0).scale;
 }
 

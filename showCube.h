@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "app/pictures.h"
 #include "graphics/layout.h"
 #include "physics.h"
 
@@ -14,17 +15,33 @@ namespace jello {
 
 constexpr double kFieldOfView = 72.0;  // degrees, vertical: the whole box at the default camera
 
-// A camera on a sphere around the origin, looking at it, +z up (README: The viewer).
-// theta is the elevation above the xy-plane, phi the azimuth from +x (radians).
+// A camera on a sphere around the origin, looking at it, `up` up (README: The viewer): +z, or
+// against a scene's gravity. theta is the elevation above the plane normal to `up`, phi the
+// azimuth in it from horizontalAxis(0) (radians); with up +z, from +x in the xy-plane.
 struct Camera {
   double radius = 6;
   double theta = kPi / 6;
   double phi = kPi / 6;
+  Vec3 up{0, 0, 1};  // a unit vector
   Vec3 eye() const;
+  // The unit vectors of the plane normal to `up` that phi is measured in: 0 is the azimuth's
+  // zero (+x projected on the plane, or +y when up is near x), 1 a quarter turn on (+y for +z up).
+  Vec3 horizontalAxis(int which) const;
+  // Horizontal unit vectors (normal to `up`): away from the camera, and to its right, as seen.
+  Vec3 away() const;
+  Vec3 right() const;
 };
+// The camera a world's pictures start with (and the window's `e` goes back to): the default one,
+// with `up` against the scene's gravity (a slope made by tilting gravity is seen as a slope), for
+// a bounding box larger than the course's far enough back to see it whole (up to
+// kMaxCameraDistance); then placed where `request` (--camera) says, when there is one.
+Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request = std::nullopt);
 
 // How the cube's surface is coloured; `c` in the viewer cycles through them.
-enum class Coloring { Plain, Strain, Force };
+// Friction: each point in contact with a frictional obstacle, sticking or sliding
+// (app/contacts.h).
+enum class Coloring { Plain, Strain, Force, Friction };
+constexpr int kColoringCount = 4;
 const char* coloringName(Coloring coloring);
 
 struct DrawOptions {
@@ -45,7 +62,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
                const DrawOptions& options, int width, int height, const Pull* pull = nullptr);
 
 // The colour legend's end value that drawScene fits to `state` (a round 1, 2 or 5 times a power
-// of ten at least its largest value); 0 for Coloring::Plain.
+// of ten at least its largest value); 0 for Coloring::Plain and Coloring::Friction (no scale).
 double fittedColourScale(const Model& model, const State& state, Coloring coloring);
 
 // Text in a small built-in bitmap font (upper case, digits, punctuation; lower case is drawn

@@ -3,6 +3,8 @@
 #include "app/commandline.h"
 
 #include <CLI/CLI.hpp>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -31,6 +33,28 @@ bool parseSize(const std::string& text, int* width, int* height) {
   return true;
 }
 
+// "AZ,EL" or "AZ,EL,DIST": degrees, degrees, metres, finite and within the camera's range.
+bool parseCamera(const std::string& text, CameraRequest* camera) {
+  CameraRequest c;
+  char extra = 0;
+  const int read =
+      std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &c.azimuth, &c.elevation, &c.distance, &extra);
+  if (read != 2 && read != 3) return false;
+  if (!std::isfinite(c.azimuth) || !(std::fabs(c.elevation) <= kMostCameraElevation)) return false;
+  if (read == 3 && !(c.distance >= kMinCameraDistance && c.distance <= kMaxCameraDistance))
+    return false;
+  *camera = c;
+  return true;
+}
+
+// The index of `name` in kColouringNames, any case; -1 for none.
+int colouringIndex(std::string name) {
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  for (int i = 0; i < kColouringCount; ++i)
+    if (name == kColouringNames[i]) return i;
+  return -1;
+}
+
 // One error line and the bad-input status.
 int refuse(const std::string& message) {
   printError(message);
@@ -43,7 +67,7 @@ namespace {
 
 // The values of the options that are checked or converted after parsing, and which were given.
 struct Given {
-  std::string integrator, dump, kernel, size, integrators, exportFormat;
+  std::string integrator, dump, kernel, size, integrators, exportFormat, camera, colouring;
   long long steps = 0;
   double time = 0, dt = 0;
   int n = 0;
@@ -52,7 +76,7 @@ struct Given {
   CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
       *checkOption;
   CLI::Option *jsonOption, *mapOption, *benchOption, *fpsOption, *worldOption;
-  CLI::Option *exportOption, *exportFormatOption;
+  CLI::Option *exportOption, *exportFormatOption, *cameraOption, *colouringOption;
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
@@ -116,6 +140,15 @@ void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
                  "save at most this many frames (default 300)")
       ->transform(wholeNumber(1, kMaxFrames));
   g->sizeOption = app.add_option("--size", g->size, "picture size WxH (default 640x480)");
+  g->cameraOption =
+      app.add_option("--camera", g->camera,
+                     "where the pictures' camera starts: AZIMUTH,ELEVATION[,DISTANCE] "
+                     "in degrees and metres (default 30,30,6; up is against gravity)")
+          ->type_name("AZ,EL[,D]");
+  g->colouringOption = app.add_option("--colouring", g->colouring,
+                                      "the surface's colouring in the pictures: plain (default), "
+                                      "strain, force or friction (the window's c cycles them)")
+                           ->type_name("NAME");
   app.add_flag("--overwrite", c->pictures.overwrite,
                "replace the frames, the exported meshes (or the report) a folder already holds");
   g->exportOption =
@@ -209,6 +242,26 @@ int chooseMode(const Given& g, JelloCommand* c) {
   return kGoOn;
 }
 
+// The pictures' camera and colouring, once parsed.
+int readViewOptions(const Given& g, JelloCommand* c) {
+  if (*g.cameraOption) {
+    CameraRequest camera;
+    if (!parseCamera(g.camera, &camera))
+      return refuse(
+          textf("--camera: expected AZIMUTH,ELEVATION[,DISTANCE] (degrees, elevation "
+                "within +-%g; metres from %g to %g), got '%s'",
+                kMostCameraElevation, kMinCameraDistance, kMaxCameraDistance, g.camera.c_str()));
+    c->pictures.camera = camera;
+  }
+  if (*g.colouringOption) {
+    c->pictures.colouring = colouringIndex(g.colouring);
+    if (c->pictures.colouring < 0)
+      return refuse("--colouring: unknown colouring '" + g.colouring +
+                    "', expected plain, strain, force or friction");
+  }
+  return kGoOn;
+}
+
 // The run's overrides, once parsed.
 int readRunOptions(const Given& g, JelloCommand* c) {
   RunOptions& run = c->run;
@@ -234,7 +287,7 @@ int readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.sizeOption && !parseSize(g.size, &c->pictures.width, &c->pictures.height))
     return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) +
                   " to " + std::to_string(kMaxPictureSize) + " pixels, got '" + g.size + "'");
-  return kGoOn;
+  return readViewOptions(g, c);
 }
 
 }  // namespace

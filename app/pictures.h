@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace jello {
@@ -16,6 +17,24 @@ constexpr int kFrameDigits = 4;
 constexpr int kMaxFrames = 10000;   // what four digits can number
 constexpr double kDefaultFps = 30;  // saved frames per simulated second
 constexpr double kMaxFps = 1e6;
+
+// The colourings of the cube's surface by name, in the order the window's `c` cycles them
+// (showCube.h's Coloring): --colouring starts a run's pictures in one of them.
+constexpr const char* kColouringNames[] = {"plain", "strain", "force", "friction"};
+constexpr int kColouringCount = 4;
+
+// --camera AZIMUTH,ELEVATION[,DISTANCE]: where the camera of a run's pictures starts (README: The
+// viewer), on its sphere around the origin.
+constexpr double kMostCameraElevation = 89;  // degrees: short of the poles, as a right-drag stops
+constexpr double kMinCameraDistance = 0.5;   // m, as near as the window's zoom goes
+// m: the farthest a camera goes, half the picture's depth range (showCube.cpp draws to 100 m), so
+// that a box as large again around the origin is still in the picture.
+constexpr double kMaxCameraDistance = 50;
+struct CameraRequest {
+  double azimuth = 0;    // degrees around the up axis (+z, or against gravity), from +x with +z up
+  double elevation = 0;  // degrees above the plane normal to the up axis
+  double distance = 0;   // m from the origin; 0: the world's default (farther for a large box)
+};
 
 // The file format of exported surface meshes (app/export.h).
 enum class MeshFormat { Obj, Ply };
@@ -31,6 +50,8 @@ struct PictureOptions {
   bool framesNamed = false;    // --frames DIR was given: the window's recording goes there
   bool saveFromStart = false;  // the window saves from its first frame (--frames or --export)
   int width = 640, height = 480;
+  std::optional<CameraRequest> camera;  // --camera; none: the world's default camera
+  int colouring = 0;                    // --colouring, an index of kColouringNames
 };
 
 // The name new frames folders of a world are made from (makeNewFolder, core/output.h):

@@ -91,6 +91,23 @@ Vec3 obstacleForce(const Obstacle& o, Vec3 p, Vec3 v) {
   return force;
 }
 
+FrictionState frictionState(const Obstacle& o, Vec3 p, Vec3 v) {
+  if (o.friction.muStatic == 0) return FrictionState::None;
+  Penetration pens[3];
+  const int count = penetrations(o, p, pens);
+  FrictionState state = FrictionState::None;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 n = pens[i].normal;
+    // The same push frictionForce is given: no push, no friction.
+    if (!(o.spring.k * pens[i].depth - o.spring.d * dot(v, n) > 0)) continue;
+    const double slip = length(v - dot(v, n) * n);
+    state = strongerState(state, slip < kStickingSpeedRatio * o.friction.speed
+                                     ? FrictionState::Sticking
+                                     : FrictionState::Sliding);
+  }
+  return state;
+}
+
 namespace {
 
 // A 3x3 matrix, row-major, for the Jacobian's algebra.

@@ -69,6 +69,19 @@ Vec3 obstacleForce(const Obstacle& obstacle, Vec3 p, Vec3 v);
 // turns as the point moves; the friction's regularisation is differentiated too).
 void obstacleJacobian(const Obstacle& obstacle, Vec3 p, Vec3 v, Block3* dFdp, Block3* dFdv);
 
+// Whether a point holds or slips against an obstacle (the window's friction colouring, README:
+// The viewer). The regularised friction has no true sticking: a held point creeps (above). Up to
+// about 3 eps the force still rises steeply with the slip (0.7 mu N at eps, 0.9 mu N at 3 eps for
+// the scenes' mu), so a load it can hold settles at a steady creep below that: "sticking" (the
+// scenes' slope holds its jelly creeping at 1.8 eps). Faster, the force is at its limit and the
+// point slides. "None": out of contact, in contact without a push (leaving faster than the
+// spring pushes), or against an obstacle without friction. Ordered: a point that slides against
+// any obstacle slides (strongerState).
+enum class FrictionState { None, Sticking, Sliding };
+constexpr double kStickingSpeedRatio = 3;
+FrictionState frictionState(const Obstacle& obstacle, Vec3 p, Vec3 v);
+inline FrictionState strongerState(FrictionState a, FrictionState b) { return a < b ? b : a; }
+
 // "sphere at (0, 0, -1), radius 0.5 m", and the like.
 std::string obstacleText(const Obstacle& obstacle);
 

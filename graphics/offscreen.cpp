@@ -78,12 +78,14 @@ class OffscreenFrames : public FrameObserver {
   explicit OffscreenFrames(const PictureOptions& pictures)
       : options_(pictures),
         renderer_(pictures.width, pictures.height),
-        sequence_(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {}
+        sequence_(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {
+    draw_.coloring = static_cast<Coloring>(pictures.colouring);
+  }
 
   const PictureOptions& options() const override { return options_; }
   void begin() override { sequence_.open(); }
   void frame(const Model& model, const State& state, long long, double) override {
-    sequence_.save(renderer_.render(model, state, camera_, draw_));
+    sequence_.save(renderer_.render(model, state, cameraFor(model, options_.camera), draw_));
   }
   bool wantsMore() const override { return !sequence_.full(); }
   int framesDone() const override { return sequence_.written(); }
@@ -96,7 +98,6 @@ class OffscreenFrames : public FrameObserver {
   PictureOptions options_;
   OffscreenRenderer renderer_;
   FrameSequence sequence_;
-  Camera camera_;
   DrawOptions draw_;
 };
 

@@ -36,8 +36,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kZoomStep = 0.2;   // m per z/x key press
-constexpr double kMinRadius = 0.5;  // m
+constexpr double kZoomStep = 0.2;  // m per z/x key press
+// The push keys' (arrows) and the jump key's (j) velocity, m/s, added to every free point: a
+// push moves the jelly visibly (a tenth of its size in 0.1 s), a jump lifts it about
+// v^2 / 2g = 0.46 m under the Earth's gravity.
+constexpr double kPushSpeed = 1.0, kJumpSpeed = 3.0;
+constexpr double kMinRadius = kMinCameraDistance;  // m
 constexpr double kMaxElevation = kPi / 2 - 0.01;
 constexpr int kGrabPixels = 40;            // how near the cursor a grabbed point must be
 constexpr double kMinPullStiffness = 100;  // N/m
@@ -121,8 +125,11 @@ struct Viewer {
         worldPath(run.worldPath),
         stem(worldStem(run.worldPath)),
         clock(pictures.fps, file.world.n, file.world.dt),
+        camera(cameraFor(model, pictures.camera)),
         width(pictures.width),
-        height(pictures.height) {}
+        height(pictures.height) {
+    draw.coloring = static_cast<Coloring>(pictures.colouring);
+  }
 
   double time() const { return simulation.time(); }
   const State& state() const { return simulation.state(); }
@@ -173,7 +180,9 @@ OverlayText overlayText(const Viewer& v) {
   if (v.saving)
     text.recording = textf("SAVING %d/%d INTO %s/", v.frames->written(), v.frames->maxFrames(),
                            v.frames->dir().c_str());
-  if (v.draw.coloring != Coloring::Plain)
+  if (v.draw.coloring == Coloring::Friction)
+    text.colouring = "friction: sticking or sliding";
+  else if (v.draw.coloring != Coloring::Plain)
     text.colouring =
         std::string(coloringName(v.draw.coloring)) +
         (v.draw.colourScale > 0 ? " SCALE HELD (F FREES)" : " SCALE FITS EACH FRAME (F HOLDS)");
@@ -466,6 +475,8 @@ void togglePause(Viewer& v) {
 void toggleColourHold(Viewer& v) {
   if (v.draw.coloring == Coloring::Plain) {
     v.say("f holds the scale of a coloured surface: c colours it first");
+  } else if (v.draw.coloring == Coloring::Friction) {
+    v.say("the friction colouring has no scale to hold: its colours are states");
   } else if (v.draw.colourScale > 0) {
     v.draw.colourScale = 0;
     v.say("the colour scale fits each frame again");
@@ -474,6 +485,46 @@ void toggleColourHold(Viewer& v) {
     v.say(textf("colour scale held at %g: a colour means the same value in every frame",
                 v.draw.colourScale));
   }
+}
+
+void nextColouring(Viewer& v) {
+  v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
+  v.draw.colourScale = 0;  // a held scale belongs to the colouring it was held for
+}
+
+// Adds `dv` to every free point's velocity (Simulation::addVelocity: pinned points stay).
+void kick(Viewer& v, Vec3 dv, const char* what) {
+  if (v.diverged) {
+    v.say("a diverged run stays paused: ESC quits");
+    return;
+  }
+  v.simulation.addVelocity(dv);
+  v.say(textf("%s: %g m/s added to every free point%s", what, length(dv),
+              v.paused ? " (paused: p runs on)" : ""));
+}
+
+// The arrow keys push the jelly horizontally as the camera sees it: up away from the camera,
+// down toward it, left and right to the window's left and right.
+void special(int key, int, int) {
+  Viewer& v = viewer();
+  const Camera& c = v.camera;
+  switch (key) {
+    case GLUT_KEY_UP:
+      kick(v, kPushSpeed * c.away(), "push away");
+      break;
+    case GLUT_KEY_DOWN:
+      kick(v, (-kPushSpeed) * c.away(), "push toward the camera");
+      break;
+    case GLUT_KEY_LEFT:
+      kick(v, (-kPushSpeed) * c.right(), "push left");
+      break;
+    case GLUT_KEY_RIGHT:
+      kick(v, kPushSpeed * c.right(), "push right");
+      break;
+    default:
+      break;
+  }
+  glutPostRedisplay();
 }
 
 void keyboard(unsigned char key, int, int) {
@@ -489,7 +540,7 @@ void keyboard(unsigned char key, int, int) {
       v.camera.radius += kZoomStep;
       break;
     case 'e':
-      v.camera = Camera{};
+      v.camera = cameraFor(v.model, v.pictures.camera);
       break;
     case 'v':
       v.draw.wireframe = !v.draw.wireframe;
@@ -509,9 +560,8 @@ void keyboard(unsigned char key, int, int) {
     case ' ':
       toggleSaving(v);
       break;
-    case 'c':  // a held scale belongs to the colouring it was held for
-      v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % 3);
-      v.draw.colourScale = 0;
+    case 'c':
+      nextColouring(v);
       break;
     case 'f':
       toggleColourHold(v);
@@ -527,6 +577,9 @@ void keyboard(unsigned char key, int, int) {
       break;
     case 'w':
       v.screenshotAsked = true;
+      break;
+    case 'j':
+      kick(v, kJumpSpeed * v.camera.up, "jump");  // against gravity (cameraFor), or +z
       break;
     default:
       break;
@@ -643,6 +696,7 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   glutReshapeFunc(reshape);
   glutIdleFunc(idle);
   glutKeyboardFunc(keyboard);
+  glutSpecialFunc(special);
   glutMouseFunc(mouse);
   glutMotionFunc(motion);
   if (pictures.saveFromStart) toggleSaving(v);

@@ -95,6 +95,14 @@ void Simulation::restart(const State& start) {
   outcome_ = {};
 }
 
+void Simulation::addVelocity(Vec3 dv) {
+  std::vector<bool> pinned(kNumPoints, false);
+  for (int q : model_.pinned) pinned[q] = true;
+  for (int q = 0; q < kNumPoints; ++q)
+    if (!pinned[q]) store(state_.v(), q, load(state_.v(), q) + dv);
+  guard_.restart(state_, time_);
+}
+
 void Simulation::restore(const State& state, long long step) {
   state_ = state;
   step_ = step;

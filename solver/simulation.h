@@ -83,6 +83,11 @@ class Simulation {
   // after a divergence), ready to advance again; the guard's bound is kept.
   void restore(const State& state, long long step);
 
+  // Adds `dv` (m/s) to the velocity of every point the model does not pin: the viewer's push and
+  // jump keys. The work done is the user's, as a pull's is: the guard's energy bound starts
+  // afresh from the new state, so that the push is not taken for a divergence.
+  void addVelocity(Vec3 dv);
+
   const State& state() const { return state_; }
   long long step() const { return step_; }
   double time() const { return time_; }  // s: step * dt (advanceTo's last step: its time)

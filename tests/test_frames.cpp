@@ -10,6 +10,8 @@
 #include "graphics/frames.h"
 #include "graphics/image.h"
 #include "graphics/offscreen.h"
+#include "scene/reader.h"
+#include "solver/simulation.h"
 #include "test_support.h"
 
 namespace jello {
@@ -38,13 +40,13 @@ double meanAbsoluteDifference(const Image& a, const Image& b) {
   return sum / a.rgb.size();
 }
 
-// Where a pinhole camera on the sphere (README, The viewer: looking at the origin, +z up) puts a
-// point, in pixels from the top-left; computed here from first principles, not through GL.
+// Where a pinhole camera on the sphere (README, The viewer: looking at the origin, camera.up up)
+// puts a point, in pixels from the top-left; computed here from first principles, not through GL.
 void projectToPixel(const Camera& camera, Vec3 point, int width, int height, double* x, double* y) {
   double len;
   Vec3 eye = camera.eye();
   Vec3 forward = direction(-eye, &len);
-  Vec3 right = direction(cross(forward, {0, 0, 1}), &len);
+  Vec3 right = direction(cross(forward, camera.up), &len);
   Vec3 up = cross(right, forward);
   Vec3 d = point - eye;
   double f = 1 / std::tan(kFieldOfView * kPi / 360);
@@ -173,6 +175,146 @@ TEST(Offscreen, AHeldColourScaleIsTheLegendsWhateverTheState) {
   EXPECT_EQ(meanAbsoluteDifference(fit, renderer.render(model, f.state, Camera{}, options)), 0);
   options.colourScale = 100 * fitted;  // every strain near zero: paler, another legend
   EXPECT_GT(meanAbsoluteDifference(fit, renderer.render(model, f.state, Camera{}, options)), 0.2);
+}
+
+WorldFile sceneText(const std::string& text) {
+  return parseScene(text, "test.toml", std::string(JELLO_SOURCE_DIR));
+}
+
+Rgb pixelAt(const Image& image, const Camera& camera, Vec3 point) {
+  double x, y;
+  projectToPixel(camera, point, image.width, image.height, &x, &y);
+  EXPECT_TRUE(x >= 0 && x < image.width && y >= 0 && y < image.height) << x << "," << y;
+  return pixel(image, std::clamp(int(x), 0, image.width - 1),
+               std::clamp(int(y), 0, image.height - 1));
+}
+
+// Whether some pixel within 3 of where `point` is drawn passes `test`.
+template <typename Test>
+bool nearPixel(const Image& image, const Camera& camera, Vec3 point, Test test) {
+  double cx, cy;
+  projectToPixel(camera, point, image.width, image.height, &cx, &cy);
+  for (int y = int(cy) - 3; y <= int(cy) + 3; ++y)
+    for (int x = int(cx) - 3; x <= int(cx) + 3; ++x)
+      if (x >= 0 && y >= 0 && x < image.width && y < image.height && test(pixel(image, x, y)))
+        return true;
+  return false;
+}
+
+// A scene's ball and box (solid teal), its floor (translucent sand), its pinned corner (a dark
+// ball) and its bounding box of half side 1.5 (white lines) are each where the camera puts them;
+// the course box's corner is not drawn.
+TEST(SceneDrawing, ObstaclesPinsFloorAndTheScenesOwnBoxAreWhereTheCameraPutsThem) {
+  const WorldFile f = sceneText(
+      "[bounds]\nlower = [-1.5, -1.5, -1.5]\nupper = [1.5, 1.5, 1.5]\n[[sphere]]\ncentre = [0, 0, "
+      "-1.1]\nradius = 0.35\n[[box]]\nlower = [0.7, -1.4, -1.4]\nupper = [1.3, -0.8, -0.8]\n"
+      "[[plane]]\npoint = [0, 0, -1.45]\nnormal = [0, 0, 1]\n[[pin]]\ni = [7, 7]\nj = [0, "
+      "0]\nk = [7, 7]\n");
+  const Model model = makeModel(f.world, f.state);
+  OffscreenRenderer renderer(640, 480);
+  const Camera camera = cameraFor(model);
+  const Image image = renderer.render(model, f.state, camera, DrawOptions{});
+  auto teal = [](Rgb c) { return c.g > c.r + 40 && c.b > c.r + 40; };
+  EXPECT_TRUE(teal(pixelAt(image, camera, {0, 0, -1.1})));
+  EXPECT_TRUE(teal(pixelAt(image, camera, {1.0, -1.1, -0.8})));  // the box's top face
+  const Rgb pin = pixelAt(image, camera, load(f.state.p(), pointIndex(7, 0, 7)));
+  EXPECT_LT(std::max({pin.r, pin.g, pin.b}), 60) << pin.r << " " << pin.g << " " << pin.b;
+  const Rgb floor = pixelAt(image, camera, {-1.2, 1.2, -1.45});
+  EXPECT_FALSE(isBackground(floor));
+  EXPECT_GT(floor.r, floor.b + 20) << "sand, not grey";
+  auto white = [](Rgb c) { return std::min({c.r, c.g, c.b}) > 200; };
+  EXPECT_TRUE(nearPixel(image, camera, {1.5, 1.5, 1.5}, white));
+  EXPECT_TRUE(nearPixel(image, camera, {-1.5, 1.5, 1.5}, white));
+  EXPECT_FALSE(nearPixel(image, camera, {2, 2, 2}, white));
+  EXPECT_FALSE(nearPixel(image, camera, {-2, 2, 2}, white));
+}
+
+// A scene that adds nothing to a course world draws the course world's picture, pixel for pixel;
+// one without a bounding box draws none.
+TEST(SceneDrawing, ASceneAddingNothingDrawsTheCourseWorldsPicture) {
+  const WorldFile course = readWorldFile(std::string(JELLO_SOURCE_DIR) + "/world/rotate.w");
+  const WorldFile through = sceneText("world = \"world/rotate.w\"\n");
+  const Model a = makeModel(course.world, course.state),
+              b = makeModel(through.world, through.state);
+  OffscreenRenderer renderer(320, 240);
+  const Image courseImage = renderer.render(a, course.state, Camera{}, DrawOptions{});
+  EXPECT_EQ(meanAbsoluteDifference(courseImage,
+                                   renderer.render(b, through.state, cameraFor(b), DrawOptions{})),
+            0);
+  const WorldFile open = sceneText("world = \"world/rotate.w\"\n[bounds]\npresent = false\n");
+  const Model c = makeModel(open.world, open.state);
+  const Image openImage = renderer.render(c, open.state, cameraFor(c), DrawOptions{});
+  auto white = [](Rgb p) { return std::min({p.r, p.g, p.b}) > 200; };
+  EXPECT_TRUE(nearPixel(courseImage, Camera{}, {2, 2, -2}, white));
+  EXPECT_FALSE(nearPixel(openImage, Camera{}, {2, 2, -2}, white));
+}
+
+// The camera: the course's eye to the bit with +z up; pushes horizontal as seen; up against a
+// scene's gravity; a large box seen whole; --camera's angles and distance.
+TEST(Camera, UpIsAgainstTheScenesGravityAndPushesAreHorizontalAsSeen) {
+  const Camera course;
+  const double r = 6, a = kPi / 6;
+  const Vec3 eye = course.eye();
+  EXPECT_EQ(eye.x, r * std::cos(a) * std::cos(a));
+  EXPECT_EQ(eye.y, r * std::sin(a) * std::cos(a));
+  EXPECT_EQ(eye.z, r * std::sin(a));
+  EXPECT_LT(length(course.away() - Vec3{-std::cos(a), -std::sin(a), 0}), 1e-15);
+  EXPECT_LT(length(course.right() - Vec3{-std::sin(a), std::cos(a), 0}), 1e-15);
+
+  const WorldFile slope =
+      readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/slope-slides.toml");
+  const Model slopeModel = makeModel(slope.world, slope.state);
+  const Camera tilted = cameraFor(slopeModel);
+  const double tilt = 25 * kPi / 180;  // the scene's gravity, from the vertical
+  EXPECT_LT(length(tilted.up - Vec3{-std::sin(tilt), 0, std::cos(tilt)}), 1e-3);
+  EXPECT_LT(std::fabs(dot(tilted.away(), tilted.up)), 1e-15);
+  EXPECT_LT(std::fabs(dot(tilted.right(), tilted.up)), 1e-15);
+  EXPECT_NEAR(dot(tilted.eye(), tilted.up), r * std::sin(a), 1e-12);
+  EXPECT_NEAR(length(tilted.eye()), r, 1e-12);
+
+  const WorldFile large = sceneText("[bounds]\nlower = [-4, -4, -4]\nupper = [4, 4, 4]\n");
+  EXPECT_NEAR(cameraFor(makeModel(large.world, large.state)).radius, 12, 1e-12);
+  const Camera asked = cameraFor(slopeModel, CameraRequest{90, 0, 3});
+  EXPECT_LT(length(asked.eye() - 3 * tilted.horizontalAxis(1)), 1e-12);
+}
+
+// Settled on the scenes' slope and seen from the side, the jelly's bottom edge is green where it
+// sticks (slope-friction) and orange where it slides (slope-slides), and the legend says which.
+TEST(SceneDrawing, TheFrictionColouringShowsStickingGreenAndSlidingOrange) {
+  auto render = [](const char* name, const Image** out, OffscreenRenderer* renderer) {
+    const WorldFile f = readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/" + name);
+    const Model model = makeModel(f.world, f.state);
+    Simulation run(model, f.state, f.world.integrator, f.world.dt);
+    EXPECT_TRUE(run.advanceTo(0.5).ran());
+    DrawOptions options;
+    options.coloring = Coloring::Friction;
+    *out = &renderer->render(model, run.state(), cameraFor(model, CameraRequest{-90, 8, 3.5}),
+                             options);
+  };
+  const LegendLayout legend = layoutLegends(640, 480, 0, true);
+  auto count = [&](const Image& image, auto test) {
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < legend.colours.x; ++x) n += test(pixel(image, x, y));
+    return n;
+  };
+  auto green = [](Rgb c) { return c.g > c.r + 50 && c.g > c.b + 50; };
+  auto orange = [](Rgb c) { return c.r > 180 && c.g < c.r - 50 && c.b < 110; };
+  OffscreenRenderer renderer(640, 480);
+  const Image* image = nullptr;
+  render("slope-friction.toml", &image, &renderer);
+  const int stickingGreen = count(*image, green), stickingOrange = count(*image, orange);
+  const Rgb firstSwatch =
+      pixel(*image, legend.bar.x + 2, legend.bar.bottom() - 3 * kLineAdvance * legend.scale + 2);
+  EXPECT_TRUE(green(firstSwatch)) << firstSwatch.r << " " << firstSwatch.g << " " << firstSwatch.b;
+  render("slope-slides.toml", &image, &renderer);
+  const int slidingGreen = count(*image, green), slidingOrange = count(*image, orange);
+  std::printf("sticking: %d green, %d orange pixels; sliding: %d green, %d orange\n", stickingGreen,
+              stickingOrange, slidingGreen, slidingOrange);
+  EXPECT_GT(stickingGreen, 100);
+  EXPECT_EQ(stickingOrange, 0);
+  EXPECT_GT(slidingOrange, 50);
+  EXPECT_EQ(slidingGreen, 0);
 }
 
 TEST(Offscreen, RefusesSizesOutOfRange) {
@@ -368,6 +510,39 @@ TEST(CliFrames, ExportedMeshesAreNamedLikeTheFramesOfTheSameSteps) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(countFrames(dir + "/animation/rotate-001"), 4);
   EXPECT_EQ(countMeshes(dir + "/m2"), 4);
+  test::removeTree(dir);
+}
+
+// --camera and --colouring change the frames; a camera or colouring the window cannot show is
+// refused, naming the option, before anything is written.
+TEST(CliFrames, CameraAndColouringChangeTheFramesAndBadOnesAreRefused) {
+  const std::string dir = test::makeTempDir(), world = dataPath("jello.w");
+  auto frame = [&](std::vector<std::string> args, const std::string& name) {
+    args.insert(args.end(), {"--headless", "--steps", "0", "--size", "320x240", "--frames",
+                             dir + "/" + name, world});
+    const test::CommandResult r = test::runJelloArgs(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return readJpeg(dir + "/" + name + "/0000.jpg");
+  };
+  const Image plain = frame({}, "plain");
+  EXPECT_EQ(meanAbsoluteDifference(plain, frame({"--camera", "30,30,6"}, "same")), 0);
+  EXPECT_GT(meanAbsoluteDifference(plain, frame({"--camera", "120,-10"}, "turned")), 2);
+  EXPECT_GT(meanAbsoluteDifference(plain, frame({"--colouring", "Strain"}, "strain")), 0.5);
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{"--camera", "30"},
+                                             {"--camera", "30,90"},
+                                             {"--camera", "30,30,0.1"},
+                                             {"--camera", "30,30,6,1"},
+                                             {"--camera", "nan,30"},
+                                             {"--colouring", "rainbow"}}) {
+    std::vector<std::string> args = bad;
+    args.insert(args.end(), {"--headless", "--frames", dir + "/never", world});
+    const test::CommandResult r = test::runJelloArgs(args);
+    EXPECT_EQ(r.status, 2) << bad[1];
+    EXPECT_NE(r.err.find(bad[0] + ":"), std::string::npos) << r.err;
+  }
+  struct stat info;
+  EXPECT_NE(::stat((dir + "/never").c_str(), &info), 0);
   test::removeTree(dir);
 }
 

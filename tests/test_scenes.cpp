@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "app/contacts.h"
 #include "app/stability.h"
 #include "forces/field.h"
 #include "forces/obstacle.h"
@@ -293,6 +294,59 @@ TEST(Friction, ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt) {
     std::printf("at 1.2 times the friction angle: %.4g m/s^2, expected %.4g\n", measured, expected);
     EXPECT_NEAR(measured / expected, 1, 0.03);
   }
+}
+
+// A point 1 mm into a frictional floor: at rest it sticks; slipping at 10 eps it slides; at
+// half the sticking speed it still sticks; above the floor, or leaving it faster than the spring
+// pushes, or on a floor without friction, it has no friction state.
+TEST(FrictionState, APointRestingOnAFrictionalPlaneSticksOneSlippingAtTenEpsSlides) {
+  Obstacle floor;
+  floor.shape = ObstacleShape::HalfSpace;
+  floor.point = {0, 0, -1};
+  floor.normal = {0, 0, 1};
+  floor.spring = {20000, 5};
+  floor.friction = {0.6, 0.5, 0.002};
+  const double eps = floor.friction.speed;
+  const Vec3 in{0.3, -0.2, -1.001}, above{0.3, -0.2, -0.999};
+  EXPECT_EQ(frictionState(floor, in, {0, 0, 0}), FrictionState::Sticking);
+  EXPECT_EQ(frictionState(floor, in, {0.5 * kStickingSpeedRatio * eps, 0, 0}),
+            FrictionState::Sticking);
+  EXPECT_EQ(frictionState(floor, in, {6 * eps, -8 * eps, 0}), FrictionState::Sliding);  // 10 eps
+  EXPECT_EQ(frictionState(floor, above, {0, 0, 0}), FrictionState::None);
+  // k depth = 20 N; the damper takes it back at 4 m/s out of the floor (d = 5 N s/m).
+  EXPECT_EQ(frictionState(floor, in, {10 * eps, 0, 3.9}), FrictionState::Sliding);
+  EXPECT_EQ(frictionState(floor, in, {10 * eps, 0, 4.1}), FrictionState::None);
+  floor.friction = {};
+  EXPECT_EQ(frictionState(floor, in, {10 * eps, 0, 0}), FrictionState::None);
+}
+
+// The bottom layer of the jelly on the scenes' slope (25 degrees): with mu_s 0.6 it is held,
+// creeping at 1.8 eps (3.7 mm/s); with mu_s 0.3 it slides (1.9 m/s at 1 s). The layers above
+// touch nothing.
+TEST(FrictionState, TheJellyOnTheSlopeSticksWithEnoughFrictionAndSlidesWithout) {
+  auto states = [](const char* name, double time) {
+    const WorldFile f = readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/" + name);
+    const Model model = makeModel(f.world, f.state);
+    Simulation run(model, f.state, f.world.integrator, f.world.dt);
+    EXPECT_TRUE(run.advanceTo(time).ran());
+    int count[2][3] = {};  // [bottom layer or not][state]
+    double slip = 0;
+    for (int q = 0; q < kNumPoints; ++q) {
+      const bool bottom = q % kLatticeSize == 0;  // k = 0
+      ++count[bottom][static_cast<int>(frictionStates(model, run.state())[q])];
+      if (bottom)
+        slip = std::max(slip, std::hypot(run.state().v()[q], run.state().v()[kNumPoints + q]));
+    }
+    std::printf("%s at %g s: bottom %d none, %d sticking, %d sliding; largest slip %.3g m/s\n",
+                name, time, count[1][0], count[1][1], count[1][2], slip);
+    EXPECT_EQ(count[0][0], kNumPoints - kLatticeSize * kLatticeSize) << name;
+    return std::vector<int>{count[1][0], count[1][1], count[1][2]};
+  };
+  const std::vector<int> held = states("slope-friction.toml", 1.0);
+  EXPECT_EQ(held[2], 0);
+  EXPECT_GE(held[1], (kLatticeSize - 1) * kLatticeSize);  // the uphill edge may lift off
+  const std::vector<int> sliding = states("slope-slides.toml", 1.0);
+  EXPECT_EQ(sliding[2], kLatticeSize * kLatticeSize);
 }
 
 // Dropped from above onto a sphere's top, the jelly comes to rest on it, its centroid over the

@@ -131,6 +131,26 @@ TEST(Simulation, APullSkipsTheEnergyBoundAndLettingGoRestartsIt) {
   EXPECT_EQ(simulation.step(), 800);
 }
 
+// The viewer's push: every free point gains the velocity, a pinned one keeps its zero to the
+// bit; the energy the push adds is not taken for a divergence.
+TEST(Simulation, AddVelocityMovesEveryFreePointAndNoPinnedOneAndRestartsTheBound) {
+  WorldFile f = readWorldFile(test::dataPath("still.w"));
+  f.world.n = 1;  // the energy bound checked every kEnergyEvery steps
+  Model model = makeModel(f.world, f.state);
+  model.pinned = {pointIndex(0, 0, 0), pointIndex(7, 7, 7)};
+  Simulation simulation(model, f.state, Integrator::RK4, 1e-3);
+  const Vec3 dv{3, -4, 2};
+  simulation.addVelocity(dv);
+  for (int q = 0; q < kNumPoints; ++q) {
+    const bool pinned = q == model.pinned[0] || q == model.pinned[1];
+    const Vec3 v = load(simulation.state().v(), q), expected = load(f.state.v(), q) + dv;
+    EXPECT_EQ(length(v - (pinned ? load(f.state.v(), q) : expected)), 0) << q;
+  }
+  DivergenceGuard fromTheStart(model, f.state);
+  ASSERT_NE(fromTheStart.check(simulation.state(), 0), "") << "the push added too little energy";
+  EXPECT_TRUE(simulation.advance(4 * kEnergyEvery).ran());
+}
+
 // --report's steps T/2^k land on T: stepsForTime counts 2^k of them, as the report's own
 // formula did (floor(T/dt (1 + 1e-12)) whole steps and no remainder), and advanceTo takes them.
 TEST(StepsForTime, AgreesWithTheReportsStepsOfTOverTwoToTheK) {

@@ -12,7 +12,7 @@ cd "$work"
 start_jello --max-frames 5000 "$world"
 
 # The classic keys, none of which may upset the viewer.
-for k in z x e v v s h b s h b c c c r r; do key "$k"; done
+for k in z x e v v s h b s h b c c c c r r; do key "$k"; done
 [ "$(frames)" -eq 0 ] || fail "frames were saved before space was pressed"
 key space
 wait_for '[ "$(frames)" -ge 10 ]' || fail "space did not start saving frames"
