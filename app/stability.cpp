@@ -409,19 +409,10 @@ Linearisation linearise(const Model& model, const State& state) {
   return ends ? *ends : lineariseDensely(stiffness, damping);
 }
 
-Linearisation lineariseAtRest(const World& world) {
-  // Pins change the lattice's modes (no rigid motions are left): its springs and pins alone, at
-  // rest, through the general analysis.
-  if (world.scene && !world.scene->pinned.empty()) {
-    World springs = world;
-    auto pinsOnly = std::make_shared<SceneSpec>();
-    pinsOnly->pinned = world.scene->pinned;
-    pinsOnly->boundsPresent = false;
-    springs.scene = pinsOnly;
-    springs.hasPlane = false;
-    springs.field = {};
-    return linearise(makeModel(springs, restState()), restState());
-  }
+namespace {
+
+// The free lattice's modes at rest, scaled from the unit lattice's (see lineariseAtRest).
+Linearisation freeLatticeAtRest(const World& world) {
   // Eigenvalues of the lattice with unit stiffness and unit mass, computed once: all of them,
   // by the lattice's mirror symmetries (spectrum.h), in milliseconds.
   static const Eigen::VectorXd unitLattice = [] {
@@ -453,6 +444,24 @@ Linearisation lineariseAtRest(const World& world) {
   }
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;
+}
+
+}  // namespace
+
+Linearisation lineariseAtRest(const World& world) {
+  // Pins change the lattice's modes (no rigid motions are left): its springs and pins alone, at
+  // rest, through the general analysis.
+  if (world.scene && !world.scene->pinned.empty()) {
+    World springs = world;
+    auto pinsOnly = std::make_shared<SceneSpec>();
+    pinsOnly->pinned = world.scene->pinned;
+    pinsOnly->boundsPresent = false;
+    springs.scene = pinsOnly;
+    springs.hasPlane = false;
+    springs.field = {};
+    return linearise(makeModel(springs, restState()), restState());
+  }
+  return freeLatticeAtRest(world);
 }
 
 double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
@@ -533,7 +542,9 @@ double largestStrain(const State& state) {
 }
 
 double stableFraction(const World& world, const State& initial) {
-  const Linearisation rest = lineariseAtRest(world);
+  // How damped the fastest mode is for its speed: the free lattice's tells it, pins or not (they
+  // hold a few points of 512, and their lattice's solve takes a second).
+  const Linearisation rest = freeLatticeAtRest(world);
   if (!rest.finite || rest.modes.empty()) return kStableFraction;
   // At rest a mode's damping rate is its omega^2 dElastic / kElastic: the fastest's, over omega.
   const double dampingPerRadian = rest.highestFrequency * world.dElastic / world.kElastic;
@@ -565,13 +576,14 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   Model model = makeModel(world, initial);
   // The two states' analyses are independent (linearise reads the model only): the face on the
   // wall on a second thread halves the wait where a second core is free.
-  std::future<Linearisation> onWall = std::async(std::launch::async, [&model, &world] {
-    lineariseAtRest(world);  // the lattice's first solve, on the lighter thread
-    return linearise(model, faceOnWallState());
+  // The rest lattice's solve (once a process, or a pinned lattice's each time) goes with it.
+  Linearisation wall;
+  std::future<void> other = std::async(std::launch::async, [&] {
+    report.rest = lineariseAtRest(world);
+    wall = linearise(model, faceOnWallState());
   });
   report.initial = linearise(model, initial);
-  Linearisation wall = onWall.get();
-  report.rest = lineariseAtRest(world);
+  other.get();
   report.largestStrain = largestStrain(initial);
   report.stableFraction = stableFraction(world, initial);
   for (Integrator integrator : kExplicitIntegrators) {
