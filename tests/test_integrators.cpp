@@ -415,24 +415,31 @@ TEST(Implicit, StableAtTenTimesRk4sLargestStableStepOnAStiffWorld) {
               stepper.stats().newtonIterations, stepper.stats().steps);
 }
 
-// Central differences of the total force against the analytic Jacobians, on a state that
-// exercises every term: deformed springs with dampers, a point past two walls, points across
-// the plane, a non-uniform field, the user's pull.
-TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
+// A world and state that exercise every term: deformed springs with dampers, a point past two
+// walls, points across the plane, a non-uniform field of random nodes (the pull is the caller's).
+std::pair<World, State> everyTermCase(std::mt19937_64& random, unsigned tumble) {
   World w = test::springsOnlyWorld();
   w.dElastic = 0.8;
   w.hasPlane = true;
   w.plane = {1, 1, 1, 0.6};
   w.field.resolution = 3;
-  std::mt19937_64 random(4);
   std::uniform_real_distribution<double> any(-0.05, 0.05);
   for (int i = 0; i < 27 * 3; ++i) w.field.forces.push_back(any(random));
-  State state = tumblingCube(16, 0.05);
+  State state = tumblingCube(tumble, 0.05);
   for (int c = 0; c < kNumCoords; ++c)
-    state.p()[c] += 0.3;  // centroid on the plane's positive side
-  Model model = makeModel(w, state);
+    state.p()[c] += 0.3;                    // centroid on the plane's positive side
   store(state.p(), 0, {-2.1, 2.05, 0.2});   // past two walls
   store(state.p(), 1, {-0.5, -0.5, -0.5});  // across the plane
+  return {w, state};
+}
+
+// Central differences of the total force against the analytic Jacobians, on a state that
+// exercises every term: deformed springs with dampers, a point past two walls, points across
+// the plane, a non-uniform field, the user's pull.
+TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
+  std::mt19937_64 random(4);
+  auto [w, state] = everyTermCase(random, 16);
+  Model model = makeModel(w, state);
   Pull pull{100, {1, 1, 1}, 300};
   AccelerationJacobian jacobian;
   accelerationJacobian(model, state.p(), state.v(), &pull, &jacobian);
@@ -467,19 +474,10 @@ TEST(Implicit, JacobianMatchesCentralDifferencesOfTheForce) {
 // differences of the force, on a state with every term and the user's pull; and their product
 // with a vector is the matrix's.
 TEST(Implicit, NewtonBlocksAreTheIdentityLessTheScaledJacobians) {
-  World w = test::springsOnlyWorld();
-  w.dElastic = 0.8;
-  w.hasPlane = true;
-  w.plane = {1, 1, 1, 0.6};
-  w.field.resolution = 3;
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> any(-0.05, 0.05);
-  for (int i = 0; i < 27 * 3; ++i) w.field.forces.push_back(any(random));
-  State state = tumblingCube(17, 0.05);
-  for (int c = 0; c < kNumCoords; ++c) state.p()[c] += 0.3;
+  auto [w, state] = everyTermCase(random, 17);
   Model model = makeModel(w, state);
-  store(state.p(), 0, {-2.1, 2.05, 0.2});   // past two walls
-  store(state.p(), 1, {-0.5, -0.5, -0.5});  // across the plane
   Pull pull{100, {1, 1, 1}, 300};
   const double cv = 0.01, cp = 1e-4;
   AccelerationJacobian jacobian;
