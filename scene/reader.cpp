@@ -207,6 +207,8 @@ void readField(const Reader& r, const toml::table& root, ForceField* field) {
     if (present->value<bool>() != std::optional<bool>(false))
       r.fail(*present, "field.present",
              "expected false (no field; a field gives expression or uniform)");
+    if (const toml::node* resolution = t->get("resolution"))
+      r.fail(*resolution, "field.resolution", "a field that is not present has no resolution");
     *field = ForceField{};
     return;
   }

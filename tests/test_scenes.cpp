@@ -444,6 +444,8 @@ const Malformed kMalformed[] = {
     {"[field]\nuniform = [0, 0, 1]\nresolution = 1\n",
      "test.toml:3: expected a whole number from 2 to 100 (field.resolution)"},
     {"[field]\nexpression = 3\n", "test.toml:2: expected a string"},
+    {"[field]\npresent = false\nresolution = 4\n",
+     "test.toml:3: a field that is not present has no resolution (field.resolution)"},
     {"[field]\nuniform = [0, 0, 1]\nresolution = 101\n", "(field.resolution)"},
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
