@@ -80,7 +80,9 @@ struct Given {
 };
 
 void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
-  g->worldOption = app.add_option("WORLD", c->run.worldPath, "world file (.w)")->check(kNonEmpty);
+  g->worldOption = app.add_option("WORLD", c->run.worldPath,
+                                  "world file (.w), or scene file (.toml: docs/scenes.md)")
+                       ->check(kNonEmpty);
   app.add_flag("--headless", c->headless, "run without a window");
   g->stepsOption =
       app.add_option("--steps", g->steps,
@@ -221,6 +223,9 @@ int chooseMode(const Given& g, JelloCommand* c) {
   const bool analysis = *g.benchOption || *g.checkOption || *g.reportOption;
   if (*g.fpsOption && (analysis || (c->headless && !*g.framesOption && !*g.exportOption)))
     return refuse("--fps goes with --frames or --export (or the window, where space records)");
+  if ((*g.cameraOption || *g.colouringOption) && (analysis || (c->headless && !*g.framesOption)))
+    return refuse(std::string(*g.cameraOption ? "--camera" : "--colouring") +
+                  " goes with --frames or the window, where pictures are drawn");
   if (*g.exportOption && analysis)
     return refuse(
         "--export goes with a run (headless or the window), not with --check, --report "
