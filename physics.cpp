@@ -76,7 +76,9 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
     scene.plane = plane.get();
     scene.terms.push_back(std::move(plane));
   } else {
-    scene.leftOut.push_back("plane (none in the file)");
+    // In a scene, the course world's inclined plane, not the scene's own [[plane]] obstacles.
+    scene.leftOut.push_back(spec ? "the course's inclined plane (none in the world)"
+                                 : "plane (none in the file)");
   }
   addField(world, choice, &scene);
   if (spec) addSceneTerms(world, *spec, &scene);

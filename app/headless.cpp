@@ -267,6 +267,13 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
     } catch (const std::exception& e) {
       return failed(e.what());
     }
+    // A course world holds no gravity, obstacles, pins or bounds: said, so that nobody runs the
+    // dump alone and wonders why the jelly floats.
+    if (world.scene)
+      printError("note: " + *options.dumpPath +
+                 " holds the state and the course parameters, not the scene's gravity, "
+                 "obstacles, pins or bounds; a scene with world = \"" +
+                 *options.dumpPath + "\" and those keys continues from it");
   }
   return succeeded();
 }
