@@ -346,8 +346,12 @@ void readBounds(const Reader& r, const toml::table& root, ContactSpring spring, 
     spec->boundsPresent = present->value<bool>().value_or(true);
   }
   const bool sized = t->get("lower") || t->get("upper");
-  const bool changed =
-      sized || t->get("stiffness") || t->get("damping") || t->get("friction_static");
+  const bool changed = t->size() > (t->get("present") ? 1u : 0u);  // any key but present
+  if (!spec->boundsPresent && changed)
+    for (auto&& [key, node] : *t)
+      if (key.str() != "present")
+        r.fail(node, "bounds." + std::string(key.str()),
+               "a bounding box that is not present takes no other key");
   if (!spec->boundsPresent || !changed) return;
   Obstacle o;
   o.shape = ObstacleShape::Container;

@@ -424,6 +424,11 @@ const Malformed kMalformed[] = {
     {"[[pin]]\ni = [0, 0]\nlower = [0, 0, 0]\n",
      "give lattice ranges (i, j, k) or a region (lower, upper), not both"},
     {"[bounds]\npresent = 1\n", "test.toml:2: expected true or false (bounds.present)"},
+    {"[bounds]\npresent = false\nfriction_static = 0.5\n",
+     "test.toml:3: a bounding box that is not present takes no other key (bounds.friction_static)"},
+    {"[bounds]\nfriction_dynamic = 0.5\n",
+     "test.toml:2: must be at most friction_static (dynamic friction is the weaker) "
+     "(bounds.friction_dynamic)"},
     {"[bounds]\nlower = [0, 0, 0]\nupper = [-1, 1, 1]\n",
      "test.toml:3: must be above lower on every axis (bounds.upper)"},
     {"[bounds]\nlower = [3, 0, 0]\n",
