@@ -28,6 +28,7 @@
 #include "core/outcome.h"
 #include "core/output.h"
 #include "physics.h"
+#include "scene/reader.h"
 
 namespace {
 
@@ -287,11 +288,21 @@ void addStateOptions(CLI::App& app, Options& o) {
   o.sizeOption->excludes(o.fromOption);
 }
 
+// A course world file; a scene is refused by name (read as a .w file it would fail on its first
+// line, saying nothing of why).
+jello::WorldFile readCourseWorld(const std::string& path) {
+  if (jello::isSceneFile(path))
+    throw jello::WorldFileError(path +
+                                ": a scene file; createWorld reads and writes course worlds (.w), "
+                                "and jello runs scenes (docs/scenes.md)");
+  return jello::readWorldFile(path);
+}
+
 // createWorld --describe WORLD.
 jello::Outcome printDescription(const Options& o) {
   jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
   if (!o.output.empty()) return jello::failed("--describe reads a world; it does not go with -o");
-  jello::WorldFile file = jello::readWorldFile(o.describe);
+  jello::WorldFile file = readCourseWorld(o.describe);
   std::printf("%s\n%s", o.describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
   return jello::succeeded();
 }
@@ -301,7 +312,7 @@ jello::Recipe startingRecipe(const Options& o) {
   jello::Recipe recipe = jello::defaultRecipe();
   if (*o.presetOption) recipe = jello::coursePreset(o.preset);
   if (*o.fromOption) {
-    jello::WorldFile base = jello::readWorldFile(o.from);
+    jello::WorldFile base = readCourseWorld(o.from);
     // The field is moved, never copied: createWorld holds one field at a time.
     recipe.field.source = jello::FieldRecipe::Source::Given;
     recipe.field.given = std::move(base.world.field);
@@ -380,7 +391,7 @@ jello::Outcome applyField(const Options& o, double mass, jello::FieldRecipe& fie
   }
   if (*o.fieldFromOption) {
     field.source = Source::Given;
-    field.given = jello::readWorldFile(o.fieldFrom).world.field;
+    field.given = readCourseWorld(o.fieldFrom).world.field;
   }
   return jello::succeeded();
 }

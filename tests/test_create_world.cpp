@@ -489,6 +489,23 @@ TEST(CreateWorld, GravityIsWrittenAsTheForceMassTimesGAndDescribedAsBoth) {
   test::removeTree(dir);
 }
 
+// A scene file given where createWorld reads a course world is refused by name, in one line.
+TEST(Describe, ASceneFileIsRefusedByName) {
+  const std::string scene = std::string(JELLO_SOURCE_DIR) + "/scenes/hanging.toml";
+  const std::string dir = test::makeTempDir();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{JELLO_CREATE_WORLD, "--describe", scene},
+        std::vector<std::string>{JELLO_CREATE_WORLD, "--from", scene, "-o", dir + "/x.w"}}) {
+    const test::CommandResult r = test::runProgram(args);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "createWorld: " + scene +
+                         ": a scene file; createWorld reads and writes course worlds (.w), and "
+                         "jello runs scenes (docs/scenes.md)\n");
+  }
+  EXPECT_NE(::access((dir + "/x.w").c_str(), F_OK), 0) << "nothing written";
+  test::removeTree(dir);
+}
+
 TEST(Describe, RecognisesTheCourseFields) {
   const std::pair<const char*, const char*> expected[] = {
       {"rotate.w", "swirl about z, F = 0.0097"},
