@@ -107,7 +107,7 @@ std::string limitTable(const StabilityReport& r) {
     std::snprintf(line, sizeof line, "  %-12s %-23s %-22s %s\n",
                   integratorName(kExplicitIntegrators[i]), limitText(r.criticalRest[i]).c_str(),
                   limitText(r.criticalInitial[i]).c_str(),
-                  limitText(r.criticalFaceOnWall[i]).c_str());
+                  r.courseWalls ? limitText(r.criticalFaceOnWall[i]).c_str() : "(no course walls)");
     out += line;
   }
   for (const IntegratorInfo& row : integratorTable()) {
@@ -577,10 +577,12 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   // The two states' analyses are independent (linearise reads the model only): the face on the
   // wall on a second thread halves the wait where a second core is free.
   // The rest lattice's solve (once a process, or a pinned lattice's each time) goes with it.
+  // A scene without the course's walls (none, or a box of its own) has no wall at x = -2.
+  report.courseWalls = !world.scene || (world.scene->boundsPresent && !world.scene->bounds);
   Linearisation wall;
   std::future<void> other = std::async(std::launch::async, [&] {
     report.rest = lineariseAtRest(world);
-    wall = linearise(model, faceOnWallState());
+    if (report.courseWalls) wall = linearise(model, faceOnWallState());
   });
   report.initial = linearise(model, initial);
   other.get();
@@ -590,7 +592,8 @@ StabilityReport analyseStability(const World& world, const State& initial) {
     report.criticalInitial.push_back(
         report.initial.finite ? criticalStep(integrator, report.initial.modes) : NAN);
     report.criticalRest.push_back(criticalStep(integrator, report.rest.modes));
-    report.criticalFaceOnWall.push_back(criticalStep(integrator, wall.modes));
+    report.criticalFaceOnWall.push_back(report.courseWalls ? criticalStep(integrator, wall.modes)
+                                                           : NAN);
   }
   return report;
 }

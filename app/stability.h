@@ -119,6 +119,9 @@ struct StabilityReport {
   Linearisation rest, initial;
   std::vector<double> criticalRest, criticalInitial, criticalFaceOnWall;  // by kExplicitIntegrators
   double largestStrain = 0;                                               // at the initial state
+  // Whether the course's walls hold the jelly (a scene may have none, or a box of its own):
+  // criticalFaceOnWall is NaN where not.
+  bool courseWalls = true;
   double stableFraction = kStableFraction;  // of verdictLimit, see above
   // The headline limit: at rest, the state every damped world settles towards (a deformed start
   // or a contact may lower it for a while: see criticalInitial, criticalFaceOnWall). Infinite

@@ -221,6 +221,22 @@ TEST(Pins, TheStabilityAnalysisSeesOnlyTheFreeCoordinates) {
     EXPECT_NEAR(report.criticalRest[i], report.criticalInitial[i], 1e-9 * report.criticalRest[i]);
 }
 
+// --check's "face on a wall" column is the course's wall at x = -2: a scene without those walls
+// (none, or a box of its own) has no such column, rather than a figure for a wall it lacks.
+TEST(SceneFile, CheckHasAWallColumnOnlyWithTheCourseWalls) {
+  const std::pair<const char*, bool> cases[] = {{"", true},
+                                                {"[bounds]\npresent = false\n", false},
+                                                {"[bounds]\nlower = [-3, -3, -3]\n", false}};
+  for (const auto& c : cases) {
+    const WorldFile f = scene(c.first);
+    const StabilityReport report = analyseStability(f.world, f.state);
+    EXPECT_EQ(report.courseWalls, c.second) << c.first;
+    EXPECT_EQ(std::isnan(report.criticalFaceOnWall[0]), !c.second) << c.first;
+    const std::string text = stabilityText("s.toml", f.world, report);
+    EXPECT_EQ(text.find("(no course walls)") != std::string::npos, !c.second) << text;
+  }
+}
+
 // Each integrator's error against a fine RK4 run at two steps, on a jelly hanging from a pinned
 // edge under gravity (smooth: no contact): the fitted order is the integrator's.
 TEST(Pins, EveryIntegratorKeepsItsOrderOnAScenWithPins) {
