@@ -912,11 +912,12 @@ std::string otherLimitsText(const World& world, const StabilityReport& r) {
   auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
   if (at != kExplicitIntegrators.end()) {
     std::size_t i = static_cast<std::size_t>(at - kExplicitIntegrators.begin());
-    if (world.dt > r.criticalInitial[i]) {
+    // Only a limit below the headline one (at rest) says something the verdict has not.
+    if (world.dt > r.criticalInitial[i] && r.criticalInitial[i] < r.criticalRest[i]) {
       out += "  at the initial state the limit is " + limitText(r.criticalInitial[i]) +
              " s: the start's deformation may destabilise this step for a while\n";
     }
-    if (world.dt > r.criticalFaceOnWall[i]) {
+    if (world.dt > r.criticalFaceOnWall[i] && r.criticalFaceOnWall[i] < r.criticalRest[i]) {
       out += "  while a face presses on a wall the limit is " + limitText(r.criticalFaceOnWall[i]) +
              " s: contact may destabilise this step\n";
     }

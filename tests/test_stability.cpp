@@ -97,6 +97,32 @@ TEST(Stability, VerdictsAndSuggestions) {
   EXPECT_EQ(std::string(verdictName(Verdict::NearLimit)), "marginal");
 }
 
+// The start's and the wall's limits are warned about only when they are below the one at rest,
+// which the verdict already compares the step with: above it, they would repeat the verdict.
+TEST(Stability, TheStartAndTheWallAreWarnedAboutOnlyBelowTheLimitAtRest) {
+  World w;
+  w.integrator = Integrator::RK4;
+  const std::size_t n = integratorsWithStepLimit().size();
+  auto report = [n](double rest, double initial, double wall) {
+    StabilityReport r;
+    r.criticalRest.assign(n, rest);
+    r.criticalInitial.assign(n, initial);
+    r.criticalFaceOnWall.assign(n, wall);
+    return r;
+  };
+  const char* start = "at the initial state the limit is";
+  const char* contact = "while a face presses on a wall";
+  auto says = [&](double dt, const StabilityReport& r, const char* what) {
+    w.dt = dt;
+    return stabilityText("w.w", w, r).find(what) != std::string::npos;
+  };
+  EXPECT_TRUE(says(0.0015, report(0.002, 0.001, 0.003), start));
+  EXPECT_FALSE(says(0.0015, report(0.002, 0.001, 0.003), contact));
+  EXPECT_TRUE(says(0.0015, report(0.002, 0.003, 0.001), contact));
+  EXPECT_FALSE(says(0.5, report(0.002, 0.002, 0.002), start)) << "the start at rest";
+  EXPECT_FALSE(says(0.5, report(0.002, 0.002, 0.002), contact));
+}
+
 TEST(Stability, AnObservedLimitNeedingMoreStepsThanARunMayTakeIsNotAttempted) {
   // Runs of 1000 s at a third of 3e-10 s would be 1e13 steps: before, the map started them.
   WorldFile f = readWorldFile(test::dataPath("jello.w"));
