@@ -230,6 +230,9 @@ void readField(const Reader& r, const toml::table& root, ForceField* field) {
   } else {
     const std::optional<std::string> text = node.value<std::string>();
     if (!text) r.fail(node, "field.expression", "expected a string \"fx; fy; fz\"");
+    if (text->size() > kMostFieldExpressionBytes)
+      r.fail(node, "field.expression",
+             "longer than " + std::to_string(kMostFieldExpressionBytes) + " characters");
     recipe.source = FieldRecipe::Source::Expression;
     recipe.expression = *text;
   }

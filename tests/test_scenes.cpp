@@ -65,6 +65,19 @@ TEST(SceneFile, AFieldFromExpressionsUniformOrNone) {
     EXPECT_EQ(f.y, x + z * z) << n;
     EXPECT_EQ(f.z, 0.5) << n;
   }
+  // The expressions are evaluated at every node as the scene is read: their length is capped.
+  std::string longest = "1";  // "1+1+...+1 ": kMostFieldExpressionBytes - 6 characters
+  while (longest.size() + 2 <= kMostFieldExpressionBytes - 6) longest += "+1";
+  longest.resize(kMostFieldExpressionBytes - 6, ' ');
+  EXPECT_EQ(scene("[field]\nexpression = \"" + longest + "; 0; 0\"\nresolution = 2\n")
+                .world.field.resolution,
+            2);
+  try {
+    scene("[field]\nexpression = \"" + longest + "1; 0; 0\"\n");
+    ADD_FAILURE() << "an expression of 1001 characters was accepted";
+  } catch (const WorldFileError& e) {
+    EXPECT_STREQ(e.what(), "test.toml:2: longer than 1000 characters (field.expression)");
+  }
   const WorldFile uniform = scene("[field]\nuniform = [0, 0, -0.02]\n");
   EXPECT_EQ(uniform.world.field.resolution, 30);
   EXPECT_EQ(uniform.world.field.node(1234).z, -0.02);
@@ -463,11 +476,11 @@ const Malformed kMalformed[] = {
      "test.toml:1: give one of expression, uniform or present = false (field)"},
     {"[field]\npresent = true\n", "test.toml:2: expected false"},
     {"[field]\nuniform = [0, 0, 1]\nresolution = 1\n",
-     "test.toml:3: expected a whole number from 2 to 100 (field.resolution)"},
+     "test.toml:3: expected a whole number from 2 to 64 (field.resolution)"},
     {"[field]\nexpression = 3\n", "test.toml:2: expected a string"},
     {"[field]\npresent = false\nresolution = 4\n",
      "test.toml:3: a field that is not present has no resolution (field.resolution)"},
-    {"[field]\nuniform = [0, 0, 1]\nresolution = 101\n", "(field.resolution)"},
+    {"[field]\nuniform = [0, 0, 1]\nresolution = 65\n", "(field.resolution)"},
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
     {"[jelly\n", "test.toml:1:"},
