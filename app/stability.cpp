@@ -147,9 +147,7 @@ SparseMatrix negatedSymmetricPart(const SparseMatrix& m) {
 // both zeroed its coordinates are zero eigenvalues, left out with the rigid motions.
 SparseMatrix withoutPinned(SparseMatrix m, const std::vector<int>& pinned) {
   if (pinned.empty()) return m;
-  std::vector<char> isPinned(kNumCoords, 0);
-  for (int q : pinned)
-    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+  const std::vector<char> isPinned = pinnedCoordinates(pinned);
   m.prune([&](Eigen::Index row, Eigen::Index column, double) {
     return !isPinned[row] && !isPinned[column];
   });
@@ -436,11 +434,7 @@ Linearisation freeLatticeAtRest(const World& world) {
     double mu = unitLattice[i];
     if (mu <= rigid) continue;
     Mode m{mu * world.kElastic / world.mass, mu * world.dElastic / world.mass};
-    if (m.omegaSquared <= 0) continue;
-    out.modes.push_back(m);
-    out.highestFrequency = std::max(out.highestFrequency, std::sqrt(m.omegaSquared));
-    out.lowestDamping = std::min(out.lowestDamping, m.damping);
-    out.highestDamping = std::max(out.highestDamping, m.damping);
+    if (m.omegaSquared > 0) addMode(m, &out);
   }
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;

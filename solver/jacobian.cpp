@@ -17,6 +17,13 @@ Mat3 toMatrix(const Block3& block) {
   return m;
 }
 
+std::vector<char> pinnedCoordinates(const std::vector<int>& pinned) {
+  std::vector<char> isPinned(kNumCoords, 0);
+  for (int q : pinned)
+    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+  return isPinned;
+}
+
 namespace {
 
 // Every (row, column) block of the pattern, in the order of AccelerationJacobian::blockSlots.
@@ -30,41 +37,37 @@ std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
   return blocks;
 }
 
-// The pattern of `blocks` as a sparse matrix of zeros, in either storage order.
-template <class Matrix>
-Matrix patternMatrix(const std::vector<std::pair<int, int>>& blocks) {
+// The pattern of `blocks` as a sparse matrix of zeros.
+SparseMatrix patternMatrix(const std::vector<std::pair<int, int>>& blocks) {
   std::vector<Eigen::Triplet<double>> entries;
   for (auto [row, column] : blocks)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
-  Matrix pattern(kNumCoords, kNumCoords);
+  SparseMatrix pattern(kNumCoords, kNumCoords);
   pattern.setFromTriplets(entries.begin(), entries.end());
   pattern.makeCompressed();
   return pattern;
 }
 
-// Where every block's entries, and every diagonal entry, are in `pattern`'s value array.
-template <class Matrix>
-void findSlots(const std::vector<std::pair<int, int>>& blocks, const Matrix& pattern,
-               std::vector<BlockSlots>* blockSlots, std::vector<int>* diagonal) {
+// Where every block's entries are in `pattern`'s value array (column-major).
+std::vector<BlockSlots> findSlots(const std::vector<std::pair<int, int>>& blocks,
+                                  const SparseMatrix& pattern) {
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
   auto find = [&](int row, int column) {
-    const int major = Matrix::IsRowMajor ? row : column, minor = Matrix::IsRowMajor ? column : row;
-    const int* at = std::lower_bound(inner + outer[major], inner + outer[major + 1], minor);
+    const int* at = std::lower_bound(inner + outer[column], inner + outer[column + 1], row);
     return static_cast<int>(at - inner);
   };
-  blockSlots->clear();
+  std::vector<BlockSlots> slots;
   for (auto [row, column] : blocks) {
-    BlockSlots slots;
+    BlockSlots block;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        slots[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
-    blockSlots->push_back(slots);
+        block[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
+    slots.push_back(block);
   }
-  diagonal->resize(kNumCoords);
-  for (int i = 0; i < kNumCoords; ++i) (*diagonal)[i] = find(i, i);
+  return slots;
 }
 
 void addBlock(double* values, const BlockSlots& slots, const Block3& block, double scale) {
@@ -82,65 +85,70 @@ std::size_t patternBlockCount(const Model& model) {
   return blocks;
 }
 
-// Pair blocks go straight into the matrices (their slots in order); point blocks are summed
-// over the terms first, then written once, as the point's whole force would be. `Write` puts a
-// block's derivatives by position and by velocity, times a sign, at the block's slots:
-// write(slots, dFdp, dFdv, sign).
-template <class Write>
-class Assembly final : public JacobianSink {
+// What both assemblies share: the point terms' blocks are summed per point over the terms
+// (into the caller's scratch), then taken once per point with the user's pull added (a spring to
+// a fixed target: -stiffness I), as the point's whole force is.
+class PointSums : public JacobianSink {
  public:
-  Assembly(const std::vector<BlockSlots>& slots, std::vector<Block3>* pointP,
-           std::vector<Block3>* pointV, Write write)
-      : slots_(slots), pointP_(*pointP), pointV_(*pointV), write_(write) {
+  PointSums(std::vector<Block3>* pointP, std::vector<Block3>* pointV)
+      : pointP_(*pointP), pointV_(*pointV) {
     pointP_.assign(kNumPoints, Block3{});
     pointV_.assign(kNumPoints, Block3{});
-  }
-  void addPair(const Block3& dFdL, const Block3& dFdw) override {
-    JELLO_ASSERT(slot_ + 4 + kNumPoints <= slots_.size());
-    for (double sign : {1.0, -1.0, -1.0, 1.0})  // aa, ab, ba, bb
-      write_(slots_[slot_++], dFdL, dFdw, sign);
   }
   void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
     accumulate(&pointP_[q], dFdp);
     accumulate(&pointV_[q], dFdv);
   }
-  // The diagonal blocks, with the user's pull (a spring to a fixed target: -stiffness I).
+
+ protected:
+  // Point q's blocks by position (the pull included) and by velocity; once per point.
+  const Block3& byPosition(int q, const Pull* pull) {
+    if (pull && pull->point == q)
+      for (int axis = 0; axis < 3; ++axis) pointP_[q].m[4 * axis] -= pull->stiffness;
+    return pointP_[q];
+  }
+  const Block3& byVelocity(int q) const { return pointV_[q]; }
+
+ private:
+  std::vector<Block3>&pointP_, &pointV_;
+};
+
+// dA/dp and dA/dv as sparse matrices: pair blocks go straight in (their slots in order), then
+// the points' blocks, scaled by 1/mass.
+class Assembly final : public PointSums {
+ public:
+  Assembly(AccelerationJacobian* out, double perMass)
+      : PointSums(&out->pointP, &out->pointV), out_(*out), perMass_(perMass) {}
+  void addPair(const Block3& dFdL, const Block3& dFdw) override {
+    JELLO_ASSERT(slot_ + 4 + kNumPoints <= out_.blockSlots.size());
+    for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
+      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], dFdL, sign * perMass_);
+      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], dFdw, sign * perMass_);
+      ++slot_;
+    }
+  }
   void finish(const Pull* pull) {
     // Every pair term gave as many pairs as it listed when the pattern was built.
-    JELLO_ASSERT(slot_ + kNumPoints == slots_.size());
+    JELLO_ASSERT(slot_ + kNumPoints == out_.blockSlots.size());
     for (int q = 0; q < kNumPoints; ++q, ++slot_) {
-      Block3& blockP = pointP_[q];
-      if (pull && pull->point == q)
-        for (int axis = 0; axis < 3; ++axis) blockP.m[4 * axis] -= pull->stiffness;
-      write_(slots_[slot_], blockP, pointV_[q], 1.0);
+      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], byPosition(q, pull), perMass_);
+      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], byVelocity(q), perMass_);
     }
   }
 
  private:
-  const std::vector<BlockSlots>& slots_;
-  std::vector<Block3>&pointP_, &pointV_;
-  Write write_;
+  AccelerationJacobian& out_;
+  double perMass_;
   std::size_t slot_ = 0;
 };
 
 // A pinned point's acceleration is 0 whatever the state (physics.cpp's derivative): its rows are
 // zero. (IMPLICIT's Newton step then leaves its velocity at 0.)
 void zeroPinnedRows(const std::vector<int>& pinned, AccelerationJacobian* out) {
-  std::vector<char> isPinned(kNumCoords, 0);
-  for (int q : pinned)
-    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+  const std::vector<char> isPinned = pinnedCoordinates(pinned);
   for (SparseMatrix* m : {&out->dAdp, &out->dAdv})
     for (Eigen::Index e = 0; e < m->nonZeros(); ++e)
       if (isPinned[m->innerIndexPtr()[e]]) m->valuePtr()[e] = 0;
-}
-
-template <class Write>
-void assemble(const Model& model, const double* p, const double* v, const Pull* pull,
-              const std::vector<BlockSlots>& slots, std::vector<Block3>* pointP,
-              std::vector<Block3>* pointV, Write write) {
-  Assembly<Write> assembly(slots, pointP, pointV, write);
-  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
-  assembly.finish(pull);
 }
 
 }  // namespace
@@ -150,53 +158,40 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
   // The pattern is made once per model shape; later calls only check that it still fits.
   if (out->blockSlots.size() != patternBlockCount(model)) {
     const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
-    out->dAdp = patternMatrix<SparseMatrix>(blocks);
+    out->dAdp = patternMatrix(blocks);
     out->dAdv = out->dAdp;
-    findSlots(blocks, out->dAdp, &out->blockSlots, &out->diagonal);
+    out->blockSlots = findSlots(blocks, out->dAdp);
   }
-  double* dp = out->dAdp.valuePtr();
-  double* dv = out->dAdv.valuePtr();
-  std::fill(dp, dp + out->dAdp.nonZeros(), 0.0);
-  std::fill(dv, dv + out->dAdv.nonZeros(), 0.0);
-  const double perMass = 1.0 / model.world.mass;
-  assemble(model, p, v, pull, out->blockSlots, &out->pointP, &out->pointV,
-           [dp, dv, perMass](const BlockSlots& slots, const Block3& dFdp, const Block3& dFdv,
-                             double sign) {
-             addBlock(dp, slots, dFdp, sign * perMass);
-             addBlock(dv, slots, dFdv, sign * perMass);
-           });
+  std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
+  std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
+  Assembly assembly(out, 1.0 / model.world.mass);
+  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
+  assembly.finish(pull);
   if (!model.pinned.empty()) zeroPinnedRows(model.pinned, out);
 }
 
 namespace {
 
-// Block B of each pair, as the terms give them, and the point terms' blocks summed per point.
-class BlockAssembly final : public JacobianSink {
+// Block B of each pair, as the terms give them, and each point's diagonal block.
+class BlockAssembly final : public PointSums {
  public:
   BlockAssembly(NewtonBlocks* out, double byPosition, double byVelocity)
-      : out_(*out), byPosition_(byPosition), byVelocity_(byVelocity) {
-    out_.pointP.assign(kNumPoints, Block3{});
-    out_.pointV.assign(kNumPoints, Block3{});
-  }
+      : PointSums(&out->pointP, &out->pointV),
+        out_(*out),
+        byPosition_(byPosition),
+        byVelocity_(byVelocity) {}
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
     JELLO_ASSERT(pair_ < out_.pair.size());
     Block3& b = out_.pair[pair_++];
     for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * dFdL.m[e] + byVelocity_ * dFdw.m[e];
   }
-  void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
-    accumulate(&out_.pointP[q], dFdp);
-    accumulate(&out_.pointV[q], dFdv);
-  }
-  // The diagonal blocks: the identity, the point terms and the user's pull (-stiffness I).
+  // The diagonal blocks: the identity and the point terms' (the pull's included).
   void finish(const Pull* pull) {
     JELLO_ASSERT(pair_ == out_.pair.size());
     for (int q = 0; q < kNumPoints; ++q) {
-      Block3& blockP = out_.pointP[q];
-      if (pull && pull->point == q)
-        for (int axis = 0; axis < 3; ++axis) blockP.m[4 * axis] -= pull->stiffness;
+      const Block3 &p = byPosition(q, pull), &v = byVelocity(q);
       Block3& b = out_.point[q];
-      for (int e = 0; e < 9; ++e)
-        b.m[e] = byPosition_ * blockP.m[e] + byVelocity_ * out_.pointV[q].m[e];
+      for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * p.m[e] + byVelocity_ * v.m[e];
       for (int axis = 0; axis < 3; ++axis) b.m[4 * axis] += 1;
     }
   }
@@ -254,11 +249,10 @@ void newtonBlocks(const Model& model, const double* p, const double* v, const Pu
 }
 
 SparseMatrix sparseOf(const NewtonBlocks& blocks) {
-  std::vector<char> isPinned(kNumPoints, 0);
-  for (int q : blocks.pinned) isPinned[q] = 1;
+  const std::vector<char> isPinned = pinnedCoordinates(blocks.pinned);
   std::vector<Eigen::Triplet<double>> entries;
   auto add = [&](int row, int column, const Block3& b, double sign) {
-    if (isPinned[row]) return;
+    if (isPinned[coordIndex(row, 0)]) return;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         entries.emplace_back(coordIndex(row, i), coordIndex(column, j), sign * b.m[3 * i + j]);

@@ -19,6 +19,9 @@ using Mat3 = Eigen::Matrix3d;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using BlockSlots = std::array<int, 9>;
 
+// 1 at each coordinate (coordIndex) of a pinned point, 0 elsewhere: kNumCoords flags.
+std::vector<char> pinnedCoordinates(const std::vector<int>& pinned);
+
 // A term's block as an Eigen matrix.
 Mat3 toMatrix(const Block3& block);
 
@@ -32,7 +35,6 @@ struct AccelerationJacobian {
   // bb) of every pair in order, then the diagonal block of every point. A block's rows are
   // not adjacent in the per-point layout (see coordIndex), so each entry has its own slot.
   std::vector<BlockSlots> blockSlots;
-  std::vector<int> diagonal;  // value index of each diagonal entry
   std::vector<Block3> pointP,
       pointV;  // scratch: each point's diagonal block, summed over the terms
 };
