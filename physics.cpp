@@ -64,12 +64,12 @@ Scene buildScene(const World& world, const State& initial, KernelChoice choice) 
   scene.terms.push_back(std::move(springs));
   const ContactSpring contact{world.kCollision, world.dCollision};
   const SceneSpec* spec = world.scene.get();
-  if (spec && !spec->boundsPresent)
-    scene.leftOut.push_back("walls (the scene has no bounding box)");
-  else if (spec && spec->bounds)
+  if (hasCourseWalls(spec))
+    scene.terms.push_back(std::make_unique<WallsTerm>(contact));
+  else if (spec->bounds)
     scene.terms.push_back(std::make_unique<ObstacleTerm>(*spec->bounds));
   else
-    scene.terms.push_back(std::make_unique<WallsTerm>(contact));
+    scene.leftOut.push_back("walls (the scene has no bounding box)");
   if (world.hasPlane) {
     auto plane =
         std::make_unique<PlaneTerm>(world.plane, allowedSide(world.plane, initial.p()), contact);

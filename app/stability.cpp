@@ -572,7 +572,7 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   // wall on a second thread halves the wait where a second core is free.
   // The rest lattice's solve (once a process, or a pinned lattice's each time) goes with it.
   // A scene without the course's walls (none, or a box of its own) has no wall at x = -2.
-  report.courseWalls = !world.scene || (world.scene->boundsPresent && !world.scene->bounds);
+  report.courseWalls = hasCourseWalls(world.scene.get());
   Linearisation wall;
   std::future<void> other = std::async(std::launch::async, [&] {
     report.rest = lineariseAtRest(world);

@@ -27,4 +27,10 @@ struct SceneSpec {
   std::optional<Obstacle> bounds;
 };
 
+// Whether the course's walls of [-2,2]^3 hold the jelly: a course world (no scene), or a scene
+// that neither removes its bounding box nor gives one of its own.
+inline bool hasCourseWalls(const SceneSpec* spec) {
+  return !spec || (spec->boundsPresent && !spec->bounds);
+}
+
 }  // namespace jello
