@@ -99,7 +99,7 @@ bench: programs
 fuzz: deps
 	cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_FUZZ=ON \
 		-DJELLO_TESTS=OFF -DJELLO_GRAPHICS=OFF
-	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_world_reader fuzz_field_expression fuzz_command_line fuzz_scene_reader
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_world_reader fuzz_field_expression fuzz_command_line fuzz_scene_reader fuzz_obj_voxels
 	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 clean:

@@ -548,14 +548,16 @@ std::optional<WorldProblem> findWorldProblem(const World& w, const State& state)
   const std::pair<const double*, Part> arrays[] = {{state.p(), Part::Position},
                                                    {state.v(), Part::Velocity}};
   for (auto [points, part] : arrays) {
-    for (int q = 0; q < kNumPoints; ++q) {
-      const Vec3 a = load(points, q);
+    const int n = state.points();
+    for (int q = 0; q < n; ++q) {
+      const Vec3 a = load(points, q, n);
       const double value[3] = {a.x, a.y, a.z};
       if (finite3(value)) continue;
       const bool position = part == Part::Position;
+      const std::string label = n == kNumPoints ? latticeLabel(q) : std::to_string(q);
       return WorldProblem{part, static_cast<std::size_t>(q),
                           std::string(position ? "the position" : "the velocity") + " of point " +
-                              latticeLabel(q) + " is " + triple(value, position ? "m" : "m/s") +
+                              label + " is " + triple(value, position ? "m" : "m/s") +
                               ", not finite"};
     }
   }

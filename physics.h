@@ -65,11 +65,20 @@ struct Model {
   Model& operator=(const Model&) = delete;
 
   const std::vector<Spring>& springs() const { return scene.springs->springs(); }
+  // The body (body.h): the course cube, or a scene's. It lives as long as the world's scene.
+  const Body& body() const;
+  int points() const { return scene.springs->pointCount(); }
+  int coords() const { return 3 * points(); }
   // The plane as the forces use it (normalisedPlane of the world's; only when the world has
   // one), and the sign of a*x + b*y + c*z + d on its allowed side (+1 or -1; +1 without one).
   const Plane& plane() const { return scene.plane->plane(); }
   double planeSide() const { return scene.plane ? scene.plane->side() : 1; }
 };
+// The body of a world: its scene's, or the course cube.
+const Body& bodyOf(const World& world);
+// The springs' constants: a scene's per kind, or the world's kElastic and dElastic for all.
+SpringConstants springConstantsOf(const World& world);
+// `initial` holds the body's points.
 Model makeModel(const World& world, const State& initial,
                 KernelChoice choice = KernelChoice::Specialised);
 
@@ -96,11 +105,15 @@ void computeForces(const Model& model, const double* p, const double* v, double*
 // The same on the points of `points` alone (force elsewhere is left as it was), with `reach` the
 // bounds of all the positions when the scene culls (null when it does not): what computeForces
 // does, a range at a time, bit for bit.
+// springForce: the spring list's forces a spring at a time (SpringTerm::listSpringForces), to
+// gather rather than compute; null to compute them.
 void computeForcesOn(const Model& model, PointRange points, const double* p, const double* v,
-                     const Bounds* reach, double* force, const Pull* pull);
+                     const Bounds* reach, double* force, const Pull* pull,
+                     const double* springForce = nullptr);
 
-// The derivative of a state y = [p; v] (2*kNumCoords doubles): dp/dt = v, dv/dt = F/mass. With a
-// team, its two threads take half the points each (balancedSplitPoint), with the same result.
+// The derivative of a state y = [p; v] (2 * model.coords() doubles): dp/dt = v, dv/dt = F/mass.
+// With a team, its two threads take half the points each (balancedSplitPoint for the course
+// cube's row kernel, halves of a spring list's points), with the same result.
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr,
                 Team* team = nullptr);
 

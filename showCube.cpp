@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "app/contacts.h"
-#include "app/surface.h"
 #include "graphics/scenedraw.h"
 #include "scene/spec.h"
 
@@ -129,26 +128,27 @@ struct SurfaceValues {
 SurfaceValues valuesFor(const Model& model, const State& state, Coloring coloring) {
   SurfaceValues out;
   std::vector<double>& value = out.value;
-  value.assign(kNumPoints, 0.0);
+  const int n = model.points();
+  value.assign(n, 0.0);
   if (coloring == Coloring::Strain) {
     // Mean relative stretch of the springs meeting at each point.
-    std::vector<int> count(kNumPoints, 0);
+    std::vector<int> count(n, 0);
     for (const Spring& s : model.springs()) {
-      double strain = (length(load(state.p(), s.a) - load(state.p(), s.b)) - s.rest) / s.rest;
+      double strain = (length(load(state.p(), s.a, n) - load(state.p(), s.b, n)) - s.rest) / s.rest;
       value[s.a] += strain;
       value[s.b] += strain;
       ++count[s.a];
       ++count[s.b];
     }
-    for (int q = 0; q < kNumPoints; ++q) {
+    for (int q = 0; q < n; ++q) {
       value[q] /= count[q];
       out.largest = std::max(out.largest, std::fabs(value[q]));
     }
   } else if (coloring == Coloring::Force) {
-    std::vector<double> force(kNumCoords);
+    std::vector<double> force(3 * n);
     computeForces(model, state.p(), state.v(), force.data());
-    for (int q = 0; q < kNumPoints; ++q) {
-      value[q] = length(load(force.data(), q));
+    for (int q = 0; q < n; ++q) {
+      value[q] = length(load(force.data(), q, n));
       out.largest = std::max(out.largest, value[q]);
     }
   }
@@ -162,13 +162,14 @@ double smallestScale(Coloring coloring) { return coloring == Coloring::Strain ? 
 SurfaceColors colorsFor(const Model& model, const State& state, Coloring coloring,
                         double heldScale) {
   SurfaceColors out;
-  out.color.assign(kNumPoints, Vec3{kJelly[0], kJelly[1], kJelly[2]});
+  const int n = model.points();
+  out.color.assign(n, Vec3{kJelly[0], kJelly[1], kJelly[2]});
   if (coloring == Coloring::Plain) return out;
   if (coloring == Coloring::Friction) {
     out.frictionStates = true;
     out.title = "FRICTION";
     const std::vector<FrictionState> states = frictionStates(model, state);
-    for (int q = 0; q < kNumPoints; ++q) out.color[q] = frictionColour(states[q]);
+    for (int q = 0; q < n; ++q) out.color[q] = frictionColour(states[q]);
     return out;
   }
   const SurfaceValues values = valuesFor(model, state, coloring);
@@ -176,7 +177,7 @@ SurfaceColors colorsFor(const Model& model, const State& state, Coloring colorin
       heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(coloring)));
   out.diverging = coloring == Coloring::Strain;
   out.title = out.diverging ? "STRAIN" : "FORCE N";
-  for (int q = 0; q < kNumPoints; ++q) {
+  for (int q = 0; q < n; ++q) {
     const double t = values.value[q] / out.scale;
     out.color[q] = out.diverging ? divergingColor(t) : sequentialColor(t);
   }
@@ -227,10 +228,12 @@ void drawBox(const std::vector<Edge>& edges) {
   glEnd();
 }
 
-void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe) {
-  // The surface mesh (app/surface.h: no GL, so that what is drawn can also be written as files).
-  const std::vector<Triangle>& triangles = surfaceTriangles();
-  const std::vector<Vec3> normal = surfaceNormals(state.p());
+void drawSurface(const Body& body, const State& state, const SurfaceColors& colors,
+                 bool wireframe) {
+  // The body's surface mesh (body.h: no GL, so that what is drawn can also be written as files).
+  const std::vector<Triangle>& triangles = body.surface;
+  const std::vector<Vec3> normal = surfaceNormals(body, state.p());
+  const int n = body.count();
   glEnable(GL_LIGHTING);
   glShadeModel(GL_SMOOTH);
   glPolygonMode(GL_FRONT_AND_BACK, wireframe ? GL_LINE : GL_FILL);
@@ -242,7 +245,7 @@ void drawSurface(const State& state, const SurfaceColors& colors, bool wireframe
     for (int q : t) {
       glColor3d(colors.color[q].x, colors.color[q].y, colors.color[q].z);
       glNormal3d(normal[q].x, normal[q].y, normal[q].z);
-      vertex(load(state.p(), q));
+      vertex(load(state.p(), q, n));
     }
   glEnd();
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -275,14 +278,15 @@ void drawSprings(const Model& model, const State& state, const DrawOptions& opti
   glDisable(GL_LIGHTING);
   glLineWidth(1.0f);
   glBegin(GL_LINES);
+  const int n = model.points();
   for (const Spring& s : model.springs()) {
     bool shown = (s.kind == SpringKind::Structural && options.structural) ||
                  (s.kind == SpringKind::Shear && options.shear) ||
                  (s.kind == SpringKind::Bend && options.bend);
     if (!shown) continue;
     glColor3fv(springColour(s.kind));
-    vertex(load(state.p(), s.a));
-    vertex(load(state.p(), s.b));
+    vertex(load(state.p(), s.a, n));
+    vertex(load(state.p(), s.b, n));
   }
   glEnd();
 }
@@ -307,12 +311,13 @@ void drawPlane(const Plane& plane, const std::vector<Edge>& clip) {
 }
 
 void drawPull(const State& state, const Pull& pull) {
+  const int n = state.points();
   glDisable(GL_LIGHTING);
   glDisable(GL_DEPTH_TEST);
   glColor3f(1.0f, 1.0f, 0.3f);
   glLineWidth(2.0f);
   glBegin(GL_LINES);
-  vertex(load(state.p(), pull.point));
+  vertex(load(state.p(), pull.point, n));
   vertex(pull.target);
   glEnd();
   glEnable(GL_DEPTH_TEST);
@@ -494,7 +499,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
   if (drawnBox(model)) drawBox(clip);
   drawSolidObstacles(model);
   SurfaceColors colors = colorsFor(model, state, options.coloring, options.colourScale);
-  drawSurface(state, colors, options.wireframe);
+  drawSurface(model.body(), state, colors, options.wireframe);
   drawSprings(model, state, options);
   drawPinnedPoints(model, state);
   // Translucent, after everything opaque, so that what lies behind them shows through.

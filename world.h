@@ -31,19 +31,22 @@ constexpr int kMaxResolution = 512;
 
 constexpr int pointIndex(int i, int j, int k) { return (i * kLatticeSize + j) * kLatticeSize + k; }
 
-// A per-point array (positions, velocities, forces) holds kNumCoords doubles, structure of
-// arrays: all x, then all y, then all z, each in point order. Coordinate `axis` (0 x, 1 y,
-// 2 z) of point q is element coordIndex(q, axis). The force kernel's loops then run over
-// contiguous, equally spaced doubles and vectorise.
-constexpr int coordIndex(int q, int axis) { return axis * kNumPoints + q; }
-inline Vec3 load(const double* a, int q) {
-  return {a[q], a[kNumPoints + q], a[2 * kNumPoints + q]};
-}
-inline void store(double* a, int q, Vec3 value) {
+// A per-point array (positions, velocities, forces) of a body of n points (body.h; the course
+// cube's n is kNumPoints) holds 3n doubles, structure of arrays: all x, then all y, then all z,
+// each in point order. Coordinate `axis` (0 x, 1 y, 2 z) of point q is element
+// coordIndex(q, axis, n). The force kernel's loops then run over contiguous, equally spaced
+// doubles and vectorise.
+constexpr int coordIndex(int q, int axis, int n) { return axis * n + q; }
+inline Vec3 load(const double* a, int q, int n) { return {a[q], a[n + q], a[2 * n + q]}; }
+inline void store(double* a, int q, int n, Vec3 value) {
   a[q] = value.x;
-  a[kNumPoints + q] = value.y;
-  a[2 * kNumPoints + q] = value.z;
+  a[n + q] = value.y;
+  a[2 * n + q] = value.z;
 }
+// The same on the course cube's arrays (kNumPoints points): the course's files, the grader.
+constexpr int coordIndex(int q, int axis) { return coordIndex(q, axis, kNumPoints); }
+inline Vec3 load(const double* a, int q) { return load(a, q, kNumPoints); }
+inline void store(double* a, int q, Vec3 value) { store(a, q, kNumPoints, value); }
 
 // "[i][j][k]" for point q, as in the course's p[i][j][k].
 std::string latticeLabel(int q);
@@ -105,15 +108,19 @@ struct World {
   std::shared_ptr<const SceneSpec> scene;
 };
 
-// Positions (m) and velocities (m/s) of the 512 points, each a per-point array of kNumCoords
-// doubles (see coordIndex): y[0 .. kNumCoords) positions, y[kNumCoords .. 2*kNumCoords) velocities.
+// Positions (m) and velocities (m/s) of a body's points (512 for the course cube), each a
+// per-point array of 3n doubles (see coordIndex): y[0 .. 3n) positions, y[3n .. 6n) velocities.
 // One contiguous array so that integrators copy and combine whole states cheaply.
 struct State {
-  std::vector<double> y = std::vector<double>(2 * kNumCoords, 0.0);
+  State() : State(kNumPoints) {}
+  explicit State(int points) : y(6 * std::size_t(points), 0.0) {}
+  std::vector<double> y;
+  int points() const { return static_cast<int>(y.size() / 6); }
+  int coords() const { return static_cast<int>(y.size() / 2); }
   double* p() { return y.data(); }
-  double* v() { return y.data() + kNumCoords; }
+  double* v() { return y.data() + coords(); }
   const double* p() const { return y.data(); }
-  const double* v() const { return y.data() + kNumCoords; }
+  const double* v() const { return y.data() + coords(); }
 };
 
 // A malformed world file. what() is the one-line message "FILE:LINE: what is wrong (field)".

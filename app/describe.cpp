@@ -19,14 +19,15 @@ std::string vec(Vec3 v) { return textf("(%.6g, %.6g, %.6g)", v.x, v.y, v.z); }
 
 Extent extentOf(const State& state) {
   Extent e;
-  e.lower = e.upper = load(state.p(), 0);
-  for (int q = 0; q < kNumPoints; ++q) {
-    Vec3 p = load(state.p(), q);
+  const int n = state.points();
+  e.lower = e.upper = load(state.p(), 0, n);
+  for (int q = 0; q < n; ++q) {
+    Vec3 p = load(state.p(), q, n);
     e.lower = {std::min(e.lower.x, p.x), std::min(e.lower.y, p.y), std::min(e.lower.z, p.z)};
     e.upper = {std::max(e.upper.x, p.x), std::max(e.upper.y, p.y), std::max(e.upper.z, p.z)};
     e.centroid += p;
   }
-  e.centroid = (1.0 / kNumPoints) * e.centroid;
+  e.centroid = (1.0 / n) * e.centroid;
   return e;
 }
 
@@ -49,28 +50,31 @@ std::string describeWorld(const World& w, const State& state) {
   std::string out;
   out += textf("integrator  %s, dt %.9g s, n %d (a drawn frame every %.9g s)\n",
                integratorName(w.integrator), w.dt, w.n, w.dt * w.n);
-  out += textf("mass        %.9g kg a point, %.9g kg in all\n", w.mass, w.mass * kNumPoints);
+  out += textf("mass        %.9g kg a point, %.9g kg in all\n", w.mass, w.mass * state.points());
   out += termLines(w, state);
   Extent e = extentOf(state);
   out += "cube        from " + vec(e.lower) + " to " + vec(e.upper) + " m, centroid " +
          vec(e.centroid) + " m\n";
   Vec3 meanVelocity;
   double fastest = 0;
-  for (int q = 0; q < kNumPoints; ++q) {
-    Vec3 v = load(state.v(), q);
+  const int n = state.points();
+  for (int q = 0; q < n; ++q) {
+    Vec3 v = load(state.v(), q, n);
     meanVelocity += v;
     fastest = std::max(fastest, length(v));
   }
-  meanVelocity = (1.0 / kNumPoints) * meanVelocity;
+  meanVelocity = (1.0 / n) * meanVelocity;
   out += "velocity    mean " + vec(meanVelocity) + textf(" m/s, fastest point %.6g m/s\n", fastest);
-  double limit = criticalStep(w.integrator, lineariseAtRest(w).modes);
+  const Linearisation rest = lineariseAtRest(w);
+  const double limit = criticalStep(w.integrator, rest.modes);
   if (std::string beyond = beyondDoubles(w, state); !beyond.empty()) {
     out += "stability   beyond what double arithmetic can simulate: " + beyond + "\n";
   } else if (std::isfinite(limit)) {
     out += textf(
         "stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
         integratorName(w.integrator), w.dt,
-        verdictName(verdictFor(w.dt, limit, stableFraction(w, state))), 100 * w.dt / limit, limit);
+        verdictName(verdictFor(w.dt, limit, stableFraction(w, state, &rest))), 100 * w.dt / limit,
+        limit);
   } else {
     out += textf("stability   %s: no step limit\n", integratorName(w.integrator));
   }

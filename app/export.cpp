@@ -12,7 +12,8 @@
 #include <cstring>
 #include <vector>
 
-#include "app/surface.h"
+#include "body.h"
+#include "forces/term.h"
 
 namespace jello {
 
@@ -38,53 +39,56 @@ void appendVector(std::string* out, const char* prefix, Vec3 v) {
 
 // The header's two comment lines, each after `comment` ("# " or "comment "). The world's name
 // goes through printable(): a newline in it cannot end the comment and start a line of data.
-void appendHeader(std::string* out, const char* comment, const MeshStamp& stamp) {
+void appendHeader(std::string* out, const char* comment, const Body& body, const MeshStamp& stamp) {
   char when[96];
   std::snprintf(when, sizeof when, ", step %lld, time %.17g s\n", stamp.step, stamp.time);
   *out += comment + std::string("jello surface mesh: world ") + printable(stamp.world) + when;
-  *out += comment + std::string(
-                        "metres, z up; 296 vertices with unit normals, 588 triangles "
-                        "counter-clockwise seen from outside\n");
+  *out += comment + textf(
+                        "metres, z up; %zu vertices with unit normals, %zu triangles "
+                        "counter-clockwise seen from outside\n",
+                        body.surfacePoints.size(), body.surface.size());
 }
 
-std::string objText(const double* positions, const MeshStamp& stamp) {
-  const std::vector<Vec3> normals = surfaceNormals(positions);
+std::string objText(const Body& body, const double* positions, const MeshStamp& stamp) {
+  const std::vector<Vec3> normals = surfaceNormals(body, positions);
+  const int n = body.count();
   std::string out;
   out.reserve(64 * 1024);
-  appendHeader(&out, "# ", stamp);
-  for (int q : surfacePoints()) appendVector(&out, "v ", load(positions, q));
-  for (int q : surfacePoints()) appendVector(&out, "vn ", normals[q]);
-  const std::array<int, kNumPoints>& vertexOf = surfaceVertexOfPoint();
-  for (const Triangle& t : surfaceTriangles()) {
+  appendHeader(&out, "# ", body, stamp);
+  for (int q : body.surfacePoints) appendVector(&out, "v ", load(positions, q, n));
+  for (int q : body.surfacePoints) appendVector(&out, "vn ", normals[q]);
+  const std::vector<int>& vertexOf = body.surfaceVertexOf;
+  for (const Triangle& t : body.surface) {
     out += "f";
     for (int q : t) {
-      const std::string n = std::to_string(vertexOf[q] + 1);  // OBJ counts from 1
-      out += " " + n + "//" + n;
+      const std::string v = std::to_string(vertexOf[q] + 1);  // OBJ counts from 1
+      out += " " + v + "//" + v;
     }
     out += "\n";
   }
   return out;
 }
 
-std::string plyText(const double* positions, const MeshStamp& stamp) {
-  const std::vector<Vec3> normals = surfaceNormals(positions);
+std::string plyText(const Body& body, const double* positions, const MeshStamp& stamp) {
+  const std::vector<Vec3> normals = surfaceNormals(body, positions);
+  const int n = body.count();
   std::string out = "ply\nformat ascii 1.0\n";
   out.reserve(64 * 1024);
-  appendHeader(&out, "comment ", stamp);
-  out += "element vertex " + std::to_string(kSurfacePoints) + "\n";
+  appendHeader(&out, "comment ", body, stamp);
+  out += "element vertex " + std::to_string(body.surfacePoints.size()) + "\n";
   for (const char* name : {"x", "y", "z", "nx", "ny", "nz"})
     out += std::string("property double ") + name + "\n";
-  out += "element face " + std::to_string(kSurfaceTriangles) + "\n";
+  out += "element face " + std::to_string(body.surface.size()) + "\n";
   out += "property list uchar int vertex_indices\nend_header\n";
-  for (int q : surfacePoints()) {
+  for (int q : body.surfacePoints) {
     std::string line;
-    appendVector(&line, "", load(positions, q));
+    appendVector(&line, "", load(positions, q, n));
     line.back() = ' ';
     appendVector(&line, "", normals[q]);
     out += line;
   }
-  const std::array<int, kNumPoints>& vertexOf = surfaceVertexOfPoint();
-  for (const Triangle& t : surfaceTriangles())  // PLY counts from 0
+  const std::vector<int>& vertexOf = body.surfaceVertexOf;
+  for (const Triangle& t : body.surface)  // PLY counts from 0
     out += "3 " + std::to_string(vertexOf[t[0]]) + " " + std::to_string(vertexOf[t[1]]) + " " +
            std::to_string(vertexOf[t[2]]) + "\n";
   return out;
@@ -121,8 +125,10 @@ bool parseMeshFormat(std::string_view name, MeshFormat* out) {
   return lower == "obj" || lower == "ply";
 }
 
-std::string meshText(MeshFormat format, const double* positions, const MeshStamp& stamp) {
-  return format == MeshFormat::Ply ? plyText(positions, stamp) : objText(positions, stamp);
+std::string meshText(MeshFormat format, const Body& body, const double* positions,
+                     const MeshStamp& stamp) {
+  return format == MeshFormat::Ply ? plyText(body, positions, stamp)
+                                   : objText(body, positions, stamp);
 }
 
 MeshSequence::MeshSequence(std::string dir, MeshFormat format, bool overwrite)
@@ -152,9 +158,10 @@ void MeshSequence::open(const std::string& heldFolder) {
   opened_ = true;
 }
 
-void MeshSequence::write(int index, const double* positions, const MeshStamp& stamp) {
+void MeshSequence::write(int index, const Body& body, const double* positions,
+                         const MeshStamp& stamp) {
   open();
-  writeFileWhole(pathOf(index), meshText(format_, positions, stamp), Existing::Refuse);
+  writeFileWhole(pathOf(index), meshText(format_, body, positions, stamp), Existing::Refuse);
   ++written_;
 }
 
@@ -172,8 +179,8 @@ class MeshExport : public FrameObserver {
 
   const PictureOptions& options() const override { return options_; }
   void begin() override { sequence_.open(held_); }
-  void frame(const Model&, const State& state, long long step, double time) override {
-    sequence_.write(sequence_.written(), state.p(), MeshStamp{world_, step, time});
+  void frame(const Model& model, const State& state, long long step, double time) override {
+    sequence_.write(sequence_.written(), model.body(), state.p(), MeshStamp{world_, step, time});
   }
   bool wantsMore() const override { return sequence_.written() < options_.maxFrames; }
   int framesDone() const override { return sequence_.written(); }

@@ -3,10 +3,11 @@
 // frames: the mesh of frame k is DIR/k.obj with k in kFrameDigits digits, whatever folder the
 // frames go to. Ready for Blender (File > Import) and Houdini (a File SOP on DIR/$F4.obj).
 //
-// What a file holds (surface.h): the 296 surface points as vertices, in surfacePoints() order,
-// each with its unit normal (surfaceNormals); the 588 triangles, counter-clockwise seen from
-// outside. Positions in metres as simulated, in the simulator's frame: z up (x, y horizontal),
-// exactly (numbers in shortest round-trip form: they read back as the same doubles).
+// What a file holds (body.h): the body's surface points as vertices, in surfacePoints order
+// (296 for the course cube), each with its unit normal (surfaceNormals); its surface triangles
+// (588 for the course cube), counter-clockwise seen from outside. Positions in metres as simulated,
+// in the simulator's frame: z up (x, y horizontal), exactly (numbers in shortest round-trip form:
+// they read back as the same doubles).
 //
 // Files are written whole and the folder claimed for the run (core/output.h), as frames are.
 #pragma once
@@ -17,6 +18,7 @@
 
 #include "app/headless.h"
 #include "app/pictures.h"
+#include "body.h"
 #include "core/output.h"
 #include "world.h"
 
@@ -36,12 +38,14 @@ const char* meshFormatName(MeshFormat format);
 // "obj" or "ply" in any case; false for anything else.
 bool parseMeshFormat(std::string_view name, MeshFormat* out);
 
-// The text of one mesh file for `positions` (a per-point array, world.h).
+// The text of one mesh file for `positions` (a per-point array of the body's, world.h). The counts
+// below are the course cube's.
 // OBJ: comment lines (the world, the step, the time, the axes), then 296 "v x y z", 296
 // "vn nx ny nz" and 588 "f a//a b//b c//c" lines, indices from 1 (vertex a's normal is vn a).
 // PLY: ASCII 1.0, comment lines as OBJ's, "element vertex 296" with double x y z nx ny nz,
 // "element face 588" with "list uchar int vertex_indices" counted from 0.
-std::string meshText(MeshFormat format, const double* positions, const MeshStamp& stamp);
+std::string meshText(MeshFormat format, const Body& body, const double* positions,
+                     const MeshStamp& stamp);
 
 // A numbered sequence of mesh files in a folder; it never replaces exported meshes a user
 // already has unless asked to.
@@ -59,7 +63,7 @@ class MeshSequence {
 
   // Writes mesh number `index` (pathOf(index)) whole; the caller gives the frame's number, so
   // that a mesh is named like its frame even after a failed write. Throws OutputError.
-  void write(int index, const double* positions, const MeshStamp& stamp);
+  void write(int index, const Body& body, const double* positions, const MeshStamp& stamp);
 
   int written() const { return written_; }
   const std::string& dir() const { return dir_; }

@@ -215,6 +215,11 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   long long steps = 0;
   if (Outcome counted = stepsOfRun(options, world, frames, &steps); !counted.ok()) return counted;
   if (options.dumpPath) {
+    // A course world file holds the 8x8x8 cube and nothing else.
+    if (!bodyOf(world).courseLattice)
+      return failed("--dump " + *options.dumpPath + ": a world file holds only the course's " +
+                    "8x8x8 cube, and this scene's jelly is " + bodyOf(world).what +
+                    "; use --export for its meshes");
     std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
     if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
   }

@@ -101,12 +101,13 @@ State measure(const Model& model, const State& start, double time, ReportRow* ro
 double rms(const State& a, const State& b, double* largest) {
   double sum = 0;
   *largest = 0;
-  for (int q = 0; q < kNumPoints; ++q) {
-    Vec3 d = load(a.p(), q) - load(b.p(), q);
+  const int n = a.points();
+  for (int q = 0; q < n; ++q) {
+    Vec3 d = load(a.p(), q, n) - load(b.p(), q, n);
     sum += dot(d, d);
     *largest = std::max(*largest, length(d));
   }
-  return std::sqrt(sum / kNumPoints);
+  return std::sqrt(sum / n);
 }
 
 // RK45 sweeps its tolerance, not its step, and so needs no search for a largest stable step.

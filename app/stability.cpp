@@ -147,7 +147,7 @@ SparseMatrix negatedSymmetricPart(const SparseMatrix& m) {
 // both zeroed its coordinates are zero eigenvalues, left out with the rigid motions.
 SparseMatrix withoutPinned(SparseMatrix m, const std::vector<int>& pinned) {
   if (pinned.empty()) return m;
-  const std::vector<char> isPinned = pinnedCoordinates(pinned);
+  const std::vector<char> isPinned = pinnedCoordinates(pinned, static_cast<int>(m.rows() / 3));
   m.prune([&](Eigen::Index row, Eigen::Index column, double) {
     return !isPinned[row] && !isPinned[column];
   });
@@ -159,15 +159,18 @@ bool allFinite(const SparseMatrix& m) {
                      [](double x) { return std::isfinite(x); });
 }
 
-// The smallest over the rows of a_ii - sum over j != i of |a_ij|: no eigenvalue of the symmetric
-// matrix is smaller (Gershgorin's circles).
-double gershgorinLowerBound(const SparseMatrix& m) {
+// The smallest over the rows of a_ii - sum over j != i of |a_ij| and the largest of a_ii + that
+// sum: every eigenvalue of the symmetric matrix lies between them (Gershgorin's circles).
+struct Interval {
+  double lower, upper;
+};
+Interval gershgorin(const SparseMatrix& m) {
   Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(m.rows()), off = diagonal;
   for (Eigen::Index column = 0; column < m.outerSize(); ++column)
     for (SparseMatrix::InnerIterator it(m, column); it; ++it)
       (it.row() == column ? diagonal[it.row()] : off[it.row()]) +=
           it.row() == column ? it.value() : std::fabs(it.value());
-  return (diagonal - off).minCoeff();
+  return {(diagonal - off).minCoeff(), (diagonal + off).maxCoeff()};
 }
 
 // Adds a mode to `out`, with its highest frequency and damping range.
@@ -190,10 +193,36 @@ void addModes(const Eigenpairs& pairs, const SparseMatrix& damping, double rigid
   }
 }
 
+// A body of more unknowns than the course cube's is not factorised: the sparse LDL^T of a 3D
+// lattice fills in (its cost grows faster than n^2), and a 10x10x10 lattice's analysis took 4 s,
+// a 16^3 lattice's 147 s. Its slow modes come from Lanczos iterations, and no window inside the
+// spectrum is opened (addInteriorModes' exact modes need the factorisation).
+constexpr Eigen::Index kLargestFactorised = kNumCoords;
+bool factorisable(const SparseMatrix& stiffness) { return stiffness.rows() <= kLargestFactorised; }
+
+// The slowest modes without a factorisation: the largest eigenpairs of top I - stiffness, top
+// Gershgorin's bound above every eigenvalue, are the stiffness's smallest. The growing modes are
+// those among them below -rigid (all of them while fewer than those taken).
+std::optional<AboveShift> slowestModesByLanczos(const SparseMatrix& stiffness, double rigid) {
+  const double top = gershgorin(stiffness).upper;
+  SparseMatrix identity(stiffness.rows(), stiffness.cols());
+  identity.setIdentity();
+  const SparseMatrix flipped = top * identity - stiffness;
+  const int count = std::min<Eigen::Index>(kSlowModes + kRigidMotions, stiffness.rows() / 2);
+  std::optional<Eigenpairs> pairs = largestEigenpairs(flipped, count);
+  if (!pairs) return std::nullopt;
+  AboveShift out;
+  out.pairs.values = top - pairs->values.array();
+  out.pairs.vectors = pairs->vectors;
+  out.below = static_cast<int>((out.pairs.values.array() < -rigid).count());
+  return out;
+}
+
 // The slowest oscillating modes: the eigenpairs just above -rigid, in a window widened until it
 // holds kSlowModes beyond the rigid motions; and the count of growing modes (eigenvalues below
 // -rigid), all of them, from the factorisation's inertia.
 std::optional<AboveShift> slowestModes(const SparseMatrix& stiffness, double rigid) {
+  if (!factorisable(stiffness)) return slowestModesByLanczos(stiffness, rigid);
   for (int count = kSlowModes + kRigidMotions;; count *= 2) {
     std::optional<AboveShift> slow = eigenpairsAbove(stiffness, -rigid, count);
     if (!slow) return std::nullopt;
@@ -230,14 +259,15 @@ struct LocalRatios {
   std::vector<Eigen::Vector3d> direction;
 };
 LocalRatios localRatios(const SparseMatrix& stiffness, const SparseMatrix& damping) {
-  LocalRatios out{std::vector<double>(kNumPoints, INFINITY),
-                  std::vector<Eigen::Vector3d>(kNumPoints, Eigen::Vector3d::Zero())};
-  for (int q = 0; q < kNumPoints; ++q) {
+  const int n = static_cast<int>(stiffness.rows() / 3);
+  LocalRatios out{std::vector<double>(n, INFINITY),
+                  std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero())};
+  for (int q = 0; q < n; ++q) {
     Eigen::Matrix3d k, c;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
-        k(a, b) = stiffness.coeff(coordIndex(q, a), coordIndex(q, b));
-        c(a, b) = damping.coeff(coordIndex(q, a), coordIndex(q, b));
+        k(a, b) = stiffness.coeff(coordIndex(q, a, n), coordIndex(q, b, n));
+        c(a, b) = damping.coeff(coordIndex(q, a, n), coordIndex(q, b, n));
       }
     // k v = s (c + rate) v: the largest s is the least damped direction, 1 / s its ratio.
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> local(
@@ -254,10 +284,11 @@ LocalRatios localRatios(const SparseMatrix& stiffness, const SparseMatrix& dampi
 Eigen::VectorXd hotspotStart(const SparseMatrix& stiffness, const SparseMatrix& damping) {
   const LocalRatios local = localRatios(stiffness, damping);
   const double best = *std::min_element(local.ratio.begin(), local.ratio.end());
-  Eigen::VectorXd start = Eigen::VectorXd::Zero(kNumCoords), noise(kNumCoords);
-  for (int q = 0; q < kNumPoints && std::isfinite(best); ++q)
+  const int n = static_cast<int>(stiffness.rows() / 3);
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(3 * n), noise(3 * n);
+  for (int q = 0; q < n && std::isfinite(best); ++q)
     for (int a = 0; a < 3; ++a)
-      start[coordIndex(q, a)] =
+      start[coordIndex(q, a, n)] =
           std::pow(best / local.ratio[q], kHotspotPower) * local.direction[q][a];
   unsigned seed = 12345;  // a linear congruential generator: the same vector every run
   for (Eigen::Index i = 0; i < noise.size(); ++i) {
@@ -333,7 +364,7 @@ std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
   if (!slow) return std::nullopt;
   // No eigenvalue lies below the smallest a_ii - sum |a_ij| of a row (Gershgorin): only when that
   // is below minus the fastest's can a growing mode be the larger.
-  if (slow->below > 0 && -gershgorinLowerBound(stiffness) > std::fabs(fast->values[0])) {
+  if (slow->below > 0 && -gershgorin(stiffness).lower > std::fabs(fast->values[0])) {
     std::optional<Eigenpairs> mostNegative = largestEigenpairs(-stiffness, 1);
     if (!mostNegative) return std::nullopt;
     if (mostNegative->values[0] > std::fabs(fast->values[0])) {
@@ -341,7 +372,8 @@ std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
       if (!(slow = slowestModes(stiffness, rigid))) return std::nullopt;
     }
   }
-  while (fast->values.size() < kMostFastModes &&
+  // (A body too large to factorise keeps the first set: its spectrum's top is one long cluster.)
+  while (factorisable(stiffness) && fast->values.size() < kMostFastModes &&
          fast->values[fast->values.size() - 1] > kCluster * fast->values[0]) {
     fast = largestEigenpairs(stiffness, static_cast<int>(2 * fast->values.size()));
     if (!fast) return std::nullopt;
@@ -351,7 +383,8 @@ std::optional<Linearisation> lineariseByLanczos(const SparseMatrix& stiffness,
   addModes(*fast, damping, rigid, &out);
   addModes(slow->pairs, damping, rigid, &out);
   out.growing = slow->below;
-  if (!out.modes.empty()) addInteriorModes(stiffness, damping, rigid, &out);
+  if (!out.modes.empty() && factorisable(stiffness))
+    addInteriorModes(stiffness, damping, rigid, &out);
   if (out.modes.empty()) out.lowestDamping = 0;
   return out;
 }
@@ -384,6 +417,80 @@ Linearisation everyMode(const Eigenquotients& all) {
   return out;
 }
 
+// Gershgorin's interval for the symmetric part of N - I (N: `blocks`, newtonBlocks' matrix) on
+// the coordinates not pinned, from its blocks alone: a 48^3 lattice's sparse Jacobian and its
+// symmetric part took 1.2 GB and 10 s. The symmetric part's entry (|m_ij + m_ji|) / 2 is counted
+// as (|m_ij| + |m_ji|) / 2, equal where the block is symmetric (a spring's stiffness at rest), so
+// the interval holds the exact one.
+Interval blockInterval(const NewtonBlocks& blocks) {
+  const int n = blocks.points();
+  const std::vector<char> isPinned = pinnedCoordinates(blocks.pinned, n);
+  std::vector<Block3> diagonal = blocks.point;  // a point's block of N - I: + B of its pairs
+  for (Block3& d : diagonal)
+    for (int axis = 0; axis < 3; ++axis) d.m[4 * axis] -= 1;
+  std::vector<double> off(3 * static_cast<std::size_t>(n), 0.0);
+  auto offSum = [](const Block3& b, int i) {  // row (and column) i of (|B| + |B^T|) / 2
+    double sum = 0;
+    for (int j = 0; j < 3; ++j) sum += (std::fabs(b.m[3 * i + j]) + std::fabs(b.m[3 * j + i])) / 2;
+    return sum;
+  };
+  for (std::size_t k = 0; k < blocks.pairs.size(); ++k) {
+    const auto [a, b] = blocks.pairs[k];
+    const Block3& block = blocks.pair[k];
+    for (int e = 0; e < 9; ++e) {
+      diagonal[a].m[e] += block.m[e];
+      diagonal[b].m[e] += block.m[e];
+    }
+    if (isPinned[coordIndex(a, 0, n)] || isPinned[coordIndex(b, 0, n)]) continue;
+    for (int i = 0; i < 3; ++i) {
+      off[coordIndex(a, i, n)] += offSum(block, i);
+      off[coordIndex(b, i, n)] += offSum(block, i);
+    }
+  }
+  Interval out{INFINITY, -INFINITY};  // (empty when every point is pinned)
+  for (int q = 0; q < n; ++q) {
+    if (isPinned[coordIndex(q, 0, n)]) continue;
+    for (int i = 0; i < 3; ++i) {
+      const double centre = diagonal[q].m[4 * i];
+      const double radius = off[coordIndex(q, i, n)] + offSum(diagonal[q], i) - std::fabs(centre);
+      if (!std::isfinite(centre + radius)) return {NAN, NAN};
+      out.lower = std::min(out.lower, centre - radius);
+      out.upper = std::max(out.upper, centre + radius);
+    }
+  }
+  return out;
+}
+
+// A step at which every mode of the state is stable, in a second for a 48^3 lattice instead of
+// the analysis's minutes. Each mode's omega^2 (a Rayleigh quotient of the stiffness) is at most
+// the top of its Gershgorin interval, and its damping rate lies within the damping's. Over that
+// rectangle the limit has no simple extreme (it falls with omega^2 for a lightly damped mode and
+// rises for an overdamped one, whose fast root tends to -c), so the smallest of a grid of modes
+// is taken: omega^2 halved kRowSumOctaves times from the top, the damping at kRowSumDampings
+// points across its interval.
+constexpr int kRowSumOctaves = 16;
+constexpr int kRowSumDampings = 8;
+struct RowSumBound {
+  double limit;    // s; NaN where the derivatives are not finite, infinite if no point is free
+  double fastest;  // rad/s: the square root of the stiffness's top
+};
+RowSumBound rowSumBound(const Model& model, const State& state, Integrator integrator) {
+  NewtonBlocks blocks;  // N - I = -dA/dp, then -dA/dv
+  newtonBlocks(model, state.p(), state.v(), nullptr, 0, 1, &blocks);
+  const Interval stiffness = blockInterval(blocks);
+  newtonBlocks(model, state.p(), state.v(), nullptr, 1, 0, &blocks);
+  const Interval damping = blockInterval(blocks);
+  if (std::isnan(stiffness.upper) || std::isnan(damping.upper)) return {NAN, NAN};
+  if (stiffness.upper < stiffness.lower) return {INFINITY, 0};  // no coordinate free
+  const double low = std::max(0.0, damping.lower), high = std::max(low, damping.upper);
+  std::vector<Mode> grid;
+  for (int octave = 0; octave < kRowSumOctaves; ++octave)
+    for (int i = 0; i < kRowSumDampings; ++i)
+      grid.push_back(
+          {std::ldexp(stiffness.upper, -octave), low + (high - low) * i / (kRowSumDampings - 1)});
+  return {criticalStep(integrator, grid), std::sqrt(std::max(0.0, stiffness.upper))};
+}
+
 }  // namespace
 
 Linearisation linearise(const Model& model, const State& state) {
@@ -401,8 +508,9 @@ Linearisation linearise(const Model& model, const State& state) {
   // about its centre as tornado.w's compressed cube): every mode, exactly, from 8 blocks, in
   // less time than the Lanczos iterations. (A degenerate mode's eigenvector is any in its
   // space, here one within a block, as the dense solver's was one of its own choosing.)
-  if (std::optional<Eigenquotients> all = mirrorSymmetricQuotients(stiffness, damping))
-    return everyMode(*all);
+  if (model.body().courseLattice)
+    if (std::optional<Eigenquotients> all = mirrorSymmetricQuotients(stiffness, damping))
+      return everyMode(*all);
   std::optional<Linearisation> ends = lineariseByLanczos(stiffness, damping);
   return ends ? *ends : lineariseDensely(stiffness, damping);
 }
@@ -417,9 +525,10 @@ Linearisation freeLatticeAtRest(const World& world) {
     World unit;
     unit.kElastic = 1;
     unit.mass = 1;
-    Model model = makeModel(unit, restState());
+    const State rest = restState(courseBody());
+    Model model = makeModel(unit, rest);
     AccelerationJacobian jacobian;
-    accelerationJacobian(model, restState().p(), restState().v(), nullptr, &jacobian);
+    accelerationJacobian(model, rest.p(), rest.v(), nullptr, &jacobian);
     return mirrorSymmetricEigenvalues(negatedSymmetricPart(jacobian.dAdp));
   }();
   Linearisation out;
@@ -443,17 +552,23 @@ Linearisation freeLatticeAtRest(const World& world) {
 }  // namespace
 
 Linearisation lineariseAtRest(const World& world) {
-  // Pins change the lattice's modes (no rigid motions are left): its springs and pins alone, at
-  // rest, through the general analysis.
-  if (world.scene && !world.scene->pinned.empty()) {
+  // Pins change the lattice's modes (no rigid motions are left), and another body or springs of
+  // different kinds have modes of their own: its springs and pins alone, at rest, through the
+  // general analysis.
+  const Body& body = bodyOf(world);
+  if (!body.courseLattice || !springConstantsOf(world).uniform() ||
+      (world.scene && !world.scene->pinned.empty())) {
     World springs = world;
-    auto pinsOnly = std::make_shared<SceneSpec>();
-    pinsOnly->pinned = world.scene->pinned;
-    pinsOnly->boundsPresent = false;
-    springs.scene = pinsOnly;
+    auto bodyOnly = std::make_shared<SceneSpec>();
+    bodyOnly->body = world.scene->body;
+    bodyOnly->springs = world.scene->springs;
+    bodyOnly->pinned = world.scene->pinned;
+    bodyOnly->boundsPresent = false;
+    springs.scene = bodyOnly;
     springs.hasPlane = false;
     springs.field = {};
-    return linearise(makeModel(springs, restState()), restState());
+    const State rest = restState(body);
+    return linearise(makeModel(springs, rest), rest);
   }
   return freeLatticeAtRest(world);
 }
@@ -478,18 +593,20 @@ double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
   return limit;
 }
 
-State restState() {
-  State s;
-  for (int i = 0; i < kLatticeSize; ++i)
-    for (int j = 0; j < kLatticeSize; ++j)
-      for (int k = 0; k < kLatticeSize; ++k)
-        store(s.p(), pointIndex(i, j, k), kRestSpacing * Vec3{double(i), double(j), double(k)});
+State restState(const Body& body) {
+  const int n = body.count();
+  State s(n);
+  for (int q = 0; q < n; ++q) {
+    const std::array<int, 3> i = body.index(q);
+    store(s.p(), q, n, body.spacing * Vec3{double(i[0]), double(i[1]), double(i[2])});
+  }
   return s;
 }
 
-State faceOnWallState() {
-  State s = restState();
-  for (int q = 0; q < kNumPoints; ++q) s.p()[coordIndex(q, 0)] += -kBoxHalfSize - kWallPress;
+State faceOnWallState(const Body& body) {
+  State s = restState(body);
+  for (int q = 0; q < body.count(); ++q)
+    s.p()[coordIndex(q, 0, body.count())] += -kBoxHalfSize - kWallPress;
   return s;
 }
 
@@ -515,36 +632,52 @@ std::string beyondDoubles(const World& world, const State& initial) {
       return text;
     }
   }
-  for (int q = 0; q < kNumPoints; ++q) {
-    const Vec3 v = load(initial.v(), q);
+  const int n = initial.points();
+  for (int q = 0; q < n; ++q) {
+    const Vec3 v = load(initial.v(), q, n);
     if (!std::isfinite(dot(v, v) * kHeadroom)) {
       std::snprintf(text, sizeof text,
                     "the velocity of p%s, (%g, %g, %g) m/s: its square (kinetic energy) overflows",
-                    latticeLabel(q).c_str(), v.x, v.y, v.z);
+                    bodyOf(world).label(q).c_str(), v.x, v.y, v.z);
       return text;
     }
   }
   return "";
 }
 
-double largestStrain(const State& state) {
+double largestStrain(const Body& body, const State& state) {
+  const int n = body.count();
   double largest = 0;
-  for (const Spring& s : buildSprings())
-    largest = std::max(largest,
-                       std::fabs(length(load(state.p(), s.a) - load(state.p(), s.b)) / s.rest - 1));
+  for (const Spring& s : body.springs)
+    largest = std::max(
+        largest, std::fabs(length(load(state.p(), s.a, n) - load(state.p(), s.b, n)) / s.rest - 1));
   return largest;
 }
 
-double stableFraction(const World& world, const State& initial) {
-  // How damped the fastest mode is for its speed: the free lattice's tells it, pins or not (they
-  // hold a few points of 512, and their lattice's solve takes a second).
-  const Linearisation rest = freeLatticeAtRest(world);
-  if (!rest.finite || rest.modes.empty()) return kStableFraction;
-  // At rest a mode's damping rate is its omega^2 dElastic / kElastic: the fastest's, over omega.
-  const double dampingPerRadian = rest.highestFrequency * world.dElastic / world.kElastic;
+double stableFraction(const World& world, const State& initial, const Linearisation* rest) {
+  const Body& body = bodyOf(world);
+  const SpringConstants springs = springConstantsOf(world);
+  // How damped the fastest mode is for its speed. For the course cube the free lattice's tells
+  // it, pins or not (they hold a few points of 512, and their lattice's solve takes a second):
+  // at rest a mode's damping rate is its omega^2 dElastic / kElastic, the fastest's over omega.
+  // Another body's, or springs of different kinds: the fastest of its own modes at rest.
+  double dampingPerRadian = 0;
+  if (body.courseLattice && springs.uniform()) {
+    const Linearisation free = freeLatticeAtRest(world);
+    if (!free.finite || free.modes.empty()) return kStableFraction;
+    dampingPerRadian = free.highestFrequency * world.dElastic / world.kElastic;
+  } else {
+    const Linearisation own = rest ? Linearisation{} : lineariseAtRest(world);
+    const Linearisation& modes = rest ? *rest : own;
+    if (!modes.finite || modes.modes.empty()) return kStableFraction;
+    const Mode fastest = *std::max_element(
+        modes.modes.begin(), modes.modes.end(),
+        [](const Mode& a, const Mode& b) { return a.omegaSquared < b.omegaSquared; });
+    dampingPerRadian = fastest.damping / std::sqrt(fastest.omegaSquared);
+  }
   const bool lightlyDamped = dampingPerRadian < kLightDamping;
-  return lightlyDamped && largestStrain(initial) > kDeformed ? kLargeMotionStableFraction
-                                                             : kStableFraction;
+  return lightlyDamped && largestStrain(body, initial) > kDeformed ? kLargeMotionStableFraction
+                                                                   : kStableFraction;
 }
 
 double StabilityReport::verdictLimit(Integrator integrator) const {
@@ -576,12 +709,12 @@ StabilityReport analyseStability(const World& world, const State& initial) {
   Linearisation wall;
   std::future<void> other = std::async(std::launch::async, [&] {
     report.rest = lineariseAtRest(world);
-    if (report.courseWalls) wall = linearise(model, faceOnWallState());
+    if (report.courseWalls) wall = linearise(model, faceOnWallState(model.body()));
   });
   report.initial = linearise(model, initial);
   other.get();
-  report.largestStrain = largestStrain(initial);
-  report.stableFraction = stableFraction(world, initial);
+  report.largestStrain = largestStrain(model.body(), initial);
+  report.stableFraction = stableFraction(world, initial, &report.rest);
   for (Integrator integrator : kExplicitIntegrators) {
     report.criticalInitial.push_back(
         report.initial.finite ? criticalStep(integrator, report.initial.modes) : NAN);
@@ -596,13 +729,48 @@ double predictedLimit(const World& world, const State& initial, Integrator integ
   if (!integratorInfo(integrator).boundedStableStep) return INFINITY;
   Model model = makeModel(world, initial);
   // As in analyseStability, the face on the wall on a second thread.
-  std::future<Linearisation> onWall =
-      std::async(std::launch::async, [&model] { return linearise(model, faceOnWallState()); });
+  std::future<Linearisation> onWall = std::async(
+      std::launch::async, [&model] { return linearise(model, faceOnWallState(model.body())); });
   const Linearisation atStart = linearise(model, initial);
   const Linearisation wall = onWall.get();
   if (!atStart.finite) return NAN;
   return std::min(criticalStep(integrator, atStart.modes), criticalStep(integrator, wall.modes));
 }
+
+namespace {
+
+// The end of a divergence message for a body too large to analyse while the user waits.
+constexpr double kUsefulRowSumBound = 0.01;  // of 1 / fastest; RK4's undamped limit is 2.8
+std::string largeBodyAdvice(const World& world, const State& initial, int points) {
+  const char* name = integratorName(world.integrator);
+  const std::string head = "dt=" + number(world.dt) + " with " + name + " on a body of " +
+                           std::to_string(points) + " points";
+  const std::string check = " (jello --check finds the limit itself, slowly for a body this large)";
+  const auto [bound, fastest] = rowSumBound(makeModel(world, initial), initial, world.integrator);
+  if (std::isnan(bound)) {
+    return head +
+           ": the forces' derivatives at the initial state are not finite numbers; no step "
+           "will do";
+  }
+  if (bound == 0) return head + ": " + stepAdvice(0);
+  // An integrator unstable on an undamped oscillation (EULER, MIDPOINT) is held by the damping
+  // alone, of which row sums promise nothing for the slower modes: its bound is then far below
+  // its limit, and a step suggested from it would be useless.
+  if (bound * fastest < kUsefulRowSumBound) {
+    return head + ": " + name + " is stable only as far as damping holds the modes, which row " +
+           "sums cannot bound" + check + "; try --integrator RK4 or --integrator IMPLICIT";
+  }
+  if (world.dt > bound) {
+    return head + ": the initial state's modes are stable below " + limitText(bound) +
+           " (a bound from its row sums)" + check + "; " + stepAdvice(bound);
+  }
+  return head + " is below " + limitText(bound) +
+         ", where the initial state's modes are stable (a bound from its row sums), but the "
+         "motion left it (a harder contact?)" +
+         check + "; " + stepAdvice(world.dt);
+}
+
+}  // namespace
 
 std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
                               const std::string& reason) {
@@ -621,6 +789,12 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
     return out + "the world's numbers are beyond what double arithmetic can simulate (" + beyond +
            "): no step will do";
   }
+  // A body larger than the course cube's is analysed by Lanczos iterations alone (slowestModes),
+  // which take seconds at 10^3 points and minutes at 48^3: the message gives the step its row
+  // sums guarantee instead, at once. (An integrator without a limit needs no analysis: below.)
+  const int points = bodyOf(world).count();
+  if (points > kNumPoints && integratorInfo(world.integrator).boundedStableStep)
+    return out + largeBodyAdvice(world, initial, points);
   // The rest lattice's limit takes milliseconds; when it is already below what the analysis
   // resolves, the springs alone rule every step out and the eigensolves are spared.
   if (integratorInfo(world.integrator).boundedStableStep &&
@@ -687,6 +861,11 @@ StiffnessSweep sweepStiffness(const World& world, const State& initial, double t
   for (int e = -3; e <= 3; ++e) {
     World w = world;
     w.kElastic = base * std::pow(2.0, e);
+    if (world.scene && world.scene->springs) {  // a scene's springs by kind scale alike
+      auto scaled = std::make_shared<SceneSpec>(*world.scene);
+      for (double& k : scaled->springs->k) k *= std::pow(2.0, e);
+      w.scene = scaled;
+    }
     Linearisation rest = lineariseAtRest(w);
     Model model = makeModel(w, initial);
     for (Integrator integrator : kExplicitIntegrators) {

@@ -61,11 +61,12 @@ struct Linearisation {
 // does not converge.
 Linearisation linearise(const Model& model, const State& state);
 
-// The modes of the rest lattice (restState()) for the world's springs, all of them. At rest every
-// spring's stiffness and damping act along the same direction, so the damping is the stiffness
-// times dElastic/kElastic and one eigenvalue solve of the lattice, done once and scaled, gives
-// them: tens of milliseconds the first time (the lattice's mirror symmetries split it into 8
-// blocks, spectrum.h), microseconds after.
+// The modes of the rest body (restState) for the world's springs. For the course cube, all of
+// them: at rest every spring's stiffness and damping act along the same direction, so the damping
+// is the stiffness times dElastic/kElastic and one eigenvalue solve of the lattice, done once and
+// scaled, gives them: tens of milliseconds the first time (the lattice's mirror symmetries split
+// it into 8 blocks, spectrum.h), microseconds after. With pins, another body or springs whose
+// kinds differ: its springs and pins at rest through linearise().
 Linearisation lineariseAtRest(const World& world);
 
 // The largest dt at which `integrator` keeps every mode bounded; +infinity for IMPLICIT; 0 when
@@ -85,10 +86,10 @@ std::string beyondDoubles(const World& world, const State& initial);
 // point, and the sums of the integrators' stages, stay finite.
 constexpr double kHeadroom = 1e6;
 
-// The rest lattice, and the rest lattice with its x = min face pressed 1 mm into the wall
-// x = -2 (64 collision springs active), both at rest.
-State restState();
-State faceOnWallState();
+// The body at rest (point (i,j,k) at spacing * (i,j,k)), and the same with its x = min face
+// pressed 1 mm into the wall x = -2 (64 collision springs active for the course cube).
+State restState(const Body& body);
+State faceOnWallState(const Body& body);
 
 // The verdict's margin. The limits are those of small motions about a fixed state; a cube's own
 // large motion modulates its springs' stiffness, and a fast mode with little damping can be
@@ -107,10 +108,12 @@ constexpr double kLightDamping = 0.02;
 constexpr double kDeformed = 0.01;
 
 // The largest |length - rest| / rest over the springs at `state`.
-double largestStrain(const State& state);
+double largestStrain(const Body& body, const State& state);
 // kLargeMotionStableFraction for a lightly damped world starting deformed, kStableFraction
-// otherwise (a lattice eigensolve the first time, then microseconds).
-double stableFraction(const World& world, const State& initial);
+// otherwise (for the course cube a lattice eigensolve the first time, then microseconds; for
+// another body its modes at rest: `rest` when the caller has them, else computed).
+double stableFraction(const World& world, const State& initial,
+                      const Linearisation* rest = nullptr);
 
 struct StabilityReport {
   // beyondDoubles of the world: when it is not empty, nothing else was analysed and the vectors
@@ -155,7 +158,9 @@ double predictedLimit(const World& world, const State& initial, Integrator integ
 
 // The one-line diagnosis of a diverged run, without the "jello: " prefix: where, why, and
 // what to change, e.g. "diverged at step 812 (t=0.0812 s): <reason>; dt=1e-4 exceeds RK4's
-// stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT".
+// stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT". A body of more
+// points than the course cube is not analysed (that takes seconds to minutes): its advice comes
+// from a step bounded by the row sums of its stiffness and damping, in a second at 48^3.
 std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
                               const std::string& reason);
 

@@ -137,8 +137,8 @@ Block3 fieldJacobian(const ForceField& field, Vec3 p) {
   return gradientAt(field.forces.data(), field.resolution, p);
 }
 
-FieldTerm::FieldTerm(const ForceField& field, double mass, Method method)
-    : field_(field), method_(method), mass_(mass) {
+FieldTerm::FieldTerm(int points, const ForceField& field, double mass, Method method)
+    : ForceTerm(points), field_(field), method_(method), mass_(mass) {
   // The node array is the world's whole field: what trilinear() and gradientAt() index.
   JELLO_ASSERT(field.forces.size() == 3 * field_.nodes());
   // A padded field is interpolated between nodes: one node is a uniform field.
@@ -277,11 +277,10 @@ JELLO_PACK_INLINE PackVec3 transposePairs(const Pack& v0, const Pack& v1, const 
 }
 
 // The field at points q .. q + 7 by axis, interpolated whether inside the box or not.
-JELLO_PACK_INLINE PackVec3 interpolate8(const double* nodes, int r, const double* p, int q) {
+JELLO_PACK_INLINE PackVec3 interpolate8(const double* nodes, int r, const double* p, int n, int q) {
   const Pack perMetre = splat(cellsPerMetre(r)), lastCell = splat(r - 2);
   PackCells cells[3];
-  for (int a = 0; a < 3; ++a)
-    cells[a] = cellsOf(loadPack(p + a * kNumPoints + q), perMetre, lastCell);
+  for (int a = 0; a < 3; ++a) cells[a] = cellsOf(loadPack(p + a * n + q), perMetre, lastCell);
   // The first node's offset, a whole number below 2^53: exact in doubles.
   const Pack node = ((cells[0].cell * r + cells[1].cell) * r + cells[2].cell) * kPaddedNode;
   const PackCorners c = {node, {cells[0].t, cells[1].t, cells[2].t}};
@@ -303,13 +302,13 @@ JELLO_PACK_INLINE Pack insideOrZero(Pack x, Pack y, Pack z, Pack f) {
 // Adds the padded field at every point; kAllInside: every point is inside the box (the common
 // case, without the per-point test).
 template <bool kAllInside>
-void addPaddedField(const double* nodes, int r, PointRange points, const double* p, double* force) {
-  for (int q = points.begin; q < points.end; q += kPackLanes) {
-    const PackVec3 f = interpolate8(nodes, r, p, q);
+void addPaddedField(const double* nodes, int r, int end, int n, int q, const double* p,
+                    double* force) {
+  for (; q < end; q += kPackLanes) {
+    const PackVec3 f = interpolate8(nodes, r, p, n, q);
     for (int a = 0; a < 3; ++a) {
-      double* out = force + a * kNumPoints + q;
-      const Pack x = loadPack(p + q), y = loadPack(p + kNumPoints + q),
-                 z = loadPack(p + 2 * kNumPoints + q);
+      double* out = force + a * n + q;
+      const Pack x = loadPack(p + q), y = loadPack(p + n + q), z = loadPack(p + 2 * n + q);
       storePack(out, loadPack(out) + (kAllInside ? f.axis[a] : insideOrZero(x, y, z, f.axis[a])));
     }
   }
@@ -322,30 +321,41 @@ void FieldTerm::addForcesOn(PointRange points, const double* p, const double*, c
   switch (method_) {
     case Method::Uniform:
       if (inside) {  // the common case, without the per-point test
-        for (int q = points.begin; q < points.end; ++q) store(force, q, load(force, q) + uniform_);
+        for (int q = points.begin; q < points.end; ++q)
+          store(force, q, pointCount(), load(force, q, pointCount()) + uniform_);
         return;
       }
       for (int q = points.begin; q < points.end; ++q)
-        store(force, q, load(force, q) + (insideBox(load(p, q)) ? uniform_ : Vec3{}));
+        store(force, q, pointCount(),
+              load(force, q, pointCount()) +
+                  (insideBox(load(p, q, pointCount())) ? uniform_ : Vec3{}));
       return;
-    case Method::Padded:
+    case Method::Padded: {
+      // A body whose count is not a multiple of 8 takes its last points one by one, through the
+      // reference interpolation, which rounds as the packed one does (test_kernels).
+      const int n = pointCount(), packed = points.end - (points.end - points.begin) % kPackLanes;
       if (inside)
-        addPaddedField<true>(padded_.data(), field_.resolution, points, p, force);
+        addPaddedField<true>(padded_.data(), field_.resolution, packed, n, points.begin, p, force);
       else
-        addPaddedField<false>(padded_.data(), field_.resolution, points, p, force);
+        addPaddedField<false>(padded_.data(), field_.resolution, packed, n, points.begin, p, force);
+      for (int q = packed; q < points.end; ++q)
+        store(force, q, n,
+              load(force, q, n) + referenceForce(field_.forces, field_.resolution, load(p, q, n)));
       return;
+    }
     case Method::Reference:
       for (int q = points.begin; q < points.end; ++q)
-        store(force, q,
-              load(force, q) + referenceForce(field_.forces, field_.resolution, load(p, q)));
+        store(force, q, pointCount(),
+              load(force, q, pointCount()) +
+                  referenceForce(field_.forces, field_.resolution, load(p, q, pointCount())));
       return;
   }
 }
 
 void FieldTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   const Block3 none;
-  for (int q = 0; q < kNumPoints; ++q)
-    sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q)), none);
+  for (int q = 0; q < pointCount(); ++q)
+    sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q, pointCount())), none);
 }
 
 void FieldTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {

@@ -63,7 +63,7 @@ class FieldTerm final : public ForceTerm {
   // by point (the general kernel).
   enum class Method { Uniform, Padded, Reference };
   // `mass` (kg, each point's) only for the description: the acceleration a force gives.
-  FieldTerm(const ForceField& field, double mass, Method method);
+  FieldTerm(int points, const ForceField& field, double mass, Method method);
 
   // The field acts inside the box only.
   bool mayReach(const Bounds& box) const override;

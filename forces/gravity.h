@@ -9,7 +9,7 @@ namespace jello {
 
 class GravityTerm final : public ForceTerm {
  public:
-  GravityTerm(Vec3 g, double mass) : g_(g), weight_(mass * g) {}
+  GravityTerm(int points, Vec3 g, double mass) : ForceTerm(points), g_(g), weight_(mass * g) {}
   bool mayReach(const Bounds&) const override { return true; }
   void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
                    double* force) const override;

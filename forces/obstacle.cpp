@@ -255,28 +255,31 @@ int ObstacleTerm::pointsInContact(const double* p) const {
   if (obstacle_.spring.k == 0 && obstacle_.spring.d == 0) return 0;
   int count = 0;
   Penetration pens[3];
-  for (int q = 0; q < kNumPoints; ++q) count += penetrations(obstacle_, load(p, q), pens) > 0;
+  for (int q = 0; q < pointCount(); ++q)
+    count += penetrations(obstacle_, load(p, q, pointCount()), pens) > 0;
   return count;
 }
 
 void ObstacleTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                                double* force) const {
   for (int q = points.begin; q < points.end; ++q)
-    store(force, q, load(force, q) + obstacleForce(obstacle_, load(p, q), load(v, q)));
+    store(force, q, pointCount(),
+          load(force, q, pointCount()) +
+              obstacleForce(obstacle_, load(p, q, pointCount()), load(v, q, pointCount())));
 }
 
 void ObstacleTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
-  for (int q = 0; q < kNumPoints; ++q) {
-    obstacleJacobian(obstacle_, load(p, q), load(v, q), &dFdp, &dFdv);
+  for (int q = 0; q < pointCount(); ++q) {
+    obstacleJacobian(obstacle_, load(p, q, pointCount()), load(v, q, pointCount()), &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
 
 void ObstacleTerm::addEnergy(const double* p, double* energy) const {
   Penetration pens[3];
-  for (int q = 0; q < kNumPoints; ++q) {
-    const int count = penetrations(obstacle_, load(p, q), pens);
+  for (int q = 0; q < pointCount(); ++q) {
+    const int count = penetrations(obstacle_, load(p, q, pointCount()), pens);
     for (int i = 0; i < count; ++i)
       *energy += 0.5 * obstacle_.spring.k * pens[i].depth * pens[i].depth;
   }

@@ -87,7 +87,7 @@ std::string obstacleText(const Obstacle& obstacle);
 
 class ObstacleTerm final : public ForceTerm {
  public:
-  explicit ObstacleTerm(const Obstacle& obstacle) : obstacle_(obstacle) {}
+  ObstacleTerm(int points, const Obstacle& obstacle) : ForceTerm(points), obstacle_(obstacle) {}
   const Obstacle& obstacle() const { return obstacle_; }
 
   bool mayReach(const Bounds& box) const override;

@@ -27,10 +27,10 @@ std::string planeProblem(const Plane& plane) {
   return "";
 }
 
-double allowedSide(const Plane& plane, const double* p) {
+double allowedSide(const Plane& plane, const double* p, int n) {
   Vec3 centroid;
-  for (int q = 0; q < kNumPoints; ++q) centroid += load(p, q);
-  centroid = (1.0 / kNumPoints) * centroid;
+  for (int q = 0; q < n; ++q) centroid += load(p, q, n);
+  centroid = (1.0 / n) * centroid;
   return planeValue(normalisedPlane(plane), centroid) >= 0 ? 1 : -1;
 }
 
@@ -71,13 +71,17 @@ bool mayCrossPlane(const Plane& plane, double side, const Bounds& b) {
   return !(smallest > kRelativeMargin * scale);
 }
 
-PlaneTerm::PlaneTerm(const Plane& given, double side, const ContactSpring& spring)
-    : given_(given), plane_(normalisedPlane(given)), side_(side), spring_(spring) {}
+PlaneTerm::PlaneTerm(int points, const Plane& given, double side, const ContactSpring& spring)
+    : ForceTerm(points),
+      given_(given),
+      plane_(normalisedPlane(given)),
+      side_(side),
+      spring_(spring) {}
 
 int PlaneTerm::pointsAcross(const double* p) const {
   int across = 0;
-  for (int q = 0; q < kNumPoints; ++q)
-    if (planeValue(plane_, load(p, q)) * side_ < 0) ++across;
+  for (int q = 0; q < pointCount(); ++q)
+    if (planeValue(plane_, load(p, q, pointCount())) * side_ < 0) ++across;
   return across;
 }
 
@@ -86,9 +90,9 @@ int PlaneTerm::pointsAcross(const double* p) const {
 // root and two divisions a point, are computed for the eight when one of them is across.
 void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                             double* force) const {
-  for (int q = points.begin; q < points.end; q += kPackLanes) {
-    const Pack x = loadPack(p + q), y = loadPack(p + kNumPoints + q),
-               z = loadPack(p + 2 * kNumPoints + q);
+  const int n = pointCount(), packed = points.end - (points.end - points.begin) % kPackLanes;
+  for (int q = points.begin; q < packed; q += kPackLanes) {
+    const Pack x = loadPack(p + q), y = loadPack(p + n + q), z = loadPack(p + 2 * n + q);
     const Pack s = planeValueAt(plane_, x, y, z);
     const Pack across = byPiece(
         [side = side_](NativePack values) {
@@ -99,27 +103,32 @@ void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v,
     for (int l = 0; l < kPackLanes; ++l) any = any || across.lane(l) != 0;
     if (any) {
       for (int l = q; l < q + kPackLanes; ++l)
-        store(force, l,
-              load(force, l) + planeForce(plane_, side_, load(p, l), load(v, l), spring_));
+        store(force, l, pointCount(),
+              load(force, l, pointCount()) + planeForce(plane_, side_, load(p, l, pointCount()),
+                                                        load(v, l, pointCount()), spring_));
     } else {
-      for (int a = 0; a < 3; ++a)
-        storePack(force + a * kNumPoints + q, loadPack(force + a * kNumPoints + q) + 0.0);
+      for (int a = 0; a < 3; ++a) storePack(force + a * n + q, loadPack(force + a * n + q) + 0.0);
     }
   }
+  // A body whose count is not a multiple of 8 takes its last points one by one: where a point is
+  // not across, its force is 0.0 as above.
+  for (int q = packed; q < points.end; ++q)
+    store(force, q, n,
+          load(force, q, n) + planeForce(plane_, side_, load(p, q, n), load(v, q, n), spring_));
 }
 
 void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
-  for (int q = 0; q < kNumPoints; ++q) {
-    planeJacobian(plane_, side_, load(p, q), spring_, &dFdp, &dFdv);
+  for (int q = 0; q < pointCount(); ++q) {
+    planeJacobian(plane_, side_, load(p, q, pointCount()), spring_, &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
 
 void PlaneTerm::addEnergy(const double* p, double* energy) const {
   const double norm2 = plane_.a * plane_.a + plane_.b * plane_.b + plane_.c * plane_.c;
-  for (int q = 0; q < kNumPoints; ++q) {
-    double s = planeValue(plane_, load(p, q));
+  for (int q = 0; q < pointCount(); ++q) {
+    double s = planeValue(plane_, load(p, q, pointCount()));
     if (s * side_ < 0) *energy += 0.5 * spring_.k * s * s / norm2;
   }
 }

@@ -16,14 +16,7 @@ double restLength(const SpringOffset& o) {
   return kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
 }
 
-std::vector<Spring> buildSprings() {
-  std::vector<Spring> springs;
-  for (const SpringOffset& o : kSpringOffsets)
-    for (int q = 0; q < kNumPoints; ++q)
-      if (rowHasSprings(o, q / kPackLanes) && slotKept(o, q % kPackLanes))
-        springs.push_back({q, q + springDelta(o), restLength(o), o.kind});
-  return springs;
-}
+const std::vector<Spring>& buildSprings() { return courseBody().springs; }
 
 void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
                     Block3* dFdw) {
@@ -279,21 +272,103 @@ int balancedSplitPoint() {
   return best * kLatticeSize;
 }
 
-SpringTerm::SpringTerm(double k, double d, bool dampers)
-    : k_(k), d_(d), dampers_(dampers), springs_(buildSprings()) {
+SpringTerm::SpringTerm(const Body& body, const SpringConstants& constants, bool dampers)
+    : ForceTerm(body.count()),
+      body_(body),
+      c_(constants),
+      dampers_(dampers),
+      rowKernel_(body.courseLattice && constants.uniform()) {
   for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
+  // Each point's springs in the list's order: counted, then placed.
+  const int n = body.count();
+  springsStart_.assign(n + 1, 0);
+  for (const Spring& s : body.springs) ++springsStart_[s.a + 1], ++springsStart_[s.b + 1];
+  for (int q = 0; q < n; ++q) springsStart_[q + 1] += springsStart_[q];
+  springsOf_.resize(springsStart_[n]);
+  std::vector<int> next(springsStart_.begin(), springsStart_.end() - 1);
+  for (int s = 0; s < static_cast<int>(body.springs.size()); ++s) {
+    springsOf_[next[body.springs[s].a]++] = s;
+    springsOf_[next[body.springs[s].b]++] = s;
+  }
 }
 
 std::vector<std::pair<int, int>> SpringTerm::pairs() const {
   std::vector<std::pair<int, int>> out;
-  out.reserve(springs_.size());
-  for (const Spring& s : springs_) out.emplace_back(s.a, s.b);
+  out.reserve(springs().size());
+  for (const Spring& s : springs()) out.emplace_back(s.a, s.b);
   return out;
+}
+
+// The force on end a of spring s, as springForce computes it with its kind's constants; without
+// dampers their tension is left out altogether, as the row kernel leaves it out.
+inline Vec3 listSpringForce(const Spring& s, const SpringConstants& c, bool dampers,
+                            const double* p, const double* v, int n) {
+  const int kind = static_cast<int>(s.kind);
+  const Vec3 L = load(p, s.a, n) - load(p, s.b, n);
+  double len;
+  const Vec3 u = direction(L, &len);
+  double tension = springTension(len, c.k[kind], s.rest);
+  if (dampers) tension += damperTension(load(v, s.a, n) - load(v, s.b, n), u, c.d[kind]);
+  return tension * u;
+}
+
+void SpringTerm::addListForces(PointRange points, const double* p, const double* v,
+                               double* force) const {
+  const int n = pointCount();
+  const std::vector<Spring>& list = springs();
+  if (points.begin == 0 && points.end == n) {
+    for (const Spring& s : list) {
+      const Vec3 f = listSpringForce(s, c_, dampers_, p, v, n);
+      store(force, s.a, n, load(force, s.a, n) + f);
+      store(force, s.b, n, load(force, s.b, n) - f);
+    }
+    return;
+  }
+  gather(
+      points, [&](int s) { return listSpringForce(list[s], c_, dampers_, p, v, n); }, force);
+}
+
+// x - f and x + (-f) round alike: a point's sum, its springs' forces in the list's order, is the
+// whole pass's, bit for bit.
+template <class ForceOf>
+void SpringTerm::gather(PointRange points, const ForceOf& forceOf, double* force) const {
+  const int n = pointCount();
+  const std::vector<Spring>& list = springs();
+  for (int q = points.begin; q < points.end; ++q) {
+    Vec3 total = load(force, q, n);
+    for (int i = springsStart_[q]; i < springsStart_[q + 1]; ++i) {
+      const Vec3 f = forceOf(springsOf_[i]);
+      total = list[springsOf_[i]].a == q ? total + f : total - f;
+    }
+    store(force, q, n, total);
+  }
+}
+
+void SpringTerm::listSpringForces(int first, int end, const double* p, const double* v,
+                                  double* springForce) const {
+  const int n = pointCount();
+  for (int s = first; s < end; ++s) {
+    const Vec3 f = listSpringForce(springs()[s], c_, dampers_, p, v, n);
+    springForce[3 * s] = f.x;
+    springForce[3 * s + 1] = f.y;
+    springForce[3 * s + 2] = f.z;
+  }
+}
+
+void SpringTerm::addListedForces(PointRange points, const double* springForce,
+                                 double* force) const {
+  gather(
+      points,
+      [springForce](int s) {
+        return Vec3{springForce[3 * s], springForce[3 * s + 1], springForce[3 * s + 2]};
+      },
+      force);
 }
 
 void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                              double* force) const {
-  const Inputs in{p, v, -k_, -d_, rests_.data()};
+  if (!rowKernel_) return addListForces(points, p, v, force);
+  const Inputs in{p, v, -c_.k[0], -c_.d[0], rests_.data()};
   if (dampers_)
     addSpringForces<true>(in, points, force);
   else
@@ -301,18 +376,21 @@ void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v
 }
 
 void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
+  const int n = pointCount();
   Block3 dFdL, dFdw;
-  for (const Spring& s : springs_) {
-    springJacobian(load(p, s.a) - load(p, s.b), load(v, s.a) - load(v, s.b), k_, d_, s.rest, &dFdL,
-                   &dFdw);
+  for (const Spring& s : springs()) {
+    const int kind = static_cast<int>(s.kind);
+    springJacobian(load(p, s.a, n) - load(p, s.b, n), load(v, s.a, n) - load(v, s.b, n), c_.k[kind],
+                   c_.d[kind], s.rest, &dFdL, &dFdw);
     sink->addPair(dFdL, dFdw);
   }
 }
 
 void SpringTerm::addEnergy(const double* p, double* energy) const {
-  for (const Spring& s : springs_) {
-    double stretch = length(load(p, s.a) - load(p, s.b)) - s.rest;
-    *energy += 0.5 * k_ * stretch * stretch;
+  const int n = pointCount();
+  for (const Spring& s : springs()) {
+    double stretch = length(load(p, s.a, n) - load(p, s.b, n)) - s.rest;
+    *energy += 0.5 * c_.k[static_cast<int>(s.kind)] * stretch * stretch;
   }
 }
 
@@ -326,9 +404,15 @@ void SpringTerm::summarise(std::vector<std::string>* kept,
 }
 
 std::vector<TermLine> SpringTerm::describe(const double*) const {
-  return {{"springs",
-           textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)",
-                 k_, d_, springs_.size())}};
+  if (c_.uniform())
+    return {{"springs",
+             textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)",
+                   c_.k[0], c_.d[0], springs().size())}};
+  std::string text = textf("%zu springs:", springs().size());
+  for (int kind = 0; kind < kSpringKinds; ++kind)
+    text += textf("%s %s k %.9g N/m, d %.9g N s/m", kind ? ";" : "",
+                  springKindName(SpringKind(kind)), c_.k[kind], c_.d[kind]);
+  return {{"springs", text}};
 }
 
 }  // namespace jello

@@ -8,47 +8,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "body.h"
 #include "forces/term.h"
 
 namespace jello {
-
-enum class SpringKind : std::uint8_t { Structural, Shear, Bend };
-
-// One row of the table the spring list is built from: every lattice point (i,j,k) whose
-// neighbour (i+di, j+dj, k+dk) exists is joined to it by a spring of rest length |offset|/7.
-struct SpringOffset {
-  int di, dj, dk;
-  SpringKind kind;
-};
-// 16 rows, 6220 springs; the order in which the kernel adds them (docs/physics.md).
-inline constexpr std::array<SpringOffset, 16> kSpringOffsets = {{
-    // structural
-    {1, 0, 0, SpringKind::Structural},
-    {0, 1, 0, SpringKind::Structural},
-    {0, 0, 1, SpringKind::Structural},
-    // face shear
-    {1, 1, 0, SpringKind::Shear},
-    {1, -1, 0, SpringKind::Shear},
-    {1, 0, 1, SpringKind::Shear},
-    {1, 0, -1, SpringKind::Shear},
-    {0, 1, 1, SpringKind::Shear},
-    {0, 1, -1, SpringKind::Shear},
-    // body shear
-    {1, 1, 1, SpringKind::Shear},
-    {1, 1, -1, SpringKind::Shear},
-    {1, -1, 1, SpringKind::Shear},
-    {1, -1, -1, SpringKind::Shear},
-    // bend
-    {2, 0, 0, SpringKind::Bend},
-    {0, 2, 0, SpringKind::Bend},
-    {0, 0, 2, SpringKind::Bend},
-}};
-
-struct Spring {
-  int a, b;     // point indices, see pointIndex()
-  double rest;  // m, from the ideal lattice
-  SpringKind kind;
-};
 
 // How the force kernel covers the springs of one offset. It works on lattice rows (fixed i and
 // j, the 8 points along k, one Pack): the row of point q joins q to q + delta. A row computes
@@ -66,9 +29,9 @@ constexpr bool slotKept(const SpringOffset& o, int lane) {
 }
 // The rest length |offset|/7, computed as docs/physics.md gives it.
 double restLength(const SpringOffset& o);
-// The springs one by one (6,220), grouped by offset in the order of kSpringOffsets, each group
-// in the order of its points a: the kernel's kept slots.
-std::vector<Spring> buildSprings();
+// The course cube's springs one by one (6,220; courseBody's), grouped by offset in the order of
+// kSpringOffsets, each group in the order of its points a: the kernel's kept slots.
+const std::vector<Spring>& buildSprings();
 
 // Where two threads split the kernel's rows so that each has as many slots to compute: the first
 // point of the second range. The second range also computes again the slots of the rows just
@@ -92,16 +55,39 @@ inline Vec3 springForce(Vec3 L, Vec3 relVel, double k, double d, double rest) {
 void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
                     Block3* dFdw);
 
-// All the springs of the lattice, with one stiffness and one damping. Without dampers
-// (d = 0, and not the reference) the kernel leaves their term out.
+// The stiffness (N/m) and damping (N s/m) of each kind of spring, indexed by SpringKind. A
+// course world has one of each for all three kinds.
+struct SpringConstants {
+  std::array<double, kSpringKinds> k{}, d{};
+  static SpringConstants same(double k, double d) { return {{k, k, k}, {d, d, d}}; }
+  bool uniform() const { return k[0] == k[1] && k[1] == k[2] && d[0] == d[1] && d[1] == d[2]; }
+  bool anyDamping() const { return d[0] != 0 || d[1] != 0 || d[2] != 0; }
+};
+
+// All the springs of a body (body.h). The course cube with one stiffness and one damping goes
+// through the row kernel above; any other body through the spring list: on all its points a pass
+// over the springs in their order, adding each spring's force to its end a and taking it from its
+// end b; on a range of points, each point's springs in the same order (each spring is computed at
+// both its ends), which rounds alike. Both sum docs/physics.md's order, as the row kernel does.
+// Without dampers (no damping, and not the reference) the kernel leaves their term out.
 class SpringTerm final : public ForceTerm {
  public:
-  SpringTerm(double k, double d, bool dampers);
-  const std::vector<Spring>& springs() const { return springs_; }
+  SpringTerm(const Body& body, const SpringConstants& constants, bool dampers);
+  const std::vector<Spring>& springs() const { return body_.springs; }
+  const SpringConstants& constants() const { return c_; }
+  // Whether the row kernel computes the forces (else the spring list does).
+  bool rowKernel() const { return rowKernel_; }
+  // The spring list in two passes, for two threads: each spring's force on its end a, for the
+  // springs [first, end), into springForce (3 doubles a spring, xyz); then on a range of points,
+  // each point's springs' forces from it, added in the list's order: what addForcesOn adds there,
+  // bit for bit.
+  void listSpringForces(int first, int end, const double* p, const double* v,
+                        double* springForce) const;
+  void addListedForces(PointRange points, const double* springForce, double* force) const;
 
   bool isPairTerm() const override { return true; }
   std::vector<std::pair<int, int>> pairs() const override;
-  std::size_t pairCount() const override { return springs_.size(); }
+  std::size_t pairCount() const override { return springs().size(); }
   bool mayReach(const Bounds&) const override { return true; }
   void addForcesOn(PointRange points, const double* p, const double* v, const Bounds* box,
                    double* force) const override;
@@ -111,10 +97,17 @@ class SpringTerm final : public ForceTerm {
   std::vector<TermLine> describe(const double* p) const override;
 
  private:
-  double k_, d_;
-  bool dampers_;
+  void addListForces(PointRange points, const double* p, const double* v, double* force) const;
+  // Adds to each point of `points` its springs' forces forceOf(spring), in the list's order.
+  template <class ForceOf>
+  void gather(PointRange points, const ForceOf& forceOf, double* force) const;
+
+  const Body& body_;
+  SpringConstants c_;
+  bool dampers_, rowKernel_;
   std::array<double, kSpringOffsets.size()> rests_;  // m, restLength of each offset
-  std::vector<Spring> springs_;
+  // Each point's springs, in their order: springsOf_[springsStart_[q] .. springsStart_[q + 1]).
+  std::vector<int> springsStart_, springsOf_;
 };
 
 }  // namespace jello

@@ -6,6 +6,7 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "core/assert.h"
 #include "forces/pack.h"
 
 namespace jello {
@@ -13,12 +14,16 @@ namespace jello {
 // Eight running bounds side by side (one Pack), not one: an element-wise min, where a single
 // running min is a reduction the compiler may not reorder. (Written as arrays of 8 lanes, GCC
 // left it scalar: 0.43 us, 4% of a force evaluation; as Packs 0.1 us.)
-Bounds boundsOf(const double* p) {
+// A body whose count is not a multiple of 8 takes its last points one by one, with the same
+// comparisons.
+Bounds boundsOf(const double* p, int n) {
+  JELLO_ASSERT(n >= kPackLanes);
+  const int packed = n - n % kPackLanes;
   double lower[3], upper[3];
   for (int axis = 0; axis < 3; ++axis) {
-    const double* c = p + axis * kNumPoints;
+    const double* c = p + axis * n;
     Pack lo = loadPack(c), hi = lo;
-    for (int q = kPackLanes; q < kNumPoints; q += kPackLanes) {
+    for (int q = kPackLanes; q < packed; q += kPackLanes) {
       const Pack x = loadPack(c + q);
       lo = byPiece([](NativePack xs, NativePack low) { return xs < low ? xs : low; }, x, lo);
       hi = byPiece([](NativePack xs, NativePack high) { return xs > high ? xs : high; }, x, hi);
@@ -28,6 +33,10 @@ Bounds boundsOf(const double* p) {
     storePack(highs, hi);
     lower[axis] = *std::min_element(lows, lows + kPackLanes);
     upper[axis] = *std::max_element(highs, highs + kPackLanes);
+    for (int q = packed; q < n; ++q) {
+      lower[axis] = c[q] < lower[axis] ? c[q] : lower[axis];
+      upper[axis] = c[q] > upper[axis] ? c[q] : upper[axis];
+    }
   }
   return {{lower[0], lower[1], lower[2]}, {upper[0], upper[1], upper[2]}};
 }

@@ -25,18 +25,19 @@ namespace jello {
 struct Bounds {
   Vec3 lower, upper;
 };
-// The bounds of the kNumPoints positions of p. (With a NaN among them they mean little; such a
-// state is caught as diverged after the step.)
-Bounds boundsOf(const double* p);
+// The bounds of the n positions of p (a per-point array of n points). (With a NaN among them they
+// mean little; such a state is caught as diverged after the step.)
+Bounds boundsOf(const double* p, int n);
 
-// The points [begin, end) a call works on: whole lattice rows (begin and end multiples of
-// kLatticeSize, so that the loops 8 points at a time stay aligned). Every result is computed
-// point by point in the same order whatever the range: the forces on a range are those of the
-// whole call there, bit for bit, which lets two threads share an evaluation (core/team.h).
+// The points [begin, end) a call works on: begin a multiple of kRangeAlignment (so that the loops
+// 8 points at a time stay aligned; whole lattice rows in the course cube), end one too or the last
+// point's. Every result is computed point by point in the same order whatever the range: the
+// forces on a range are those of the whole call there, bit for bit, which lets two threads share
+// an evaluation (core/team.h).
 struct PointRange {
-  int begin = 0, end = kNumPoints;
+  int begin = 0, end = 0;
 };
-constexpr PointRange kAllPoints{0, kNumPoints};
+constexpr int kRangeAlignment = 8;
 
 // printf into a std::string, for the terms' descriptions (up to 511 characters).
 std::string textf(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
@@ -66,6 +67,10 @@ class ForceTerm {
  public:
   virtual ~ForceTerm() = default;
 
+  // The number of points of the body it acts on (body.h): its arrays hold 3 * pointCount() doubles.
+  int pointCount() const { return points_; }
+  PointRange allPoints() const { return {0, points_}; }
+
   // Pair terms (the springs) join two points; point terms (walls, plane, field) act on each
   // point alone, from its own position and velocity. The kernel sums the pair terms' forces
   // first, then adds the point terms' forces summed among themselves (the order docs/physics.md
@@ -91,7 +96,7 @@ class ForceTerm {
                            double* force) const = 0;
   // The same on every point.
   void addForces(const double* p, const double* v, const Bounds* box, double* force) const {
-    addForcesOn(kAllPoints, p, v, box, force);
+    addForcesOn(allPoints(), p, v, box, force);
   }
   // Adds the term's Jacobian blocks at (p, v).
   virtual void addJacobian(const double* p, const double* v, JacobianSink* sink) const = 0;
@@ -107,6 +112,12 @@ class ForceTerm {
                          std::vector<std::string>* leftOut) const = 0;
   // Its lines in `createWorld --describe`, for a cube at positions p.
   virtual std::vector<TermLine> describe(const double* p) const = 0;
+
+ protected:
+  explicit ForceTerm(int points) : points_(points) {}
+
+ private:
+  int points_;
 };
 
 }  // namespace jello

@@ -33,7 +33,7 @@ inline bool insideBox(Vec3 p) {
 
 class WallsTerm final : public ForceTerm {
  public:
-  explicit WallsTerm(const ContactSpring& spring) : spring_(spring) {}
+  WallsTerm(int points, const ContactSpring& spring) : ForceTerm(points), spring_(spring) {}
   // Some point of the box is beyond a wall.
   bool mayReach(const Bounds& box) const override;
   // The points beyond a wall, when the walls' spring pushes at all.

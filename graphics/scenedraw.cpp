@@ -192,7 +192,8 @@ void drawPinnedPoints(const Model& model, const State& state) {
   glEnable(GL_LIGHTING);
   glShadeModel(GL_SMOOTH);
   glColor3fv(kPinColour);
-  for (int q : model.pinned) drawBall(load(state.p(), q), kPinRadius, kPinSlices, kPinStacks);
+  for (int q : model.pinned)
+    drawBall(load(state.p(), q, model.points()), kPinRadius, kPinSlices, kPinStacks);
 }
 
 }  // namespace jello

@@ -292,7 +292,8 @@ void saveFrame(Viewer& v) {
   try {
     v.frames->save(readWindow(v.width, v.height));
     if (v.meshes)
-      v.meshes->write(index, v.state().p(), MeshStamp{v.worldPath, v.savedStep, v.time()});
+      v.meshes->write(index, v.model.body(), v.state().p(),
+                      MeshStamp{v.worldPath, v.savedStep, v.time()});
   } catch (const std::exception& e) {
     v.saving = false;
     v.say(e.what());
@@ -587,14 +588,6 @@ void keyboard(unsigned char key, int, int) {
   glutPostRedisplay();
 }
 
-bool isSurfacePoint(int q) {
-  int index[3] = {q / (kLatticeSize * kLatticeSize), (q / kLatticeSize) % kLatticeSize,
-                  q % kLatticeSize};
-  for (int c : index)
-    if (c == 0 || c == kLatticeSize - 1) return true;
-  return false;
-}
-
 // The cursor at window depth `depth`, in world coordinates.
 Vec3 unproject(const Viewer& v, int x, int y, double depth) {
   GLdouble wx, wy, wz;
@@ -605,9 +598,9 @@ Vec3 unproject(const Viewer& v, int x, int y, double depth) {
 void grab(Viewer& v, int x, int y) {
   int best = -1;
   double bestDistance = kGrabPixels, bestDepth = 0;
-  for (int q = 0; q < kNumPoints; ++q) {
-    if (!isSurfacePoint(q)) continue;
-    Vec3 p = load(v.state().p(), q);
+  const int n = v.model.points();
+  for (int q : v.model.body().surfacePoints) {
+    Vec3 p = load(v.state().p(), q, n);
     GLdouble sx, sy, sz;
     if (!gluProject(p.x, p.y, p.z, v.modelview, v.projection, v.viewport, &sx, &sy, &sz)) continue;
     double d = std::hypot(sx - x, sy - (v.height - y));
@@ -620,7 +613,7 @@ void grab(Viewer& v, int x, int y) {
     }
   }
   if (best < 0) {
-    v.say("no point of the cube near the cursor: left-drag from the cube's surface to pull it");
+    v.say("no point of the jelly near the cursor: left-drag from the jelly's surface to pull it");
     return;
   }
   v.grabDepth = bestDepth;

@@ -2,10 +2,7 @@
 
 #include "scene/reader.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <toml++/toml.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -14,8 +11,10 @@
 #include <iterator>
 #include <memory>
 
+#include "core/readfile.h"
 #include "scene/fieldrecipe.h"
 #include "scene/spec.h"
+#include "scene/voxels.h"
 
 namespace jello {
 
@@ -129,12 +128,14 @@ class Reader {
   const std::string& name() const { return name_; }
   const std::string& folder() const { return folder_; }
 
- private:
+ public:
   static std::string textOf(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
     return text;
   }
+
+ private:
   std::string name_, folder_;
 };
 
@@ -243,23 +244,138 @@ void readField(const Reader& r, const toml::table& root, ForceField* field) {
   }
 }
 
-void readJelly(const Reader& r, const toml::table& root, WorldFile* file) {
+// A whole number in [lowest, highest].
+int wholeNumber(const Reader& r, const toml::node& node, const std::string& key, int lowest,
+                int highest) {
+  const std::optional<std::int64_t> value = node.value<std::int64_t>();
+  if (!node.is_integer() || !value || *value < lowest || *value > highest)
+    r.fail(node, key,
+           "expected a whole number from " + std::to_string(lowest) + " to " +
+               std::to_string(highest));
+  return static_cast<int>(*value);
+}
+
+// The body of [jelly]'s shape: a lattice (the course's cube when it is 8x8x8 at 1/7 m), or the
+// voxels of a ball or of a mesh (scene/voxels.h).
+Body readShape(const Reader& r, const toml::table& t, const std::string& shape, double spacing) {
+  const toml::node& at = *t.get("shape");
+  if (shape == "lattice") {
+    const toml::node* size = t.get("size");
+    if (!size) r.fail(at, "jelly.size", "a lattice needs its size = [nx, ny, nz]");
+    const toml::array* array = size->as_array();
+    if (!array || array->size() != 3) r.fail(*size, "jelly.size", "expected [nx, ny, nz]");
+    int n[3];
+    for (int i = 0; i < 3; ++i)
+      n[i] = wholeNumber(r, *array->get(i), "jelly.size", 2, kMostBodyPoints);
+    return latticeBody(n[0], n[1], n[2], spacing);
+  }
+  VoxelGrid grid;
+  std::string why, what;
+  if (shape == "sphere") {
+    const std::optional<double> radius = r.number(t, "jelly.", "radius", 0, true);
+    if (!radius) r.fail(at, "jelly.radius", "a sphere needs its radius (m)");
+    if (!voxeliseSphere(*radius, spacing, &grid, &why))
+      r.fail(*t.get("radius"), "jelly.radius", why);
+    what = "a ball of radius " + Reader::textOf(*radius) + " m";
+  } else if (shape == "mesh") {
+    const toml::node* node = t.get("mesh");
+    const std::optional<std::string> path = node ? node->value<std::string>() : std::nullopt;
+    if (!node) r.fail(at, "jelly.mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
+    if (!path || path->empty()) r.fail(*node, "jelly.mesh", "expected the path of an OBJ file");
+    const std::string full =
+        (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+    TriangleMesh mesh;
+    if (!readObjMesh(full, &mesh, &why) || !voxeliseMesh(mesh, spacing, &grid, &why))
+      r.fail(*node, "jelly.mesh", why);
+    keepLargestPiece(&grid);
+    what = "the voxels of " + *path;
+  } else {
+    r.fail(at, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  }
+  return voxelBody(grid, spacing, what);  // where the voxels lie is the body's placement's
+}
+
+// The jelly's body when [jelly] gives a shape, or null (the course cube). Its spacing is the
+// voxels' edge: 1/7 m, the course's, unless given.
+std::shared_ptr<const Body> readBody(const Reader& r, const toml::table& t) {
+  const toml::node* node = t.get("shape");
+  for (const char* key : {"size", "spacing", "radius", "mesh"})
+    if (!node && t.get(key))
+      r.fail(*t.get(key), std::string("jelly.") + key,
+             "give the jelly's shape (\"lattice\", \"sphere\" or \"mesh\") with it");
+  if (!node) return nullptr;
+  const std::optional<std::string> shape = node->value<std::string>();
+  if (!shape) r.fail(*node, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  for (const auto& [key, owner] :
+       {std::pair{"size", "lattice"}, {"radius", "sphere"}, {"mesh", "mesh"}})
+    if (t.get(key) && *shape != owner)
+      r.fail(*t.get(key), std::string("jelly.") + key,
+             "belongs to shape = \"" + std::string(owner) + "\", not \"" + *shape + "\"");
+  const double spacing =
+      r.number(t, "jelly.", "spacing", kSmallestSpacing, false).value_or(kRestSpacing);
+  if (spacing > kLargestSpacing)
+    r.fail(*t.get("spacing"), "jelly.spacing",
+           "must be at most " + Reader::textOf(kLargestSpacing));
+  return std::make_shared<Body>(readShape(r, t, *shape, spacing));
+}
+
+// A stiffness or damping: one number for every kind of spring, or a table by kind
+// ({structural = ..., shear = ..., bend = ...}; a kind left out keeps *all, the world's).
+void readByKind(const Reader& r, const toml::table& t, const char* key, double* all,
+                std::array<double, kSpringKinds>* byKind, bool* perKind) {
+  const toml::node* node = t.get(key);
+  if (!node) return;
+  const std::string path = std::string("jelly.") + key;
+  if (const toml::table* kinds = node->as_table()) {
+    r.onlyKeys(*kinds, path + ".", {"structural", "shear", "bend"});
+    for (int kind = 0; kind < kSpringKinds; ++kind)
+      if (auto v = r.number(*kinds, path + ".", springKindName(SpringKind(kind)), 0))
+        (*byKind)[kind] = *v;
+    *perKind = true;
+    return;
+  }
+  *all = *r.number(t, "jelly.", key, 0);
+  byKind->fill(*all);
+}
+
+// The jelly's rest placement: a shaped body centred on the origin (the middle of its grid).
+State placedBody(const Body& body) {
+  const int n = body.count();
+  State state(n);
+  const Vec3 middle =
+      0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
+  for (int q = 0; q < n; ++q) {
+    const std::array<int, 3> i = body.index(q);
+    store(state.p(), q, n, body.spacing * Vec3{double(i[0]), double(i[1]), double(i[2])} - middle);
+  }
+  return state;
+}
+
+void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneSpec* spec) {
   const toml::table* t = r.table(root, "", "jelly");
   if (!t) return;
-  r.onlyKeys(*t, "jelly.", {"mass", "total_mass", "stiffness", "damping", "offset", "velocity"});
+  r.onlyKeys(*t, "jelly.",
+             {"mass", "total_mass", "stiffness", "damping", "offset", "velocity", "shape", "size",
+              "spacing", "radius", "mesh"});
   World& w = file->world;
+  spec->body = readBody(r, *t);
+  if (spec->body) file->state = placedBody(*spec->body);
+  const int n = file->state.points();
   if (t->get("mass") && t->get("total_mass"))
     r.fail(*t->get("total_mass"), "jelly.total_mass",
            "give mass (per point) or total_mass, not both");
   if (auto m = r.number(*t, "jelly.", "mass", 0, true)) w.mass = *m;
-  if (auto m = r.number(*t, "jelly.", "total_mass", 0, true)) w.mass = *m / kNumPoints;
-  if (auto k = r.number(*t, "jelly.", "stiffness", 0)) w.kElastic = *k;
-  if (auto d = r.number(*t, "jelly.", "damping", 0)) w.dElastic = *d;
+  if (auto m = r.number(*t, "jelly.", "total_mass", 0, true)) w.mass = *m / n;
+  SpringConstants springs = SpringConstants::same(w.kElastic, w.dElastic);
+  bool perKind = false;
+  readByKind(r, *t, "stiffness", &w.kElastic, &springs.k, &perKind);
+  readByKind(r, *t, "damping", &w.dElastic, &springs.d, &perKind);
+  if (perKind) spec->springs = springs;
   const Vec3 offset = r.vector(*t, "jelly.", "offset").value_or(Vec3{});
   const std::optional<Vec3> velocity = r.vector(*t, "jelly.", "velocity");
-  for (int q = 0; q < kNumPoints; ++q) {
-    store(file->state.p(), q, load(file->state.p(), q) + offset);
-    if (velocity) store(file->state.v(), q, *velocity);
+  for (int q = 0; q < n; ++q) {
+    store(file->state.p(), q, n, load(file->state.p(), q, n) + offset);
+    if (velocity) store(file->state.v(), q, n, *velocity);
   }
 }
 
@@ -368,23 +484,27 @@ void readBounds(const Reader& r, const toml::table& root, ContactSpring spring, 
   spec->bounds = o;
 }
 
-// An inclusive range [first, last] of lattice indices, all of them by default.
+// An inclusive range [first, last] of grid indices below `size`, all of them by default.
 std::pair<int, int> indexRange(const Reader& r, const toml::table& t, const std::string& path,
-                               const char* key) {
+                               const char* key, int size) {
   const toml::node* node = t.get(key);
-  if (!node) return {0, kLatticeSize - 1};
+  if (!node) return {0, size - 1};
   const toml::array* array = node->as_array();
   std::optional<std::int64_t> a, b;
   if (array && array->size() == 2)
     a = array->get(0)->value<std::int64_t>(), b = array->get(1)->value<std::int64_t>();
   if (!a || !b || !(*array->get(0)).is_integer() || !(*array->get(1)).is_integer() || *a < 0 ||
-      *b >= kLatticeSize || *a > *b)
-    r.fail(*node, path + key, "expected [first, last], whole numbers with 0 <= first <= last <= 7");
+      *b >= size || *a > *b)
+    r.fail(*node, path + key,
+           "expected [first, last], whole numbers with 0 <= first <= last <= " +
+               std::to_string(size - 1));
   return {static_cast<int>(*a), static_cast<int>(*b)};
 }
 
-void readPins(const Reader& r, const toml::table& root, const State& state, SceneSpec* spec) {
-  std::vector<char> pinned(kNumPoints, 0);
+void readPins(const Reader& r, const toml::table& root, const Body& body, const State& state,
+              SceneSpec* spec) {
+  const int n = body.count();
+  std::vector<char> pinned(n, 0);
   r.tables(root, "pin", [&](const toml::table& t, const std::string& path) {
     r.onlyKeys(t, path, {"i", "j", "k", "lower", "upper"});
     const bool region = t.get("lower") || t.get("upper");
@@ -395,22 +515,24 @@ void readPins(const Reader& r, const toml::table& root, const State& state, Scen
     if (region) {
       const Vec3 lower = r.vector(t, path, "lower").value_or(Vec3{-INFINITY, -INFINITY, -INFINITY});
       const Vec3 upper = r.vector(t, path, "upper").value_or(Vec3{INFINITY, INFINITY, INFINITY});
-      for (int q = 0; q < kNumPoints; ++q) {
-        const Vec3 p = load(state.p(), q);
+      for (int q = 0; q < n; ++q) {
+        const Vec3 p = load(state.p(), q, n);
         const bool inside = p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
                             p.z >= lower.z && p.z <= upper.z;
         if (inside) pinned[q] = 1, ++count;
       }
     } else {
-      const auto is = indexRange(r, t, path, "i"), js = indexRange(r, t, path, "j"),
-                 ks = indexRange(r, t, path, "k");
+      const auto is = indexRange(r, t, path, "i", body.nx),
+                 js = indexRange(r, t, path, "j", body.ny),
+                 ks = indexRange(r, t, path, "k", body.nz);
       for (int i = is.first; i <= is.second; ++i)
         for (int j = js.first; j <= js.second; ++j)
-          for (int k = ks.first; k <= ks.second; ++k) pinned[pointIndex(i, j, k)] = 1, ++count;
+          for (int k = ks.first; k <= ks.second; ++k)
+            if (const int q = body.pointAtIndex(i, j, k); q >= 0) pinned[q] = 1, ++count;
     }
     if (count == 0) r.fail(t, path.substr(0, path.size() - 1), "pins no point");
   });
-  for (int q = 0; q < kNumPoints; ++q)
+  for (int q = 0; q < n; ++q)
     if (pinned[q]) spec->pinned.push_back(q);
 }
 
@@ -449,8 +571,9 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
               "sphere", "box", "plane", "pin"});
   WorldFile file = baseWorld(r, root);
   World& w = file.world;
+  auto spec = std::make_shared<SceneSpec>();
   readRun(r, root, &w);
-  readJelly(r, root, &file);
+  readJelly(r, root, &file, spec.get());
   readField(r, root, &w.field);
   if (const toml::table* contact = r.table(root, "", "contact")) {
     r.onlyKeys(*contact, "contact.", {"stiffness", "damping"});
@@ -458,13 +581,13 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
     w.kCollision = spring.k;
     w.dCollision = spring.d;
   }
-  auto spec = std::make_shared<SceneSpec>();
   spec->gravity = r.vector(root, "", "gravity").value_or(Vec3{});
   const ContactSpring spring{w.kCollision, w.dCollision};
   readBounds(r, root, spring, spec.get());
   readObstacles(r, root, spring, spec.get());
-  readPins(r, root, file.state, spec.get());
-  for (int q : spec->pinned) store(file.state.v(), q, Vec3{});
+  const Body& body = spec->body ? *spec->body : courseBody();
+  readPins(r, root, body, file.state, spec.get());
+  for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
   if (std::optional<WorldProblem> problem = findWorldProblem(w, file.state))
     throw WorldFileError(name + ": " + problem->what);
   w.scene = std::move(spec);
@@ -472,25 +595,10 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
 }
 
 WorldFile readSceneFile(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) throw WorldFileError(path + ": cannot open: " + std::strerror(errno));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat info {};
-  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode))
-    throw WorldFileError(path + ": not a regular file (a scene file is read whole)");
-  if (static_cast<std::size_t>(info.st_size) > kMostSceneBytes)
-    throw WorldFileError(path + ": larger than " + std::to_string(kMostSceneBytes) + " bytes");
-  std::string text(static_cast<std::size_t>(info.st_size), '\0');
-  std::size_t got = 0;
-  while (got < text.size()) {
-    const ssize_t n = ::read(fd, &text[got], text.size() - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw WorldFileError(path + ": cannot read: " + std::strerror(n < 0 ? errno : EIO));
-    got += static_cast<std::size_t>(n);
-  }
+  std::string text, why;
+  if (!readRegularFile(path, kMostSceneBytes, "a scene file",
+                       std::to_string(kMostSceneBytes) + " bytes", &text, &why))
+    throw WorldFileError(why);
   const std::size_t slash = path.rfind('/');
   return parseScene(text, path, slash == std::string::npos ? "" : path.substr(0, slash));
 }

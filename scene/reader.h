@@ -24,6 +24,9 @@ constexpr double kLargestSceneNumber = 1e12;
 // A friction coefficient is at most this (few pairs of materials exceed 2; a point that must
 // not slide is pinned instead).
 constexpr double kMostFriction = 10;
+// A shaped jelly's spacing (its voxels' edge), m.
+constexpr double kSmallestSpacing = 1e-3;
+constexpr double kLargestSpacing = 10;
 // The most nodes per edge of a scene's [field], and the longest expression: the expressions are
 // evaluated at every node when the scene is read, and at these caps the dearest (64^3 nodes,
 // 1000 characters) is read in 0.43 s (a course world's file holds its field evaluated; 30 nodes).

@@ -5,10 +5,13 @@
 // Units: metres, seconds, kilograms; gravity in m/s^2.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "body.h"
 #include "forces/obstacle.h"
+#include "forces/springs.h"
 #include "vec3.h"
 
 namespace jello {
@@ -17,6 +20,11 @@ namespace jello {
 constexpr int kMostObstacles = 64;
 
 struct SceneSpec {
+  // The jelly, when the scene gives one ([body]); null: the course cube.
+  std::shared_ptr<const Body> body;
+  // The springs' constants by kind, when the scene gives them; none: the world's kElastic and
+  // dElastic for every kind.
+  std::optional<SpringConstants> springs;
   Vec3 gravity;                     // m/s^2, on every point, everywhere
   std::vector<Obstacle> obstacles;  // in the order of the file
   // Points that do not move (indices, see pointIndex), sorted, each once. Their velocities are 0.

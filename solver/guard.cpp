@@ -18,8 +18,9 @@ constexpr double kEnergyFloor = 1e-6;  // J: below this nothing is judged
 
 double mechanicalEnergy(const Model& model, const State& state) {
   double energy = 0;
-  for (int q = 0; q < kNumPoints; ++q)
-    energy += 0.5 * model.world.mass * dot(load(state.v(), q), load(state.v(), q));
+  const int n = model.points();
+  for (int q = 0; q < n; ++q)
+    energy += 0.5 * model.world.mass * dot(load(state.v(), q, n), load(state.v(), q, n));
   for (const auto& term : model.scene.terms) term->addEnergy(state.p(), &energy);
   return energy;
 }
@@ -27,7 +28,7 @@ double mechanicalEnergy(const Model& model, const State& state) {
 DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
   double largestForce = 0;
   for (const auto& term : model.scene.terms) largestForce += term->largestExternalForce();
-  energyRate_ = largestForce * std::sqrt(kNumPoints / (2 * model.world.mass));
+  energyRate_ = largestForce * std::sqrt(model.points() / (2 * model.world.mass));
   restart(initial, 0);
 }
 
@@ -39,9 +40,10 @@ void DivergenceGuard::restart(const State& state, double time) {
 std::string DivergenceGuard::check(const State& state, double time) const {
   int bad = findDivergedPoint(state);
   if (bad >= 0) {
-    Vec3 p = load(state.p(), bad), v = load(state.v(), bad);
+    const int n = state.points();
+    Vec3 p = load(state.p(), bad, n), v = load(state.v(), bad, n);
     bool finite = std::isfinite(dot(p, p)) && std::isfinite(dot(v, v));
-    return "point p" + latticeLabel(bad) +
+    return "point p" + model_.body().label(bad) +
            (finite ? " is more than 100 m from the origin" : " is no longer finite");
   }
   double bound = rootEnergy_ + energyRate_ * (time - start_);

@@ -297,14 +297,15 @@ double firstIterate(StepWork& w, const OdeSystem& system, const std::vector<doub
 void assembleNewton(StepWork& w, const OdeSystem& system, double dt) {
   system.newtonMatrix(w.temp.data(), dt, dt * dt, w.newton);
   ++w.stats.jacobians;
-  w.inverseDiagonal.resize(kNumCoords);
+  w.inverseDiagonal.resize(w.residual.size());
   w.newton.diagonal(w.inverseDiagonal.data());
   for (double& d : w.inverseDiagonal) d = d != 0 ? 1 / d : 1;
 }
 
 // BiCGSTAB from zero, preconditioned on the right by the diagonal: Eigen's algorithm (its restart
 // when r0 and r turn orthogonal included), until |N x - b| <= tolerance |b|. x is w.update, b
-// w.residual. False when it does not converge within kNumCoords * 2 iterations, as Eigen's.
+// w.residual. False when it does not converge within twice its unknowns' count of iterations, as
+// Eigen's.
 bool bicgstab(StepWork& w, double tolerance) {
   const Eigen::VectorXd& b = w.residual;
   Eigen::VectorXd &x = w.update, &r = w.r, &r0 = w.r0, &p = w.p, &v = w.v, &s = w.s, &t = w.t,
@@ -321,7 +322,7 @@ bool bicgstab(StepWork& w, double tolerance) {
   t.resize(b.size());
   const double threshold = tolerance * tolerance * rhsNorm2;
   for (int i = 0, restarts = 0; r.squaredNorm() > threshold;) {
-    if (i++ >= 2 * kNumCoords) return false;
+    if (i++ >= 2 * b.size()) return false;
     const double rhoOld = rho;
     rho = r0.dot(r);
     if (std::fabs(rho) < eps2 * r0Norm2) {  // r0 and r have turned orthogonal: restart
@@ -494,7 +495,7 @@ OdeSystem jelloSystem(const JelloInputs& inputs) {
     derivative(*inputs.model, y, dydt, inputs.pull, inputs.team);
   };
   system.newtonMatrix = [&inputs](const double* y, double cv, double cp, NewtonBlocks& matrix) {
-    newtonBlocks(*inputs.model, y, y + kNumCoords, inputs.pull, cv, cp, &matrix);
+    newtonBlocks(*inputs.model, y, y + inputs.model->coords(), inputs.pull, cv, cp, &matrix);
   };
   return system;
 }

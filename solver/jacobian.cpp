@@ -3,6 +3,7 @@
 #include "solver/jacobian.h"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -17,42 +18,68 @@ Mat3 toMatrix(const Block3& block) {
   return m;
 }
 
-std::vector<char> pinnedCoordinates(const std::vector<int>& pinned) {
-  std::vector<char> isPinned(kNumCoords, 0);
+std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int n) {
+  std::vector<char> isPinned(3 * n, 0);
   for (int q : pinned)
-    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis)] = 1;
+    for (int axis = 0; axis < 3; ++axis) isPinned[coordIndex(q, axis, n)] = 1;
   return isPinned;
 }
 
 namespace {
 
+// How many blocks the model's pattern has: a matrix whose slots list as many fits it.
+std::size_t patternBlockCount(const Model& model) {
+  std::size_t blocks = model.points();
+  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
+  return blocks;
+}
+
 // Every (row, column) block of the pattern, in the order of AccelerationJacobian::blockSlots.
 std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
   std::vector<std::pair<int, int>> blocks;
+  blocks.reserve(patternBlockCount(model));
   for (const auto& term : model.scene.terms)
     for (auto [a, b] : term->pairs())
       for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
         blocks.push_back({row, column});
-  for (int q = 0; q < kNumPoints; ++q) blocks.push_back({q, q});
+  for (int q = 0; q < model.points(); ++q) blocks.push_back({q, q});
   return blocks;
 }
 
-// The pattern of `blocks` as a sparse matrix of zeros.
-SparseMatrix patternMatrix(const std::vector<std::pair<int, int>>& blocks) {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (auto [row, column] : blocks)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        entries.emplace_back(coordIndex(row, i), coordIndex(column, j), 0.0);
-  SparseMatrix pattern(kNumCoords, kNumCoords);
-  pattern.setFromTriplets(entries.begin(), entries.end());
-  pattern.makeCompressed();
+// The pattern of `blocks` as a sparse matrix of zeros, its columns' row indices written out in
+// order: through triplets, a 32^3 lattice's 15 million entries (most of them repeats of a point's
+// own block) took seconds of copying and page faults.
+SparseMatrix patternMatrix(std::vector<std::pair<int, int>> blocks, int n) {
+  // By column point, then row point, each block once.
+  for (auto& block : blocks) std::swap(block.first, block.second);
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+  std::vector<std::size_t> first(n + 1, 0);  // column point c's blocks: [first[c], first[c + 1])
+  for (auto [column, row] : blocks) ++first[column + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  SparseMatrix pattern(3 * n, 3 * n);
+  pattern.resizeNonZeros(static_cast<Eigen::Index>(9 * blocks.size()));
+  int* const outer = pattern.outerIndexPtr();
+  outer[0] = 0;
+  for (int c = 0; c < n; ++c)
+    for (int j = 0; j < 3; ++j)
+      outer[coordIndex(c, j, n) + 1] = static_cast<int>(3 * (first[c + 1] - first[c]));
+  std::partial_sum(outer, outer + 3 * n + 1, outer);
+  for (int c = 0; c < n; ++c)
+    for (int j = 0; j < 3; ++j) {
+      int* const begin = pattern.innerIndexPtr() + outer[coordIndex(c, j, n)];
+      int* at = begin;
+      for (std::size_t b = first[c]; b < first[c + 1]; ++b)
+        for (int i = 0; i < 3; ++i) *at++ = coordIndex(blocks[b].second, i, n);
+      std::sort(begin, at);
+    }
+  std::fill(pattern.valuePtr(), pattern.valuePtr() + pattern.nonZeros(), 0.0);
   return pattern;
 }
 
 // Where every block's entries are in `pattern`'s value array (column-major).
 std::vector<BlockSlots> findSlots(const std::vector<std::pair<int, int>>& blocks,
-                                  const SparseMatrix& pattern) {
+                                  const SparseMatrix& pattern, int n) {
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
   auto find = [&](int row, int column) {
@@ -60,11 +87,12 @@ std::vector<BlockSlots> findSlots(const std::vector<std::pair<int, int>>& blocks
     return static_cast<int>(at - inner);
   };
   std::vector<BlockSlots> slots;
+  slots.reserve(blocks.size());
   for (auto [row, column] : blocks) {
     BlockSlots block;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        block[3 * i + j] = find(coordIndex(row, i), coordIndex(column, j));
+        block[3 * i + j] = find(coordIndex(row, i, n), coordIndex(column, j, n));
     slots.push_back(block);
   }
   return slots;
@@ -78,23 +106,17 @@ void accumulate(Block3* sum, const Block3& block) {
   for (int e = 0; e < 9; ++e) sum->m[e] += block.m[e];
 }
 
-// How many blocks the model's pattern has: a matrix whose slots list as many fits it.
-std::size_t patternBlockCount(const Model& model) {
-  std::size_t blocks = kNumPoints;
-  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
-  return blocks;
-}
-
 // What both assemblies share: the point terms' blocks are summed per point over the terms
 // (into the caller's scratch), then taken once per point with the user's pull added (a spring to
 // a fixed target: -stiffness I), as the point's whole force is.
 class PointSums : public JacobianSink {
  public:
-  PointSums(std::vector<Block3>* pointP, std::vector<Block3>* pointV)
+  PointSums(int points, std::vector<Block3>* pointP, std::vector<Block3>* pointV)
       : pointP_(*pointP), pointV_(*pointV) {
-    pointP_.assign(kNumPoints, Block3{});
-    pointV_.assign(kNumPoints, Block3{});
+    pointP_.assign(points, Block3{});
+    pointV_.assign(points, Block3{});
   }
+  int points() const { return static_cast<int>(pointP_.size()); }
   void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
     accumulate(&pointP_[q], dFdp);
     accumulate(&pointV_[q], dFdv);
@@ -117,10 +139,10 @@ class PointSums : public JacobianSink {
 // the points' blocks, scaled by 1/mass.
 class Assembly final : public PointSums {
  public:
-  Assembly(AccelerationJacobian* out, double perMass)
-      : PointSums(&out->pointP, &out->pointV), out_(*out), perMass_(perMass) {}
+  Assembly(int points, AccelerationJacobian* out, double perMass)
+      : PointSums(points, &out->pointP, &out->pointV), out_(*out), perMass_(perMass) {}
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
-    JELLO_ASSERT(slot_ + 4 + kNumPoints <= out_.blockSlots.size());
+    JELLO_ASSERT(slot_ + 4 + points() <= out_.blockSlots.size());
     for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
       addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], dFdL, sign * perMass_);
       addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], dFdw, sign * perMass_);
@@ -129,8 +151,8 @@ class Assembly final : public PointSums {
   }
   void finish(const Pull* pull) {
     // Every pair term gave as many pairs as it listed when the pattern was built.
-    JELLO_ASSERT(slot_ + kNumPoints == out_.blockSlots.size());
-    for (int q = 0; q < kNumPoints; ++q, ++slot_) {
+    JELLO_ASSERT(slot_ + points() == out_.blockSlots.size());
+    for (int q = 0; q < points(); ++q, ++slot_) {
       addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], byPosition(q, pull), perMass_);
       addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], byVelocity(q), perMass_);
     }
@@ -144,8 +166,8 @@ class Assembly final : public PointSums {
 
 // A pinned point's acceleration is 0 whatever the state (physics.cpp's derivative): its rows are
 // zero. (IMPLICIT's Newton step then leaves its velocity at 0.)
-void zeroPinnedRows(const std::vector<int>& pinned, AccelerationJacobian* out) {
-  const std::vector<char> isPinned = pinnedCoordinates(pinned);
+void zeroPinnedRows(const std::vector<int>& pinned, int n, AccelerationJacobian* out) {
+  const std::vector<char> isPinned = pinnedCoordinates(pinned, n);
   for (SparseMatrix* m : {&out->dAdp, &out->dAdv})
     for (Eigen::Index e = 0; e < m->nonZeros(); ++e)
       if (isPinned[m->innerIndexPtr()[e]]) m->valuePtr()[e] = 0;
@@ -158,16 +180,16 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
   // The pattern is made once per model shape; later calls only check that it still fits.
   if (out->blockSlots.size() != patternBlockCount(model)) {
     const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
-    out->dAdp = patternMatrix(blocks);
+    out->dAdp = patternMatrix(blocks, model.points());
     out->dAdv = out->dAdp;
-    out->blockSlots = findSlots(blocks, out->dAdp);
+    out->blockSlots = findSlots(blocks, out->dAdp, model.points());
   }
   std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
   std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
-  Assembly assembly(out, 1.0 / model.world.mass);
+  Assembly assembly(model.points(), out, 1.0 / model.world.mass);
   for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
-  if (!model.pinned.empty()) zeroPinnedRows(model.pinned, out);
+  if (!model.pinned.empty()) zeroPinnedRows(model.pinned, model.points(), out);
 }
 
 namespace {
@@ -175,8 +197,8 @@ namespace {
 // Block B of each pair, as the terms give them, and each point's diagonal block.
 class BlockAssembly final : public PointSums {
  public:
-  BlockAssembly(NewtonBlocks* out, double byPosition, double byVelocity)
-      : PointSums(&out->pointP, &out->pointV),
+  BlockAssembly(int points, NewtonBlocks* out, double byPosition, double byVelocity)
+      : PointSums(points, &out->pointP, &out->pointV),
         out_(*out),
         byPosition_(byPosition),
         byVelocity_(byVelocity) {}
@@ -188,7 +210,7 @@ class BlockAssembly final : public PointSums {
   // The diagonal blocks: the identity and the point terms' (the pull's included).
   void finish(const Pull* pull) {
     JELLO_ASSERT(pair_ == out_.pair.size());
-    for (int q = 0; q < kNumPoints; ++q) {
+    for (int q = 0; q < points(); ++q) {
       const Block3 &p = byPosition(q, pull), &v = byVelocity(q);
       Block3& b = out_.point[q];
       for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * p.m[e] + byVelocity_ * v.m[e];
@@ -210,57 +232,62 @@ Vec3 times(const Block3& b, Vec3 x) {
 }  // namespace
 
 void NewtonBlocks::multiply(const double* x, double* y) const {
-  for (int q = 0; q < kNumPoints; ++q) store(y, q, times(point[q], load(x, q)));
+  const int n = points();
+  for (int q = 0; q < n; ++q) store(y, q, n, times(point[q], load(x, q, n)));
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto [a, b] = pairs[k];
-    const Vec3 f = times(pair[k], load(x, a) - load(x, b));
-    store(y, a, load(y, a) + f);
-    store(y, b, load(y, b) - f);
+    const Vec3 f = times(pair[k], load(x, a, n) - load(x, b, n));
+    store(y, a, n, load(y, a, n) + f);
+    store(y, b, n, load(y, b, n) - f);
   }
-  for (int q : pinned) store(y, q, load(x, q));
+  for (int q : pinned) store(y, q, n, load(x, q, n));
 }
 
 void NewtonBlocks::diagonal(double* d) const {
-  for (int q = 0; q < kNumPoints; ++q)
-    for (int axis = 0; axis < 3; ++axis) d[coordIndex(q, axis)] = point[q].m[4 * axis];
+  const int n = points();
+  for (int q = 0; q < n; ++q)
+    for (int axis = 0; axis < 3; ++axis) d[coordIndex(q, axis, n)] = point[q].m[4 * axis];
   for (std::size_t k = 0; k < pairs.size(); ++k)
     for (int axis = 0; axis < 3; ++axis) {
-      d[coordIndex(pairs[k].first, axis)] += pair[k].m[4 * axis];
-      d[coordIndex(pairs[k].second, axis)] += pair[k].m[4 * axis];
+      d[coordIndex(pairs[k].first, axis, n)] += pair[k].m[4 * axis];
+      d[coordIndex(pairs[k].second, axis, n)] += pair[k].m[4 * axis];
     }
-  for (int q : pinned) store(d, q, Vec3{1, 1, 1});
+  for (int q : pinned) store(d, q, n, Vec3{1, 1, 1});
 }
 
 void newtonBlocks(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
                   double cp, NewtonBlocks* out) {
   // The pairs are listed once per model shape; later calls only check that they still fit.
-  if (4 * out->pairs.size() + kNumPoints != patternBlockCount(model)) {
+  if (4 * out->pairs.size() + out->point.size() != patternBlockCount(model) ||
+      out->points() != model.points()) {
     out->pairs.clear();
     for (const auto& term : model.scene.terms)
       for (auto pair : term->pairs()) out->pairs.push_back(pair);
     out->pair.resize(out->pairs.size());
-    out->point.resize(kNumPoints);
+    out->point.resize(model.points());
   }
   // -cp dA/dp - cv dA/dv, dA = dF / mass.
-  BlockAssembly assembly(out, -cp / model.world.mass, -cv / model.world.mass);
+  BlockAssembly assembly(model.points(), out, -cp / model.world.mass, -cv / model.world.mass);
   for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
   out->pinned = model.pinned;
 }
 
 SparseMatrix sparseOf(const NewtonBlocks& blocks) {
-  const std::vector<char> isPinned = pinnedCoordinates(blocks.pinned);
+  const int n = blocks.points();
+  const std::vector<char> isPinned = pinnedCoordinates(blocks.pinned, n);
   std::vector<Eigen::Triplet<double>> entries;
   auto add = [&](int row, int column, const Block3& b, double sign) {
-    if (isPinned[coordIndex(row, 0)]) return;
+    if (isPinned[coordIndex(row, 0, n)]) return;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        entries.emplace_back(coordIndex(row, i), coordIndex(column, j), sign * b.m[3 * i + j]);
+        entries.emplace_back(coordIndex(row, i, n), coordIndex(column, j, n),
+                             sign * b.m[3 * i + j]);
   };
-  for (int q = 0; q < kNumPoints; ++q) add(q, q, blocks.point[q], 1);
+  for (int q = 0; q < n; ++q) add(q, q, blocks.point[q], 1);
   for (int q : blocks.pinned)
     for (int axis = 0; axis < 3; ++axis)
-      entries.emplace_back(coordIndex(q, axis), coordIndex(q, axis), 1.0);
+      entries.emplace_back(coordIndex(q, axis, n), coordIndex(q, axis, n), 1.0);
   for (std::size_t k = 0; k < blocks.pairs.size(); ++k) {
     const auto [a, b] = blocks.pairs[k];
     add(a, a, blocks.pair[k], 1);
@@ -268,7 +295,7 @@ SparseMatrix sparseOf(const NewtonBlocks& blocks) {
     add(b, a, blocks.pair[k], -1);
     add(b, b, blocks.pair[k], 1);
   }
-  SparseMatrix matrix(kNumCoords, kNumCoords);
+  SparseMatrix matrix(3 * n, 3 * n);
   matrix.setFromTriplets(entries.begin(), entries.end());
   return matrix;
 }

@@ -19,13 +19,13 @@ using Mat3 = Eigen::Matrix3d;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using BlockSlots = std::array<int, 9>;
 
-// 1 at each coordinate (coordIndex) of a pinned point, 0 elsewhere: kNumCoords flags.
-std::vector<char> pinnedCoordinates(const std::vector<int>& pinned);
+// 1 at each coordinate (coordIndex) of a pinned point, 0 elsewhere: 3n flags for n points.
+std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int n);
 
 // A term's block as an Eigen matrix.
 Mat3 toMatrix(const Block3& block);
 
-// Jacobians (kNumCoords x kNumCoords) of the accelerations F/mass of all points with respect
+// Jacobians (3n x 3n for n points) of the accelerations F/mass of all points with respect
 // to all positions and all velocities. Their sparsity pattern is the same for every state and
 // for both: a 3x3 block for every point (the diagonal) and for every pair of points a pair term
 // joins, zeros kept. It is built on the first assembly; later ones only write values.
@@ -54,7 +54,8 @@ struct NewtonBlocks {
   // The model's pinned points: their rows of dA are zero, so their rows of N are the identity's
   // (the blocks above still hold what the terms gave, multiply() and diagonal() override them).
   std::vector<int> pinned;
-  // y = N x; x and y are per-point arrays of kNumCoords doubles, not the same.
+  int points() const { return static_cast<int>(point.size()); }
+  // y = N x; x and y are per-point arrays of the points' 3n doubles, not the same.
   void multiply(const double* x, double* y) const;
   // The diagonal of N, a per-point array.
   void diagonal(double* d) const;

@@ -25,10 +25,11 @@ bool passesCheapTest(const State& state) {
   // within the radius; and v * 0 is 0 for a finite velocity component, NaN otherwise. Together:
   // findDivergedPoint's test, point by point.
   bool sane = true;
-  for (int q = 0; q < kNumPoints; ++q) {
-    const double x = p[q], y = p[kNumPoints + q], z = p[2 * kNumPoints + q];
+  const int n = state.points();
+  for (int q = 0; q < n; ++q) {
+    const double x = p[q], y = p[n + q], z = p[2 * n + q];
     const double r2 = x * x + y * y + z * z;
-    const double zero = v[q] * 0 + v[kNumPoints + q] * 0 + v[2 * kNumPoints + q] * 0;
+    const double zero = v[q] * 0 + v[n + q] * 0 + v[2 * n + q] * 0;
     sane &= (r2 <= kRadiusSquared) & (zero == 0);
   }
   return sane;
@@ -96,10 +97,11 @@ void Simulation::restart(const State& start) {
 }
 
 void Simulation::addVelocity(Vec3 dv) {
-  std::vector<bool> pinned(kNumPoints, false);
+  const int n = model_.points();
+  std::vector<bool> pinned(n, false);
   for (int q : model_.pinned) pinned[q] = true;
-  for (int q = 0; q < kNumPoints; ++q)
-    if (!pinned[q]) store(state_.v(), q, load(state_.v(), q) + dv);
+  for (int q = 0; q < n; ++q)
+    if (!pinned[q]) store(state_.v(), q, n, load(state_.v(), q, n) + dv);
   guard_.restart(state_, time_);
 }
 

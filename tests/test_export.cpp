@@ -20,7 +20,7 @@
 
 #include "app/export.h"
 #include "app/pictures.h"
-#include "app/surface.h"
+#include "body.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -33,7 +33,7 @@ constexpr int kLast = kLatticeSize - 1;
 // a . (b x c) / 6. Positive when the triangles wind counter-clockwise seen from outside.
 double signedVolume(const double* positions) {
   double sixTimes = 0;
-  for (const Triangle& t : surfaceTriangles())
+  for (const Triangle& t : courseBody().surface)
     sixTimes += dot(load(positions, t[0]), cross(load(positions, t[1]), load(positions, t[2])));
   return sixTimes / 6;
 }
@@ -43,9 +43,9 @@ bool onSurface(int i, int j, int k) {
 }
 
 TEST(Surface, Has296VerticesAnd588TrianglesOnTheBoundaryPoints) {
-  const std::vector<int>& points = surfacePoints();
+  const std::vector<int>& points = courseBody().surfacePoints;
   ASSERT_EQ(points.size(), 296u);
-  EXPECT_EQ(kSurfacePoints, 296);
+  EXPECT_EQ(courseBody().surfacePoints.size(), 296u);
   EXPECT_TRUE(std::is_sorted(points.begin(), points.end()));
   int boundary = 0;
   for (int i = 0; i < kLatticeSize; ++i)
@@ -54,14 +54,14 @@ TEST(Surface, Has296VerticesAnd588TrianglesOnTheBoundaryPoints) {
         const int q = pointIndex(i, j, k);
         const bool listed = std::binary_search(points.begin(), points.end(), q);
         EXPECT_EQ(listed, onSurface(i, j, k)) << latticeLabel(q);
-        EXPECT_EQ(surfaceVertexOfPoint()[q] >= 0, onSurface(i, j, k)) << latticeLabel(q);
+        EXPECT_EQ(courseBody().surfaceVertexOf[q] >= 0, onSurface(i, j, k)) << latticeLabel(q);
         boundary += onSurface(i, j, k);
       }
   EXPECT_EQ(boundary, 296);
   for (std::size_t n = 0; n < points.size(); ++n)
-    EXPECT_EQ(surfaceVertexOfPoint()[points[n]], static_cast<int>(n));
+    EXPECT_EQ(courseBody().surfaceVertexOf[points[n]], static_cast<int>(n));
 
-  const std::vector<Triangle>& triangles = surfaceTriangles();
+  const std::vector<Triangle>& triangles = courseBody().surface;
   ASSERT_EQ(triangles.size(), 588u);
   std::set<int> used;
   for (const Triangle& t : triangles) {
@@ -75,7 +75,7 @@ TEST(Surface, IsClosedAndManifoldWithConsistentWinding) {
   // Each directed edge a->b once, and its reverse b->a once in another triangle: then every
   // edge has exactly two triangles, wound the same way round the surface.
   std::map<std::pair<int, int>, int> directed;
-  for (const Triangle& t : surfaceTriangles())
+  for (const Triangle& t : courseBody().surface)
     for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
   std::map<std::pair<int, int>, int> undirected;
   for (const auto& [edge, count] : directed) {
@@ -104,7 +104,7 @@ TEST(Surface, EnclosesTheRestCubesOneCubicMetreWoundOutward) {
 
 TEST(Surface, NormalsOfTheRestCubeAreTheFacesAxesAndTheCornersDiagonals) {
   const State rest = test::restLattice();
-  const std::vector<Vec3> normals = surfaceNormals(rest.p());
+  const std::vector<Vec3> normals = surfaceNormals(courseBody(), rest.p());
   ASSERT_EQ(normals.size(), static_cast<std::size_t>(kNumPoints));
   const auto expectNormal = [&](int i, int j, int k, Vec3 expected) {
     const Vec3 n = normals[pointIndex(i, j, k)];
@@ -126,7 +126,8 @@ TEST(Surface, NormalsOfTheRestCubeAreTheFacesAxesAndTheCornersDiagonals) {
   // An edge point between faces x = 7 and z = 7 at rest: halfway between their axes.
   expectNormal(kLast, 3, kLast, {std::sqrt(0.5), 0, std::sqrt(0.5)});
   EXPECT_EQ(length(normals[pointIndex(3, 3, 3)]), 0) << "an interior point has none";
-  for (int q : surfacePoints()) EXPECT_NEAR(length(normals[q]), 1, 1e-15) << latticeLabel(q);
+  for (int q : courseBody().surfacePoints)
+    EXPECT_NEAR(length(normals[q]), 1, 1e-15) << latticeLabel(q);
 }
 
 TEST(Surface, NormalsWeighTheTrianglesByTheirAreas) {
@@ -134,7 +135,7 @@ TEST(Surface, NormalsWeighTheTrianglesByTheirAreas) {
   // area of those of x = 7, so the corner [7][7][7] leans (1, 2, 2)/3, not (1, 1, 1)/sqrt(3).
   State stretched = test::restLattice();
   for (int q = 0; q < kNumPoints; ++q) stretched.p()[coordIndex(q, 0)] *= 2;
-  const Vec3 n = surfaceNormals(stretched.p())[pointIndex(kLast, kLast, kLast)];
+  const Vec3 n = surfaceNormals(courseBody(), stretched.p())[pointIndex(kLast, kLast, kLast)];
   EXPECT_NEAR(n.x, 1.0 / 3, 1e-12);
   EXPECT_NEAR(n.y, 2.0 / 3, 1e-12);
   EXPECT_NEAR(n.z, 2.0 / 3, 1e-12);
@@ -180,32 +181,33 @@ ParsedObj parseObj(const std::string& text) {
 
 TEST(MeshText, ObjListsTheSurfaceExactlyWithItsNormalsAndTriangles) {
   const State rest = test::restLattice();
-  const ParsedObj obj = parseObj(meshText(MeshFormat::Obj, rest.p(), {"a.w", 12, 0.012}));
+  const ParsedObj obj =
+      parseObj(meshText(MeshFormat::Obj, courseBody(), rest.p(), {"a.w", 12, 0.012}));
   ASSERT_EQ(obj.v.size(), 296u);
   ASSERT_EQ(obj.vn.size(), 296u);
   ASSERT_EQ(obj.f.size(), 588u);
   EXPECT_EQ(obj.other, 0);
   EXPECT_EQ(obj.step, 12);
-  const std::vector<Vec3> normals = surfaceNormals(rest.p());
+  const std::vector<Vec3> normals = surfaceNormals(courseBody(), rest.p());
   for (std::size_t n = 0; n < 296; ++n) {
-    const Vec3 p = load(rest.p(), surfacePoints()[n]);
+    const Vec3 p = load(rest.p(), courseBody().surfacePoints[n]);
     EXPECT_EQ(obj.v[n].x, p.x);  // shortest round-trip digits: the same doubles
     EXPECT_EQ(obj.v[n].y, p.y);
     EXPECT_EQ(obj.v[n].z, p.z);
-    EXPECT_EQ(obj.vn[n].z, normals[surfacePoints()[n]].z);
+    EXPECT_EQ(obj.vn[n].z, normals[courseBody().surfacePoints[n]].z);
   }
   for (std::size_t t = 0; t < 588; ++t)
     for (int corner = 0; corner < 3; ++corner) {
       const int vertex = obj.f[t][2 * corner];
       EXPECT_EQ(obj.f[t][2 * corner + 1], vertex) << "vertex a's normal is vn a";
       ASSERT_TRUE(vertex >= 1 && vertex <= 296);
-      EXPECT_EQ(surfacePoints()[vertex - 1], surfaceTriangles()[t][corner]);
+      EXPECT_EQ(courseBody().surfacePoints[vertex - 1], courseBody().surface[t][corner]);
     }
 }
 
 TEST(MeshText, PlyHasTheHeaderBlenderAndHoudiniReadAndTheSameMesh) {
   const State rest = test::restLattice();
-  const std::string text = meshText(MeshFormat::Ply, rest.p(), {"a.w", 0, 0});
+  const std::string text = meshText(MeshFormat::Ply, courseBody(), rest.p(), {"a.w", 0, 0});
   std::istringstream lines(text);
   std::vector<std::string> header;
   for (std::string line; std::getline(lines, line) && line != "end_header";)
@@ -225,15 +227,15 @@ TEST(MeshText, PlyHasTheHeaderBlenderAndHoudiniReadAndTheSameMesh) {
   for (std::size_t n = 0; n < 296; ++n) {
     Vec3 p, normal;
     lines >> p.x >> p.y >> p.z >> normal.x >> normal.y >> normal.z;
-    EXPECT_EQ(p.x, load(rest.p(), surfacePoints()[n]).x);
-    EXPECT_EQ(p.z, load(rest.p(), surfacePoints()[n]).z);
+    EXPECT_EQ(p.x, load(rest.p(), courseBody().surfacePoints[n]).x);
+    EXPECT_EQ(p.z, load(rest.p(), courseBody().surfacePoints[n]).z);
   }
   for (std::size_t t = 0; t < 588; ++t) {
     int count = 0, a = -1, b = -1, c = -1;
     lines >> count >> a >> b >> c;
     ASSERT_EQ(count, 3);
-    EXPECT_EQ(surfacePoints()[a], surfaceTriangles()[t][0]);  // PLY counts from 0
-    EXPECT_EQ(surfacePoints()[c], surfaceTriangles()[t][2]);
+    EXPECT_EQ(courseBody().surfacePoints[a], courseBody().surface[t][0]);  // PLY counts from 0
+    EXPECT_EQ(courseBody().surfacePoints[c], courseBody().surface[t][2]);
     (void)b;
   }
   std::string rest_;
@@ -242,7 +244,8 @@ TEST(MeshText, PlyHasTheHeaderBlenderAndHoudiniReadAndTheSameMesh) {
 
 TEST(MeshText, AWorldNamedWithANewlineStaysInItsCommentLine) {
   const State rest = test::restLattice();
-  const ParsedObj obj = parseObj(meshText(MeshFormat::Obj, rest.p(), {"evil\nv 9 9 9\n.w", 0, 0}));
+  const ParsedObj obj =
+      parseObj(meshText(MeshFormat::Obj, courseBody(), rest.p(), {"evil\nv 9 9 9\n.w", 0, 0}));
   EXPECT_EQ(obj.v.size(), 296u);
   EXPECT_EQ(obj.other, 0);
 }
@@ -293,7 +296,7 @@ TEST(CliExport, AHeadlessRunWritesOneMeshPerFrameNumberedLikeTheFrames) {
     EXPECT_EQ(obj.step, steps[k]) << "mesh " << k << " is the frame of step " << steps[k];
     if (k > 0) continue;
     for (std::size_t n = 0; n < obj.v.size(); ++n) {
-      const Vec3 p = load(initial.state.p(), surfacePoints()[n]);
+      const Vec3 p = load(initial.state.p(), courseBody().surfacePoints[n]);
       EXPECT_EQ(obj.v[n].x, p.x) << n;
       EXPECT_EQ(obj.v[n].y, p.y) << n;
       EXPECT_EQ(obj.v[n].z, p.z) << n;

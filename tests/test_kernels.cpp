@@ -121,7 +121,8 @@ TEST(SpringKernel, AddsEachSpringInTheDocumentedOrderBitForBit) {
       }
     }
     EXPECT_EQ(offsets, 16);
-    SpringTerm(k, d, dampers).addForces(s.p(), s.v(), nullptr, got.data());
+    SpringTerm(courseBody(), SpringConstants::same(k, d), dampers)
+        .addForces(s.p(), s.v(), nullptr, got.data());
     EXPECT_EQ(std::memcmp(got.data(), expected.data(), sizeof(double) * kNumCoords), 0)
         << (dampers ? "with" : "without") << " dampers";
   }
@@ -209,7 +210,7 @@ TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
       State s = state;
       Stepper stepper(Integrator::RK4);
       for (int step = 0; step < 300; ++step) stepper.step(model, s, w.dt);
-      const Bounds box = boundsOf(s.p());
+      const Bounds box = boundsOf(s.p(), kNumPoints);
       const Bounds* reach = model.scene.culling ? &box : nullptr;
       State other = s;
       for (int c = 0; c < kNumCoords; ++c) other.p()[c] += 0.01 * std::sin(c);
@@ -220,7 +221,7 @@ TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
         computeForces(model, s.p(), s.v(), whole.data(), &pull);
         for (int split = kLatticeSize; split < kNumPoints; split += kLatticeSize) {
           for (PointRange range : {PointRange{split, kNumPoints}, PointRange{0, split}}) {
-            computeForcesOn(model, kAllPoints, other.p(), s.v(), reach, junk.data(), &pull);
+            computeForcesOn(model, {0, kNumPoints}, other.p(), s.v(), reach, junk.data(), &pull);
             computeForcesOn(model, range, s.p(), s.v(), reach, parts.data(), &pull);
           }
           ASSERT_EQ(std::memcmp(parts.data(), whole.data(), sizeof(double) * kNumCoords), 0)
@@ -300,10 +301,10 @@ TEST(FieldKernel, PaddedInterpolationIsTheReferenceBitForBit) {
     for (int q = 0; q < 8; ++q) store(s.p(), 17 * q, special[q]);
     State inside = s;
     for (int c = 0; c < kNumCoords; ++c) inside.p()[c] = inBox(random);
-    const FieldTerm padded(w.field, w.mass, FieldTerm::Method::Padded),
-        reference(w.field, w.mass, FieldTerm::Method::Reference);
+    const FieldTerm padded(kNumPoints, w.field, w.mass, FieldTerm::Method::Padded),
+        reference(kNumPoints, w.field, w.mass, FieldTerm::Method::Reference);
     for (const State* state : {&s, &inside}) {
-      const Bounds box = boundsOf(state->p());
+      const Bounds box = boundsOf(state->p(), kNumPoints);
       std::vector<double> expected(kNumCoords, 1.0), got(kNumCoords, 1.0), bounded(kNumCoords, 1.0);
       reference.addForces(state->p(), state->v(), nullptr, expected.data());
       padded.addForces(state->p(), state->v(), nullptr, got.data());

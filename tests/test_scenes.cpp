@@ -257,22 +257,7 @@ TEST(Pins, EveryIntegratorKeepsItsOrderOnAScenWithPins) {
   const WorldFile f = scene(
       "gravity = [0, 0, -9.81]\n[bounds]\npresent = false\n[[pin]]\ni = [0, 0]\nk = [7, 7]\n");
   const Model model = makeModel(f.world, f.state);
-  constexpr double kTime = 0.02;
-  auto run = [&](Integrator integrator, double dt) {
-    Simulation s(model, f.state, integrator, dt);
-    EXPECT_TRUE(s.advanceTo(kTime).ran());
-    return s.state();
-  };
-  const State reference = run(Integrator::RK4, 1e-6);
-  for (const IntegratorInfo& row : integratorTable()) {
-    if (row.integrator == Integrator::RK45) continue;  // adaptive: its error follows its tolerance
-    const double dt = row.order >= 4 ? 1e-3 : 2e-4;
-    const double coarse = test::rmsDistance(run(row.integrator, dt).p(), reference.p());
-    const double fine = test::rmsDistance(run(row.integrator, dt / 2).p(), reference.p());
-    const double order = std::log2(coarse / fine);
-    std::printf("%s: errors %.3g, %.3g: order %.2f\n", row.name, coarse, fine, order);
-    EXPECT_NEAR(order, row.order, 0.35) << row.name;
-  }
+  test::expectEveryIntegratorsOrder(model, f.state, 0.02);
 }
 
 // A jelly on a horizontal plane with friction, under gravity tilted by a (a slope of angle a):
@@ -490,6 +475,42 @@ const Malformed kMalformed[] = {
      "test.toml:1: Error while parsing floating-point: expected 'nan', saw 'n<newline>'"},
     {"\"a\\nb\" = 1\n", "test.toml:1: unknown key (a<newline>b)"},
     {"\"a\\u0001\" = 1\n", "test.toml:1: unknown key (a<U+0001>)"},
+    // bodies
+    {"[jelly]\nsize = [4, 4, 4]\n",
+     "test.toml:2: give the jelly's shape (\"lattice\", \"sphere\" or \"mesh\") with it "
+     "(jelly.size)"},
+    {"[jelly]\nshape = \"cone\"\n",
+     "test.toml:2: expected \"lattice\", \"sphere\" or \"mesh\" (jelly.shape)"},
+    {"[jelly]\nshape = 3\n",
+     "test.toml:2: expected \"lattice\", \"sphere\" or \"mesh\" (jelly.shape)"},
+    {"[jelly]\nshape = \"lattice\"\n",
+     "test.toml:2: a lattice needs its size = [nx, ny, nz] (jelly.size)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [1, 4, 4]\n",
+     "test.toml:3: expected a whole number from 2 to 48 (jelly.size)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [49, 4, 4]\n",
+     "test.toml:3: expected a whole number from 2 to 48 (jelly.size)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [4, 4]\n",
+     "test.toml:3: expected [nx, ny, nz] (jelly.size)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\nradius = 1\n",
+     "test.toml:4: belongs to shape = \"sphere\", not \"lattice\" (jelly.radius)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\nspacing = 0\n",
+     "test.toml:4: must be at least 0.001 (jelly.spacing)"},
+    {"[jelly]\nshape = \"sphere\"\n", "test.toml:2: a sphere needs its radius (m) (jelly.radius)"},
+    {"[jelly]\nshape = \"sphere\"\nradius = 5\nspacing = 0.1\n",
+     "test.toml:3: a ball of radius 5 m is 10 m across (along x): at voxel size 0.1 m that is 100 "
+     "voxels, at most 47; use a voxel of at least 0.22 m (jelly.radius)"},
+    {"[jelly]\nshape = \"mesh\"\n",
+     "test.toml:2: a mesh jelly needs its mesh = \"FILE.obj\" (jelly.mesh)"},
+    {"[jelly]\nshape = \"mesh\"\nmesh = \"none.obj\"\n",
+     "none.obj: cannot open: No such file or directory (jelly.mesh)"},
+    {"[jelly]\nshape = \"mesh\"\nmesh = \"scenes/models/jelly-mould.obj\"\nspacing = 0.001\n",
+     "voxels, at most 47; use a voxel of at least"},
+    {"[jelly]\nstiffness = {structural = 1, twist = 2}\n",
+     "test.toml:2: unknown key (jelly.stiffness.twist)"},
+    {"[jelly]\nstiffness = {shear = -1}\n",
+     "test.toml:2: must be at least 0 (jelly.stiffness.shear)"},
+    {"[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\n[[pin]]\ni = [0, 4]\n",
+     "test.toml:5: expected [first, last], whole numbers with 0 <= first <= last <= 3 (pin[1].i)"},
 };
 
 TEST(SceneFile, RefusesEveryMalformedSceneWithItsLineAndKey) {

@@ -63,8 +63,8 @@ TEST(Stability, ModesOfTheRestLatticeScaleWithStiffnessAndDamping) {
   // At rest the damping is proportional to the stiffness (every spring has d/k = 0.25/500), so
   // every mode's damping rate is omega^2 d/k, and explicit Euler's limit is d/k for all of them.
   World w = test::springsOnlyWorld();
-  Model model = makeModel(w, restState());
-  Linearisation modes = linearise(model, restState());  // both ends of the spectrum
+  Model model = makeModel(w, restState(courseBody()));
+  Linearisation modes = linearise(model, restState(courseBody()));  // both ends of the spectrum
   EXPECT_EQ(modes.growing, 0);
   EXPECT_GE(modes.modes.size(), 48u);  // the 24 fastest and at least 24 slowest
   for (const Mode& m : modes.modes)

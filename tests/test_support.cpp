@@ -1,12 +1,14 @@
 #include "test_support.h"
 
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <pty.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,8 @@
 #include <stdexcept>
 
 #include "app/stability.h"
+#include "solver/integrators.h"
+#include "solver/simulation.h"
 #include "vec3.h"
 
 namespace jello::test {
@@ -34,6 +38,35 @@ std::vector<double> readExpectedPositions(const std::string& name) {
   return p;
 }
 
+double rmsDistance(const State& a, const State& b) {
+  const int n = a.points();
+  double sum = 0;
+  for (int q = 0; q < n; ++q) {
+    const Vec3 d = load(a.p(), q, n) - load(b.p(), q, n);
+    sum += dot(d, d);
+  }
+  return std::sqrt(sum / n);
+}
+
+State expectEveryIntegratorsOrder(const Model& model, const State& start, double time) {
+  auto run = [&](Integrator integrator, double dt) {
+    Simulation s(model, start, integrator, dt);
+    EXPECT_TRUE(s.advanceTo(time).ran());
+    return s.state();
+  };
+  const State reference = run(Integrator::RK4, 1e-6);
+  for (const IntegratorInfo& row : integratorTable()) {
+    if (row.integrator == Integrator::RK45) continue;
+    const double dt = row.order >= 4 ? 1e-3 : 2e-4;
+    const double coarse = rmsDistance(run(row.integrator, dt), reference);
+    const double fine = rmsDistance(run(row.integrator, dt / 2), reference);
+    const double order = std::log2(coarse / fine);
+    std::printf("%s: errors %.3g, %.3g: order %.2f\n", row.name, coarse, fine, order);
+    EXPECT_NEAR(order, row.order, 0.35) << row.name;
+  }
+  return reference;
+}
+
 double rmsDistance(const double* a, const double* b) {
   double sum = 0;
   for (int q = 0; q < kNumPoints; ++q) {
@@ -43,7 +76,7 @@ double rmsDistance(const double* a, const double* b) {
   return std::sqrt(sum / kNumPoints);
 }
 
-State restLattice() { return restState(); }
+State restLattice() { return restState(courseBody()); }
 
 World springsOnlyWorld() {
   World w;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "physics.h"
 #include "world.h"
 
 namespace jello::test {
@@ -18,6 +19,15 @@ std::vector<double> readExpectedPositions(const std::string& name);
 
 // RMS over the 512 points of the distance between two position arrays (m).
 double rmsDistance(const double* a, const double* b);
+
+// RMS over the points of two states (of any body) of the distance between their positions (m).
+double rmsDistance(const State& a, const State& b);
+
+// Fits each integrator's order (RK45 aside: adaptive, its error follows its tolerance) from its
+// errors at dt and dt/2 (dt 1e-3 for order 4 and above, 2e-4 below) against RK4 at 1e-6, over
+// `time` seconds of `model` from `start`, printing the fits, and expects each within 0.35 of
+// the table's order. Returns the reference's end state.
+State expectEveryIntegratorsOrder(const Model& model, const State& start, double time);
 
 // The ideal lattice p[i][j][k] = (i,j,k)/7, at rest.
 State restLattice();

@@ -172,11 +172,12 @@ TEST(ForceTerms, AReachTestThatSaysNoMeansNoForce) {
       std::vector<double> p(s->p(), s->p() + kNumCoords), v(s->v(), s->v() + kNumCoords);
       const std::vector<double> f = termForce(*term, p, v);
       const bool any = std::any_of(f.begin(), f.end(), [](double x) { return x != 0; });
-      if (!term->mayReach(boundsOf(p.data()))) {
+      if (!term->mayReach(boundsOf(p.data(), kNumPoints))) {
         EXPECT_FALSE(any) << term->describe(p.data())[0].label;
       }
       if (s == &touching) {
-        EXPECT_TRUE(any && term->mayReach(boundsOf(p.data()))) << term->describe(p.data())[0].label;
+        EXPECT_TRUE(any && term->mayReach(boundsOf(p.data(), kNumPoints)))
+            << term->describe(p.data())[0].label;
       }
     }
   }

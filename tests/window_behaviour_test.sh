@@ -65,7 +65,7 @@ key k
 shot w
 "$difference" jello-window-004.jpg jello-window-005.jpg 3 >/dev/null && fail "k showed no help"
 xdotool mousemove --window "$window" 5 470 click 1
-wait_for 'said "no point of the cube near the cursor"' 5 || fail "a missed grab was not said"
+wait_for 'said "no point of the jelly near the cursor"' 5 || fail "a missed grab was not said"
 quit_jello
 [ "$status" -eq 0 ] || fail "jello exited with status $status after the help"
 
