@@ -198,12 +198,14 @@ void checkSceneText(const std::uint8_t* data, std::size_t size) {
       failed("an accepted obstacle", obstacleText(ob));
     if (ob.shape == ObstacleShape::Sphere && !(ob.radius > 0)) failed("a sphere", obstacleText(ob));
   }
+  const int points = file.state.points();
   for (std::size_t i = 0; i < spec.pinned.size(); ++i)
-    if (spec.pinned[i] < 0 || spec.pinned[i] >= kNumPoints ||
+    if (spec.pinned[i] < 0 || spec.pinned[i] >= points ||
         (i > 0 && spec.pinned[i] <= spec.pinned[i - 1]))
       failed("pins", "not sorted, distinct points");
   const Model model = makeModel(file.world, file.state);
-  std::vector<double> force(kNumCoords);
+  if (model.points() != points) failed("a scene's model", "not as many points as its state");
+  std::vector<double> force(3 * std::size_t(points));
   computeForces(model, file.state.p(), file.state.v(), force.data());
   for (double f : force)
     if (std::isnan(f)) failed("a scene's forces", "not a number");
