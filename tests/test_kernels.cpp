@@ -257,9 +257,10 @@ TEST(KernelRanges, ATwoThreadRunIsTheOneThreadRunBitForBit) {
 
 // The team runs each part of each job exactly once, whichever thread takes part 1: jobs whose
 // part 0 is slow (the helper may take part 1) and whose part 0 is instant (the caller may take
-// it), and jobs after the helper has gone to sleep. Every thousandth job's part 0 waits until
-// part 1 has begun, which only the helper can begin then: the helper must take it, however busy
-// the machine (a fixed spin let the caller take every part 1 under load).
+// it), and jobs after the helper has gone to sleep. Every thousandth job's part 0 (job 10001's
+// just after that sleep) waits until part 1 has begun, which only the helper can begin then: the
+// helper must take it, however busy the machine (a fixed spin let the caller take every part 1
+// under load).
 TEST(Team, RunsEachPartOfEachJobExactlyOnce) {
   Team team;
   std::atomic<int> counts[2] = {{0}, {0}};
