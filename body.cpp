@@ -20,9 +20,18 @@ const char* springKindName(SpringKind kind) {
   return "bend";
 }
 
+double restLength(const SpringOffset& o, double spacing) {
+  return spacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
+}
+
 std::array<int, 3> Body::index(int q) const {
   const int node = nodeOf[q];
   return {node / (ny * nz), (node / nz) % ny, node % nz};
+}
+
+Vec3 Body::restPosition(int q) const {
+  const std::array<int, 3> i = index(q);
+  return spacing * Vec3{double(i[0]), double(i[1]), double(i[2])};
 }
 
 std::string Body::label(int q) const {
@@ -33,7 +42,7 @@ std::string Body::label(int q) const {
 
 int Body::pointAtIndex(int i, int j, int k) const {
   if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
-  return pointAt[(i * ny + j) * nz + k];
+  return pointAt[node(i, j, k)];
 }
 
 namespace {
@@ -51,17 +60,16 @@ void numberPoints(const VoxelMask& mask, Body* body) {
     for (int j = 0; j < body->ny; ++j)
       for (int k = 0; k < body->nz; ++k)
         if (isCorner(mask, i, j, k)) {
-          const int node = (i * body->ny + j) * body->nz + k;
+          const int node = body->node(i, j, k);
           body->pointAt[node] = body->count();
           body->nodeOf.push_back(node);
         }
 }
 
-// The springs by offset in table order, each offset's in the order of their end a. The rest
-// length is computed as docs/physics.md gives it for the course (spacing * sqrt(di^2+dj^2+dk^2)).
+// The springs by offset in table order, each offset's in the order of their end a.
 void addSprings(Body* body) {
   for (const SpringOffset& o : kSpringOffsets) {
-    const double rest = body->spacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
+    const double rest = restLength(o, body->spacing);
     for (int a = 0; a < body->count(); ++a) {
       const std::array<int, 3> i = body->index(a);
       const int b = body->pointAtIndex(i[0] + o.di, i[1] + o.dj, i[2] + o.dk);

@@ -58,6 +58,11 @@ inline constexpr std::array<SpringOffset, 16> kSpringOffsets = {{
     {0, 0, 2, SpringKind::Bend},
 }};
 
+// The rest length of an offset's springs in a grid of `spacing` (m): spacing * |offset|, computed
+// as docs/physics.md gives it for the course (spacing * sqrt(di^2 + dj^2 + dk^2)); the row kernel
+// and every body's spring list take it from here, so that they agree to the bit.
+double restLength(const SpringOffset& o, double spacing = kRestSpacing);
+
 struct Spring {
   int a, b;     // point numbers
   double rest;  // m, from the ideal lattice
@@ -69,13 +74,13 @@ using Triangle = std::array<int, 3>;  // three point numbers, counter-clockwise 
 // The most points along an edge of a body's grid (the 2..48).
 constexpr int kMostBodyPoints = 48;
 
-// Which voxels of an nx x ny x nz grid are filled: filled[(i * ny + j) * nz + k].
+// Which voxels of an nx x ny x nz grid are filled: filled[cell(i, j, k)].
 struct VoxelMask {
   int nx = 0, ny = 0, nz = 0;
   std::vector<char> filled;
+  std::size_t cell(int i, int j, int k) const { return (std::size_t(i) * ny + j) * nz + k; }
   bool at(int i, int j, int k) const {
-    return i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz &&
-           filled[(std::size_t(i) * ny + j) * nz + k];
+    return i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz && filled[cell(i, j, k)];
   }
 };
 
@@ -83,7 +88,7 @@ struct Body {
   std::string what;            // "the 8x8x8 lattice", "a 16x4x4 lattice", "voxels of duck.obj", ...
   int nx = 0, ny = 0, nz = 0;  // grid nodes along x, y, z (voxels + 1)
   double spacing = 0;          // m, between neighbouring nodes
-  std::vector<int> nodeOf;     // point -> grid node (i * ny + j) * nz + k
+  std::vector<int> nodeOf;     // point -> grid node (node(i, j, k))
   std::vector<int> pointAt;    // grid node -> point, or -1
   std::vector<Spring> springs;
   std::vector<Triangle> surface;     // counter-clockwise seen from outside
@@ -93,8 +98,12 @@ struct Body {
 
   int count() const { return static_cast<int>(nodeOf.size()); }
   int coords() const { return 3 * count(); }
+  // Grid node (i, j, k)'s number: (i * ny + j) * nz + k.
+  int node(int i, int j, int k) const { return (i * ny + j) * nz + k; }
   // The grid index of point q.
   std::array<int, 3> index(int q) const;
+  // Point q at rest, m: spacing * its grid index (node (0, 0, 0) at the origin).
+  Vec3 restPosition(int q) const;
   // "[i][j][k]" for point q.
   std::string label(int q) const;
   // The point at grid node (i, j, k), or -1 (also outside the grid).

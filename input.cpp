@@ -20,6 +20,7 @@
 #include <string>
 #include <system_error>
 
+#include "core/assert.h"
 #include "core/memory.h"
 #include "core/output.h"
 #include "physics.h"
@@ -547,17 +548,17 @@ std::optional<WorldProblem> findWorldProblem(const World& w, const State& state)
   }
   const std::pair<const double*, Part> arrays[] = {{state.p(), Part::Position},
                                                    {state.v(), Part::Velocity}};
+  const int n = state.points();
+  JELLO_ASSERT(n == bodyOf(w).count());
   for (auto [points, part] : arrays) {
-    const int n = state.points();
     for (int q = 0; q < n; ++q) {
       const Vec3 a = load(points, q, n);
       const double value[3] = {a.x, a.y, a.z};
       if (finite3(value)) continue;
       const bool position = part == Part::Position;
-      const std::string label = n == kNumPoints ? latticeLabel(q) : std::to_string(q);
       return WorldProblem{part, static_cast<std::size_t>(q),
                           std::string(position ? "the position" : "the velocity") + " of point " +
-                              label + " is " + triple(value, position ? "m" : "m/s") +
+                              bodyOf(w).label(q) + " is " + triple(value, position ? "m" : "m/s") +
                               ", not finite"};
     }
   }

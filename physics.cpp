@@ -120,6 +120,10 @@ SpringConstants springConstantsOf(const World& world) {
   return SpringConstants::same(world.kElastic, world.dElastic);
 }
 
+bool hasCourseSprings(const World& world) {
+  return courseSprings(bodyOf(world), springConstantsOf(world));
+}
+
 Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   JELLO_ASSERT(initial.points() == bodyOf(world).count());
   Model model;

@@ -78,6 +78,8 @@ struct Model {
 const Body& bodyOf(const World& world);
 // The springs' constants: a scene's per kind, or the world's kElastic and dElastic for all.
 SpringConstants springConstantsOf(const World& world);
+// Whether the world's jelly is the course cube with the course's springs (courseSprings).
+bool hasCourseSprings(const World& world);
 // `initial` holds the body's points.
 Model makeModel(const World& world, const State& initial,
                 KernelChoice choice = KernelChoice::Specialised);

@@ -144,7 +144,8 @@ struct WorldProblem {
   std::string
       what;  // one line, e.g. "the velocity of point [0][0][0] is (inf, 0, 0) m/s, not finite"
 };
-// The first problem of `world` and `state`, or none when formatWorld of them reads back.
+// The first problem of `world` and `state` (which holds the world's body's points), or none when
+// formatWorld of them reads back.
 std::optional<WorldProblem> findWorldProblem(const World& world, const State& state);
 
 // Parses the text of a world file; `name` is used in error messages. Throws WorldFileError.

@@ -108,7 +108,7 @@ std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const Stat
 
 std::vector<double> timeForces(const std::vector<Kernel>& kernels, const State& state,
                                long long fixedCount, int repeats) {
-  std::vector<double> force(state.y.size() / 2);
+  std::vector<double> force(state.coords());
   std::vector<Work> works;
   for (const Kernel& kernel : kernels) {
     works.push_back([&, kernel](long long count) {

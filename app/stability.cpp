@@ -555,9 +555,7 @@ Linearisation lineariseAtRest(const World& world) {
   // Pins change the lattice's modes (no rigid motions are left), and another body or springs of
   // different kinds have modes of their own: its springs and pins alone, at rest, through the
   // general analysis.
-  const Body& body = bodyOf(world);
-  if (!body.courseLattice || !springConstantsOf(world).uniform() ||
-      (world.scene && !world.scene->pinned.empty())) {
+  if (!hasCourseSprings(world) || (world.scene && !world.scene->pinned.empty())) {
     World springs = world;
     auto bodyOnly = std::make_shared<SceneSpec>();
     bodyOnly->body = world.scene->body;
@@ -567,7 +565,7 @@ Linearisation lineariseAtRest(const World& world) {
     springs.scene = bodyOnly;
     springs.hasPlane = false;
     springs.field = {};
-    const State rest = restState(body);
+    const State rest = restState(bodyOf(world));
     return linearise(makeModel(springs, rest), rest);
   }
   return freeLatticeAtRest(world);
@@ -596,10 +594,7 @@ double criticalStep(Integrator integrator, const std::vector<Mode>& modes) {
 State restState(const Body& body) {
   const int n = body.count();
   State s(n);
-  for (int q = 0; q < n; ++q) {
-    const std::array<int, 3> i = body.index(q);
-    store(s.p(), q, n, body.spacing * Vec3{double(i[0]), double(i[1]), double(i[2])});
-  }
+  for (int q = 0; q < n; ++q) store(s.p(), q, n, body.restPosition(q));
   return s;
 }
 
@@ -655,14 +650,12 @@ double largestStrain(const Body& body, const State& state) {
 }
 
 double stableFraction(const World& world, const State& initial, const Linearisation* rest) {
-  const Body& body = bodyOf(world);
-  const SpringConstants springs = springConstantsOf(world);
   // How damped the fastest mode is for its speed. For the course cube the free lattice's tells
   // it, pins or not (they hold a few points of 512, and their lattice's solve takes a second):
   // at rest a mode's damping rate is its omega^2 dElastic / kElastic, the fastest's over omega.
   // Another body's, or springs of different kinds: the fastest of its own modes at rest.
   double dampingPerRadian = 0;
-  if (body.courseLattice && springs.uniform()) {
+  if (hasCourseSprings(world)) {
     const Linearisation free = freeLatticeAtRest(world);
     if (!free.finite || free.modes.empty()) return kStableFraction;
     dampingPerRadian = free.highestFrequency * world.dElastic / world.kElastic;
@@ -676,8 +669,9 @@ double stableFraction(const World& world, const State& initial, const Linearisat
     dampingPerRadian = fastest.damping / std::sqrt(fastest.omegaSquared);
   }
   const bool lightlyDamped = dampingPerRadian < kLightDamping;
-  return lightlyDamped && largestStrain(body, initial) > kDeformed ? kLargeMotionStableFraction
-                                                                   : kStableFraction;
+  return lightlyDamped && largestStrain(bodyOf(world), initial) > kDeformed
+             ? kLargeMotionStableFraction
+             : kStableFraction;
 }
 
 double StabilityReport::verdictLimit(Integrator integrator) const {

@@ -321,33 +321,27 @@ void FieldTerm::addForcesOn(PointRange points, const double* p, const double*, c
   switch (method_) {
     case Method::Uniform:
       if (inside) {  // the common case, without the per-point test
-        for (int q = points.begin; q < points.end; ++q)
-          store(force, q, pointCount(), load(force, q, pointCount()) + uniform_);
+        for (int q = points.begin; q < points.end; ++q) addAt(force, q, uniform_);
         return;
       }
       for (int q = points.begin; q < points.end; ++q)
-        store(force, q, pointCount(),
-              load(force, q, pointCount()) +
-                  (insideBox(load(p, q, pointCount())) ? uniform_ : Vec3{}));
+        addAt(force, q, (insideBox(at(p, q)) ? uniform_ : Vec3{}));
       return;
     case Method::Padded: {
       // A body whose count is not a multiple of 8 takes its last points one by one, through the
       // reference interpolation, which rounds as the packed one does (test_kernels).
-      const int n = pointCount(), packed = points.end - (points.end - points.begin) % kPackLanes;
+      const int n = pointCount(), packed = groupedEnd(points, kPackLanes);
       if (inside)
         addPaddedField<true>(padded_.data(), field_.resolution, packed, n, points.begin, p, force);
       else
         addPaddedField<false>(padded_.data(), field_.resolution, packed, n, points.begin, p, force);
       for (int q = packed; q < points.end; ++q)
-        store(force, q, n,
-              load(force, q, n) + referenceForce(field_.forces, field_.resolution, load(p, q, n)));
+        addAt(force, q, referenceForce(field_.forces, field_.resolution, at(p, q)));
       return;
     }
     case Method::Reference:
       for (int q = points.begin; q < points.end; ++q)
-        store(force, q, pointCount(),
-              load(force, q, pointCount()) +
-                  referenceForce(field_.forces, field_.resolution, load(p, q, pointCount())));
+        addAt(force, q, referenceForce(field_.forces, field_.resolution, at(p, q)));
       return;
   }
 }
@@ -355,7 +349,7 @@ void FieldTerm::addForcesOn(PointRange points, const double* p, const double*, c
 void FieldTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   const Block3 none;
   for (int q = 0; q < pointCount(); ++q)
-    sink->addPoint(q, gradientAt(field_.forces, field_.resolution, load(p, q, pointCount())), none);
+    sink->addPoint(q, gradientAt(field_.forces, field_.resolution, at(p, q)), none);
 }
 
 void FieldTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {

@@ -6,8 +6,7 @@ namespace jello {
 
 void GravityTerm::addForcesOn(PointRange points, const double*, const double*, const Bounds*,
                               double* force) const {
-  for (int q = points.begin; q < points.end; ++q)
-    store(force, q, pointCount(), load(force, q, pointCount()) + weight_);
+  for (int q = points.begin; q < points.end; ++q) addAt(force, q, weight_);
 }
 
 void GravityTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {

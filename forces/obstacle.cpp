@@ -255,23 +255,20 @@ int ObstacleTerm::pointsInContact(const double* p) const {
   if (obstacle_.spring.k == 0 && obstacle_.spring.d == 0) return 0;
   int count = 0;
   Penetration pens[3];
-  for (int q = 0; q < pointCount(); ++q)
-    count += penetrations(obstacle_, load(p, q, pointCount()), pens) > 0;
+  for (int q = 0; q < pointCount(); ++q) count += penetrations(obstacle_, at(p, q), pens) > 0;
   return count;
 }
 
 void ObstacleTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                                double* force) const {
   for (int q = points.begin; q < points.end; ++q)
-    store(force, q, pointCount(),
-          load(force, q, pointCount()) +
-              obstacleForce(obstacle_, load(p, q, pointCount()), load(v, q, pointCount())));
+    addAt(force, q, obstacleForce(obstacle_, at(p, q), at(v, q)));
 }
 
 void ObstacleTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
   for (int q = 0; q < pointCount(); ++q) {
-    obstacleJacobian(obstacle_, load(p, q, pointCount()), load(v, q, pointCount()), &dFdp, &dFdv);
+    obstacleJacobian(obstacle_, at(p, q), at(v, q), &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
@@ -279,7 +276,7 @@ void ObstacleTerm::addJacobian(const double* p, const double* v, JacobianSink* s
 void ObstacleTerm::addEnergy(const double* p, double* energy) const {
   Penetration pens[3];
   for (int q = 0; q < pointCount(); ++q) {
-    const int count = penetrations(obstacle_, load(p, q, pointCount()), pens);
+    const int count = penetrations(obstacle_, at(p, q), pens);
     for (int i = 0; i < count; ++i)
       *energy += 0.5 * obstacle_.spring.k * pens[i].depth * pens[i].depth;
   }

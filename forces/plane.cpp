@@ -81,7 +81,7 @@ PlaneTerm::PlaneTerm(int points, const Plane& given, double side, const ContactS
 int PlaneTerm::pointsAcross(const double* p) const {
   int across = 0;
   for (int q = 0; q < pointCount(); ++q)
-    if (planeValue(plane_, load(p, q, pointCount())) * side_ < 0) ++across;
+    if (planeValue(plane_, at(p, q)) * side_ < 0) ++across;
   return across;
 }
 
@@ -90,7 +90,7 @@ int PlaneTerm::pointsAcross(const double* p) const {
 // root and two divisions a point, are computed for the eight when one of them is across.
 void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                             double* force) const {
-  const int n = pointCount(), packed = points.end - (points.end - points.begin) % kPackLanes;
+  const int n = pointCount(), packed = groupedEnd(points, kPackLanes);
   for (int q = points.begin; q < packed; q += kPackLanes) {
     const Pack x = loadPack(p + q), y = loadPack(p + n + q), z = loadPack(p + 2 * n + q);
     const Pack s = planeValueAt(plane_, x, y, z);
@@ -103,9 +103,7 @@ void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v,
     for (int l = 0; l < kPackLanes; ++l) any = any || across.lane(l) != 0;
     if (any) {
       for (int l = q; l < q + kPackLanes; ++l)
-        store(force, l, pointCount(),
-              load(force, l, pointCount()) + planeForce(plane_, side_, load(p, l, pointCount()),
-                                                        load(v, l, pointCount()), spring_));
+        addAt(force, l, planeForce(plane_, side_, at(p, l), at(v, l), spring_));
     } else {
       for (int a = 0; a < 3; ++a) storePack(force + a * n + q, loadPack(force + a * n + q) + 0.0);
     }
@@ -113,14 +111,13 @@ void PlaneTerm::addForcesOn(PointRange points, const double* p, const double* v,
   // A body whose count is not a multiple of 8 takes its last points one by one: where a point is
   // not across, its force is 0.0 as above.
   for (int q = packed; q < points.end; ++q)
-    store(force, q, n,
-          load(force, q, n) + planeForce(plane_, side_, load(p, q, n), load(v, q, n), spring_));
+    addAt(force, q, planeForce(plane_, side_, at(p, q), at(v, q), spring_));
 }
 
 void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
   for (int q = 0; q < pointCount(); ++q) {
-    planeJacobian(plane_, side_, load(p, q, pointCount()), spring_, &dFdp, &dFdv);
+    planeJacobian(plane_, side_, at(p, q), spring_, &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
@@ -128,7 +125,7 @@ void PlaneTerm::addJacobian(const double* p, const double*, JacobianSink* sink) 
 void PlaneTerm::addEnergy(const double* p, double* energy) const {
   const double norm2 = plane_.a * plane_.a + plane_.b * plane_.b + plane_.c * plane_.c;
   for (int q = 0; q < pointCount(); ++q) {
-    double s = planeValue(plane_, load(p, q, pointCount()));
+    double s = planeValue(plane_, at(p, q));
     if (s * side_ < 0) *energy += 0.5 * spring_.k * s * s / norm2;
   }
 }

@@ -12,10 +12,6 @@
 
 namespace jello {
 
-double restLength(const SpringOffset& o) {
-  return kRestSpacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
-}
-
 const std::vector<Spring>& buildSprings() { return courseBody().springs; }
 
 void springJacobian(Vec3 L, Vec3 relVel, double k, double d, double rest, Block3* dFdL,
@@ -277,7 +273,7 @@ SpringTerm::SpringTerm(const Body& body, const SpringConstants& constants, bool 
       body_(body),
       c_(constants),
       dampers_(dampers),
-      rowKernel_(body.courseLattice && constants.uniform()) {
+      rowKernel_(courseSprings(body, constants)) {
   for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
   // Each point's springs in the list's order: counted, then placed.
   const int n = body.count();

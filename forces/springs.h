@@ -27,8 +27,6 @@ constexpr bool rowHasSprings(const SpringOffset& o, int row) {
 constexpr bool slotKept(const SpringOffset& o, int lane) {
   return lane + o.dk >= 0 && lane + o.dk < kLatticeSize;
 }
-// The rest length |offset|/7, computed as docs/physics.md gives it.
-double restLength(const SpringOffset& o);
 // The course cube's springs one by one (6,220; courseBody's), grouped by offset in the order of
 // kSpringOffsets, each group in the order of its points a: the kernel's kept slots.
 const std::vector<Spring>& buildSprings();
@@ -63,6 +61,11 @@ struct SpringConstants {
   bool uniform() const { return k[0] == k[1] && k[1] == k[2] && d[0] == d[1] && d[1] == d[2]; }
   bool anyDamping() const { return d[0] != 0 || d[1] != 0 || d[2] != 0; }
 };
+// The course's springs: the 8x8x8 lattice with one stiffness and one damping for every kind.
+// Only these go through the row kernel, and only these have the free lattice's modes (spectrum.h).
+inline bool courseSprings(const Body& body, const SpringConstants& constants) {
+  return body.courseLattice && constants.uniform();
+}
 
 // All the springs of a body (body.h). The course cube with one stiffness and one damping goes
 // through the row kernel above; any other body through the spring list: on all its points a pass

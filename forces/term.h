@@ -38,6 +38,9 @@ struct PointRange {
   int begin = 0, end = 0;
 };
 constexpr int kRangeAlignment = 8;
+// The end of the range's whole groups of `lanes` points (the rest, a body's last few points, are
+// taken one by one).
+constexpr int groupedEnd(PointRange r, int lanes) { return r.end - (r.end - r.begin) % lanes; }
 
 // printf into a std::string, for the terms' descriptions (up to 511 characters).
 std::string textf(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
@@ -115,6 +118,11 @@ class ForceTerm {
 
  protected:
   explicit ForceTerm(int points) : points_(points) {}
+  // Point q of a per-point array of the body's, and f added to point q of one.
+  Vec3 at(const double* a, int q) const { return load(a, q, points_); }
+  void addAt(double* force, int q, Vec3 f) const {
+    store(force, q, points_, load(force, q, points_) + f);
+  }
 
  private:
   int points_;

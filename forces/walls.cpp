@@ -46,7 +46,7 @@ bool WallsTerm::mayReach(const Bounds& box) const {
 int WallsTerm::pointsInContact(const double* p) const {
   if (spring_.k == 0 && spring_.d == 0) return 0;
   int outside = 0;
-  for (int q = 0; q < pointCount(); ++q) outside += !insideBox(load(p, q, pointCount()));
+  for (int q = 0; q < pointCount(); ++q) outside += !insideBox(at(p, q));
   return outside;
 }
 
@@ -56,18 +56,18 @@ void WallsTerm::addForcesOn(PointRange points, const double* p, const double* v,
   bool reached[3];
   wallsInReach(box, reached);
   for (int q = points.begin; q < points.end; ++q) {
-    const Vec3 pq = load(p, q, pointCount()), vq = load(v, q, pointCount());
+    const Vec3 pq = at(p, q), vq = at(v, q);
     Vec3 f;
     for (int axis = 0; axis < 3; ++axis)
       if (reached[axis]) f += wallForceAlong(axis, pq, vq, spring_);
-    store(force, q, pointCount(), load(force, q, pointCount()) + f);
+    addAt(force, q, f);
   }
 }
 
 void WallsTerm::addJacobian(const double* p, const double*, JacobianSink* sink) const {
   Block3 dFdp, dFdv;
   for (int q = 0; q < pointCount(); ++q) {
-    wallJacobian(load(p, q, pointCount()), spring_, &dFdp, &dFdv);
+    wallJacobian(at(p, q), spring_, &dFdp, &dFdv);
     sink->addPoint(q, dFdp, dFdv);
   }
 }
@@ -85,7 +85,7 @@ void WallsTerm::summarise(std::vector<std::string>* kept, std::vector<std::strin
 
 std::vector<TermLine> WallsTerm::describe(const double* p) const {
   int outside = 0;
-  for (int q = 0; q < pointCount(); ++q) outside += !insideBox(load(p, q, pointCount()));
+  for (int q = 0; q < pointCount(); ++q) outside += !insideBox(at(p, q));
   std::string text =
       textf("the box [-2,2]^3, collision springs kCollision %.9g N/m, dCollision %.9g N s/m",
             spring_.k, spring_.d);

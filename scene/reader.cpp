@@ -344,10 +344,7 @@ State placedBody(const Body& body) {
   State state(n);
   const Vec3 middle =
       0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
-  for (int q = 0; q < n; ++q) {
-    const std::array<int, 3> i = body.index(q);
-    store(state.p(), q, n, body.spacing * Vec3{double(i[0]), double(i[1]), double(i[2])} - middle);
-  }
+  for (int q = 0; q < n; ++q) store(state.p(), q, n, body.restPosition(q) - middle);
   return state;
 }
 

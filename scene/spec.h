@@ -20,14 +20,14 @@ namespace jello {
 constexpr int kMostObstacles = 64;
 
 struct SceneSpec {
-  // The jelly, when the scene gives one ([body]); null: the course cube.
+  // The jelly, when the scene gives its shape ([jelly] shape); null: the course cube.
   std::shared_ptr<const Body> body;
   // The springs' constants by kind, when the scene gives them; none: the world's kElastic and
   // dElastic for every kind.
   std::optional<SpringConstants> springs;
   Vec3 gravity;                     // m/s^2, on every point, everywhere
   std::vector<Obstacle> obstacles;  // in the order of the file
-  // Points that do not move (indices, see pointIndex), sorted, each once. Their velocities are 0.
+  // Points that do not move (the body's point numbers), sorted, each once. Their velocities are 0.
   std::vector<int> pinned;
   // The box that holds the jelly: the course's walls of [-2,2]^3 with the world's kCollision and
   // dCollision (nullopt), or a container obstacle of any size, with friction; or none at all.

@@ -403,7 +403,7 @@ bool fillColumn(std::vector<double>* heights, int i, int j, VoxelGrid* grid) {
   for (int k = 0; k < grid->nz; ++k) {
     const double centre = static_cast<double>((2 * k + 1) * kHalfVoxel);
     while (below < heights->size() && (*heights)[below] < centre) ++below;
-    grid->filled[(static_cast<std::size_t>(i) * grid->ny + j) * grid->nz + k] = below % 2;
+    grid->filled[grid->cell(i, j, k)] = below % 2;
   }
   return true;
 }
@@ -470,8 +470,7 @@ bool voxeliseSphere(double radius, double size, VoxelGrid* grid, std::string* wh
         // The centre from the middle, not the corner: the ball comes out exactly symmetric.
         const Vec3 c = size * Vec3{i + 0.5 - 0.5 * grid->nx, j + 0.5 - 0.5 * grid->ny,
                                    k + 0.5 - 0.5 * grid->nz};
-        grid->filled[(static_cast<std::size_t>(i) * grid->ny + j) * grid->nz + k] =
-            dot(c, c) <= radius * radius;
+        grid->filled[grid->cell(i, j, k)] = dot(c, c) <= radius * radius;
       }
   if (grid->count() == 0)
     return fail(why, what + ": no voxel's centre is inside it at voxel size " + number("%g", size) +
@@ -497,7 +496,7 @@ int labelPiece(const VoxelGrid& grid, int start, int label, std::vector<int>* la
     for (const auto& step : kSteps) {
       const int ni = i + step[0], nj = j + step[1], nk = k + step[2];
       if (!grid.at(ni, nj, nk)) continue;
-      const int next = (ni * grid.ny + nj) * grid.nz + nk;
+      const int next = static_cast<int>(grid.cell(ni, nj, nk));
       if ((*labels)[next] != 0) continue;
       (*labels)[next] = label;
       stack.push_back(next);
