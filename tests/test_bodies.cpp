@@ -326,6 +326,25 @@ TEST(SceneBodies, ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK) {
   EXPECT_NEAR(sag1 / sag2, 2, 0.05);
 }
 
+// A point that is not finite is named by its place in its own body's grid, whatever the body's
+// count (a 512-point ball is not the course's lattice).
+TEST(SceneBodies, APointThatIsNotFiniteIsNamedByItsOwnGridIndex) {
+  for (const char* jelly : {"shape = \"sphere\"\nradius = 0.4\nspacing = 0.2\n",
+                            "shape = \"lattice\"\nsize = [4, 4, 32]\n"}) {
+    WorldFile f = scene(std::string("[jelly]\n") + jelly);
+    const Body& body = *f.world.scene->body;
+    const int q = body.count() - 1;
+    f.state.v()[coordIndex(q, 1, body.count())] = NAN;
+    const std::optional<WorldProblem> problem = findWorldProblem(f.world, f.state);
+    ASSERT_TRUE(problem) << jelly;
+    const std::array<int, 3> i = body.index(q);
+    const std::string label = "[" + std::to_string(i[0]) + "][" + std::to_string(i[1]) + "][" +
+                              std::to_string(i[2]) + "]";
+    EXPECT_NE(problem->what.find("the velocity of point " + label + " is"), std::string::npos)
+        << problem->what;
+  }
+}
+
 TEST(SceneBodies, EveryIntegratorKeepsItsOrderOnAPinnedSphereJelly) {
   const WorldFile f = scene(
       "gravity = [0, 0, -9.81]\n[bounds]\npresent = false\n[jelly]\nshape = \"sphere\"\n"
