@@ -585,9 +585,9 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   const Body& body = spec->body ? *spec->body : courseBody();
   readPins(r, root, body, file.state, spec.get());
   for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
+  w.scene = std::move(spec);  // before the check: it names points by the scene's body
   if (std::optional<WorldProblem> problem = findWorldProblem(w, file.state))
     throw WorldFileError(name + ": " + problem->what);
-  w.scene = std::move(spec);
   return file;
 }
 
