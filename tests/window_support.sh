@@ -14,9 +14,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# Xvfb picks a free display itself and writes its number once it accepts connections.
+# Xvfb picks a free display itself and writes its number once it accepts connections. -noreset:
+# by default the server resets whenever its last client leaves, and refuses connections while it
+# does; every xdotool call below is such a client, so a window's start could meet a reset (seen:
+# "failed to open display" for jello, twice in a row, on a loaded machine).
 exec {displayfd}>"$work/display"
-Xvfb -displayfd "$displayfd" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+Xvfb -displayfd "$displayfd" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
 xvfb=$!
 for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 [ -s "$work/display" ] || fail "Xvfb did not start"
