@@ -2,6 +2,8 @@
 // and choose the exit status. Only this file and createWorld.cpp print a verdict and pick a
 // status for the whole program: the library says how a command went as an Outcome (outcome.h).
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -56,12 +58,16 @@ jello::Outcome runHeadlessWithOutputs(const jello::JelloCommand& c,
   return jello::runHeadless(c.run, both.get());
 }
 
+// Where a run without a display and without --frames makes its new frames folder.
+constexpr const char* kFramesParent = "animation";
+
 // A window where a display exists; otherwise headless, with frames where asked (or, when no
 // --headless was given, into a new folder of animation/), and the meshes of --export.
 jello::Outcome simulate(jello::JelloCommand c) {
   // The pictures' library is loaded only from here on, and only for a window or frames.
   const jello::GraphicsApi* graphics = nullptr;
   std::string why;
+  bool madeFolder = false, madeParent = false;
   if (!c.headless) {
     graphics = jello::loadGraphics(&why);
     if (graphics && graphics->displayAvailable(&why)) {
@@ -76,12 +82,22 @@ jello::Outcome simulate(jello::JelloCommand c) {
       c.pictures.framesDir.clear();  // no frames without the library; the meshes need none
       return runHeadlessWithOutputs(c, nullptr);
     }
-    if (!c.framesGiven)
-      c.pictures.framesDir = jello::makeNewFolder("animation", jello::worldStem(c.run.worldPath));
+    if (!c.framesGiven) {
+      madeParent = ::access(kFramesParent, F_OK) != 0;
+      c.pictures.framesDir = jello::makeNewFolder(kFramesParent, jello::worldStem(c.run.worldPath));
+      madeFolder = true;
+    }
     jello::printError("no display (" + why + "); running headless, writing frames into " +
                       c.pictures.framesDir + "/");
   }
-  return runHeadlessWithOutputs(c, graphics);
+  const jello::Outcome outcome = runHeadlessWithOutputs(c, graphics);
+  // A run refused before its first frame (a malformed world, say) leaves no empty folder of this
+  // run's making behind: rmdir removes a folder only when it is empty.
+  if (madeFolder && outcome.status == jello::Ending::Failed) {
+    ::rmdir(c.pictures.framesDir.c_str());
+    if (madeParent) ::rmdir(kFramesParent);
+  }
+  return outcome;
 }
 
 // The exit status of an outcome, its line printed on stderr.

@@ -455,6 +455,32 @@ TEST(CliFrames, WithoutADisplayItRunsHeadlessIntoANewFolderItNames) {
   test::removeTree(dir);
 }
 
+bool exists(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+// Refused input leaves nothing behind: not the new frames folder, nor the animation/ folder
+// the run made for it.
+TEST(CliFrames, WithoutADisplayARefusedWorldLeavesNoFolderBehind) {
+  const std::string dir = test::makeTempDir();
+  test::writeText(dir + "/bad.w", "garbage\n");
+  test::writeText(dir + "/bad.toml", "dt = \"x\"\n");
+  for (const char* input : {"bad.w", "bad.toml"}) {
+    const test::CommandResult r =
+        test::runJello(std::string("--steps 5 ") + input, dir, "env -u DISPLAY");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_FALSE(exists(dir + "/animation")) << input << ": " << r.err;
+  }
+  // An animation/ folder that was there stays, without the refused run's folder in it.
+  ASSERT_EQ(::mkdir((dir + "/animation").c_str(), 0777), 0);
+  const test::CommandResult r = test::runJello("--steps 5 bad.w", dir, "env -u DISPLAY");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(exists(dir + "/animation"));
+  EXPECT_FALSE(exists(dir + "/animation/bad-001")) << r.err;
+  test::removeTree(dir);
+}
+
 TEST(CliFrames, FramesAreSavedBySimulatedTimeAndADefaultRunIsMaxFramesOfThem) {
   std::string dir = test::makeTempDir();
   const std::string world = " '" + dataPath("rotate.w") + "'";
