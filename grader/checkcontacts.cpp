@@ -1,5 +1,6 @@
 // checkcontacts.cpp: the walls, the plane and the field, each isolated by moving the cube
 // rigidly (its springs stay as they were, so only the contact changes) or by swapping the field.
+#include <algorithm>
 #include <cmath>
 
 #include "grader/checkkit.h"
@@ -43,7 +44,7 @@ std::string judgeContact(const ProbeRun& run, std::size_t first, const ContactPr
                          const std::string& name) {
   const auto& a = run.answers;
   for (int n = 0; n < 4; ++n) {
-    if (!allFinite(a[first + n])) return name + ": NaN or infinity in the accelerations";
+    if (!allUsable(a[first + n])) return name + ": NaN or infinity in the accelerations";
   }
   for (int q = 0; q < kNumPoints; ++q) {
     if (across[q]) continue;
@@ -62,17 +63,20 @@ std::string judgeContact(const ProbeRun& run, std::size_t first, const ContactPr
     double n1 = dot(f1, probe.inward), n2 = dot(f2, probe.inward);
     if (std::fabs(n2) < kNoForce) return name + ": no force on points across it";
     double k = (n2 - n1) / (probe.depth2 - probe.depth1), rest = probe.depth1 - n1 / k;
-    if (length(f2 - n2 * probe.inward) > kNoForce)
+    // Every comparison is written to fail on a NaN.
+    if (!(length(f2 - n2 * probe.inward) <= kNoForce))
       return name + ": the force is not along the normal";
-    if (std::fabs(k - world.kCollision) > kExact * world.kCollision) {
-      return name + textf(": stiffness %.6g N/m measured, kCollision = %g N/m expected%s", k,
-                          world.kCollision, k < 0 ? " (it pulls points further across)" : "");
+    if (!(std::fabs(k - world.kCollision) <= kExact * world.kCollision)) {
+      return name +
+             textf(": stiffness %.6g N/m measured, kCollision = %g N/m expected%s", k,
+                   world.kCollision, k < 0 ? " (it pulls points further across)" : "") +
+             massHint(k, world.kCollision);
     }
-    if (std::fabs(rest) > 1e-9)
+    if (!(std::fabs(rest) <= 1e-9))
       return name + textf(": rest length %.3g m measured, 0 expected", rest);
     Vec3 into = dot(probe.velocity, probe.inward) * probe.inward;
     Vec3 expected = -world.dCollision * into;  // -d (v . u) u, u out of the allowed side
-    if (length(damp - expected) > kExact * length(expected)) {
+    if (!(length(damp - expected) <= kExact * length(expected))) {
       if (length(damp) < kNoForce) return name + ": no damping";
       if (length(damp + expected) < kExact * length(expected))
         return name + ": damping sign flipped";
@@ -80,7 +84,8 @@ std::string judgeContact(const ProbeRun& run, std::size_t first, const ContactPr
         return name + ": damps the velocity along the contact too, not only into it";
       }
       return name +
-             textf(": damping force %.6g N, %.6g N expected", length(damp), length(expected));
+             textf(": damping force %.6g N, %.6g N expected", length(damp), length(expected)) +
+             massHint(length(damp), length(expected));
     }
   }
   return count == 0 ? name + ": nothing crossed it (grader error)" : "";
@@ -115,13 +120,37 @@ CheckResult checkWalls(const std::string& probe) {
   }
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return crashed("walls", run, "with the cube against a wall");
+  // Every wall is judged: walls that fail alike are named together ("walls x = +2, y = +2: no
+  // force on points across them"), the first finding first.
+  std::vector<std::pair<std::string, std::string>> findings;  // what is wrong, which walls
   for (int wall = 0; wall < 6; ++wall) {
     std::vector<bool> across = acrossWall(probes[wall].inside, wall / 2, wall % 2 ? 1 : -1);
-    std::string why = judgeContact(run, 4 * wall, probes[wall], across, world, kWallNames[wall]);
-    if (!why.empty()) return failed("walls", why);
+    std::string name = kWallNames[wall];
+    std::string why = judgeContact(run, 4 * wall, probes[wall], across, world, name);
+    if (why.empty()) continue;
+    std::string what = why.substr(name.size() + 2);
+    auto same = std::find_if(findings.begin(), findings.end(),
+                             [&](const auto& finding) { return finding.first == what; });
+    if (same == findings.end())
+      findings.emplace_back(what, name);
+    else
+      same->second += ", " + name.substr(5);  // "wall x = -2" -> "x = -2"
   }
-  return passed("walls",
-                "all six: kCollision, rest length 0, only beyond the wall, damping into it");
+  if (findings.empty()) {
+    return passed("walls",
+                  "all six: kCollision, rest length 0, only beyond the wall, damping into it");
+  }
+  std::string line;
+  for (const auto& [what, walls] : findings) {
+    bool several = walls.find(',') != std::string::npos;
+    bool all = std::count(walls.begin(), walls.end(), ',') == 5;
+    line += (line.empty() ? "" : "; ") +
+            (all       ? std::string("all six walls")
+             : several ? "walls " + walls.substr(5)
+                       : walls) +
+            ": " + what;
+  }
+  return failed("walls", line);
 }
 
 CheckResult checkPlane(const std::string& probe) {

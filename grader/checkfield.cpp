@@ -66,6 +66,7 @@ double worstDifference(const std::vector<double>& with, const std::vector<double
   double worst = 0;
   for (int q = 0; q < kNumPoints; ++q) {
     double miss = length(forceChange(with, without, q) - load(expected.data(), q));
+    if (std::isnan(miss)) miss = INFINITY;  // a NaN at any point is the worst, never skipped
     if (!(miss <= worst)) {
       worst = miss;
       *where = q;
@@ -88,6 +89,8 @@ std::string probeField(const std::string& probe, const ForceField& field, const 
   script.accelerations();
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return run.failure + " " + where;
+  if (!allUsable(run.answers[0]) || !allUsable(run.answers[1]))
+    return "NaN or infinity in the accelerations " + where;
   std::vector<double> expected = fieldForces(field, state);
   int q = 0;
   double worst = worstDifference(run.answers[0], run.answers[1], expected, &q);
@@ -103,9 +106,10 @@ std::string probeField(const std::string& probe, const ForceField& field, const 
   }
   Vec3 e = load(expected.data(), q);
   return textf(
-      "%s: the field force at %s is off by %.3g N (expected (%.6g, %.6g, %.6g) N, "
-      "trilinear in its cell)",
-      where.c_str(), pointName(q).c_str(), worst, e.x, e.y, e.z);
+             "%s: the field force at %s is off by %.3g N (expected (%.6g, %.6g, %.6g) N, "
+             "trilinear in its cell)",
+             where.c_str(), pointName(q).c_str(), worst, e.x, e.y, e.z) +
+         massHint(length(forceChange(run.answers[0], run.answers[1], q)), length(e));
 }
 
 }  // namespace
@@ -133,7 +137,7 @@ CheckResult checkField(const std::string& probe) {
   script.world(world, scattered(false));
   script.accelerations();
   ProbeRun run = runProbe(probe, script);
-  if (!run.complete() || !allFinite(run.answers[0])) {
+  if (!run.complete() || !allUsable(run.answers[0])) {
     result.notes.push_back("a world without a field (R = 0) " +
                            (run.complete() ? std::string("gives NaN") : run.failure) +
                            ": worlds made without a field cannot run");

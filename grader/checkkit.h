@@ -32,9 +32,13 @@ std::string offsetName(int di, int dj, int dk);
 // The forces (N) between two answers of accelerations: mass * (after - before) for point q.
 Vec3 forceChange(const std::vector<double>& after, const std::vector<double>& before, int q);
 
-// The largest |value| of per-point arrays, and whether every value is finite.
+// When `measured` is `expected` times the probe's mass (1/512 kg) or its square, to rounding:
+// words that name the mass (" (exactly 1/512 of it, the mass: is the force not divided by the
+// mass?)"); otherwise "". Every constant a force-free mistake puts off by the same factor.
+std::string massHint(double measured, double expected);
+
+// The largest |value| of per-point arrays (whether they are usable at all: allUsable, probe.h).
 double largest(const std::vector<double>& values);
-bool allFinite(const std::vector<double>& values);
 
 CheckResult passed(const std::string& check, std::string line = {});
 CheckResult near(const std::string& check, std::string line);

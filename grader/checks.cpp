@@ -99,17 +99,20 @@ Vec3 forceChange(const std::vector<double>& after, const std::vector<double>& be
   return kProbeMass * (load(after.data(), q) - load(before.data(), q));
 }
 
+std::string massHint(double measured, double expected) {
+  double ratio = measured / expected;
+  if (std::fabs(ratio - kProbeMass) <= 1e-6 * kProbeMass)
+    return " (exactly 1/512 of it, the mass: is the force not divided by the mass?)";
+  if (std::fabs(ratio - kProbeMass * kProbeMass) <= 1e-6 * kProbeMass * kProbeMass)
+    return " (exactly 1/512^2 of it, the mass squared: is the force multiplied by the mass "
+           "instead of divided by it?)";
+  return "";
+}
+
 double largest(const std::vector<double>& values) {
   double most = 0;
   for (double value : values) most = std::fmax(most, std::fabs(value));
   return most;
-}
-
-bool allFinite(const std::vector<double>& values) {
-  for (double value : values) {
-    if (!std::isfinite(value)) return false;
-  }
-  return true;
 }
 
 CheckResult passed(const std::string& check, std::string line) {
@@ -139,7 +142,7 @@ std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const
   if (!run.complete()) *failure = run.failure;
   for (std::size_t n = 0; n < run.answers.size() && failure->empty(); ++n) {
     // Every comparison after this is false for a NaN: one would pass for anything.
-    if (!allFinite(run.answers[n])) *failure = "computeAcceleration gave NaN or infinity";
+    if (!allUsable(run.answers[n])) *failure = "computeAcceleration gave NaN or infinity";
   }
   return failure->empty() ? run.answers : std::vector<std::vector<double>>{};
 }

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -19,6 +20,7 @@
 
 #include "core/output.h"
 #include "forces/term.h"
+#include "grader/build.h"
 #include "grader/checks.h"
 #include "grader/probe.h"
 #include "grader/report.h"
@@ -47,6 +49,12 @@ std::string worldDir() {
                            programPath() + " nor in " + sources);
 }
 
+// The grade of a check that could not run: FAIL, but never for speed, which is not graded.
+CheckResult notRun(const std::string& check, const std::string& why) {
+  if (check == "speed") return {check, Grade::Info, "not measured: " + why, {}};
+  return {check, Grade::Fail, why, {}};
+}
+
 CheckResult buildCheck(const Submission& submission, const std::string& probePath, Graded& graded) {
   BuildResult build;
   try {
@@ -54,10 +62,10 @@ CheckResult buildCheck(const Submission& submission, const std::string& probePat
   } catch (const std::exception& e) {
     build.diagnosis = std::string("the grader could not build it: ") + e.what();
   }
-  graded.headers = build.headers;
+  graded.how = build.how;
   graded.buildLog = build.log;
   CheckResult result{"builds", build.built ? Grade::Pass : Grade::Fail,
-                     build.built ? "built with " + build.headers : build.diagnosis, build.notes};
+                     build.built ? "built from " + build.how : build.diagnosis, build.notes};
   return result;
 }
 
@@ -84,10 +92,10 @@ Graded gradeOne(const Submission& submission, const std::vector<std::string>& ch
   for (std::size_t n = 1; n < checks.size(); ++n) {
     const std::string& check = checks[n];
     if (graded.results.front().grade == Grade::Fail) {
-      graded.results.push_back({check, Grade::Fail, "not built", {}});
+      graded.results.push_back(notRun(check, "not built"));
     } else if (probeHung()) {
       graded.results.push_back(
-          {check, Grade::Fail, "not run: the submission did not return in an earlier check", {}});
+          notRun(check, "not run: the submission did not return in an earlier check"));
     } else {
       graded.results.push_back(runCheckSafely(check, probePath, setup));
     }
@@ -97,10 +105,25 @@ Graded gradeOne(const Submission& submission, const std::vector<std::string>& ch
   return graded;
 }
 
+// The lines a finished submission prints: its summary, then what is wrong, a line a check.
+std::string finishedLines(const Graded& graded) {
+  std::string lines = summaryLine(graded) + "\n";
+  for (const auto& r : graded.results) {
+    if (r.grade == Grade::Fail || r.grade == Grade::Near)
+      lines += "  " + r.check + " (" + gradeName(r.grade) + "): " + printable(r.diagnosis) + "\n";
+    if (r.check == "builds" && r.grade == Grade::Fail) return lines;  // the rest: "not built"
+  }
+  return lines;
+}
+
 int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::string>& checks,
              const GradingSetup& setup, const std::string& dir, bool overwrite, int jobs) {
-  Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  bool made = !fs::exists(dir);
+  // A folder this grader wrote before is graded into again: its own files are replaced.
+  bool regrade = !made && isGradingReport(dir);
+  Existing existing = overwrite || regrade ? Existing::Replace : Existing::Refuse;
   FolderClaim claim = claimOutputs(dir, {"summary.md", "summary.csv", "junit.xml"}, existing);
+  if (made) removeIfEmptyOnSignal(dir);
   for (const auto& file : reportFiles(submissions)) {
     fs::create_directories(fs::path(dir + "/" + file).parent_path());
     std::string why = whyNotWritable(dir + "/" + file, existing);
@@ -112,17 +135,24 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
                      submissions.size(), submissions.size() == 1 ? "" : "s", jobs,
                      static_cast<unsigned long long>(setup.seed));
   std::vector<Graded> graded(submissions.size());
-  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> next{0}, done{0};
+  std::mutex printing;
   auto worker = [&] {
     for (std::size_t n; (n = next++) < submissions.size();) {
+      {
+        std::lock_guard<std::mutex> hold(printing);
+        std::cerr << textf("[%zu/%zu] %s: building and grading ...\n", n + 1, submissions.size(),
+                           submissions[n].name.c_str());
+      }
       graded[n] = gradeOne(submissions[n], checks, setup, work.path());
-      std::cerr << summaryLine(graded[n]) + "\n";
+      std::lock_guard<std::mutex> hold(printing);
+      std::cerr << textf("[%zu/%zu done] ", ++done, submissions.size()) + finishedLines(graded[n]);
     }
   };
   std::vector<std::thread> threads;
   for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
   for (auto& thread : threads) thread.join();
-  writeReport(dir, graded, setup.seed, overwrite);
+  writeReport(dir, graded, setup.seed, existing == Existing::Replace);
   std::cout << dir << "/summary.md, summary.csv, junit.xml; a report.md per submission\n";
   return 0;
 }
@@ -143,13 +173,14 @@ int gradeOneCheck(const std::string& check, std::size_t item, const std::string&
     result = buildCheck(s, probePath, graded);
     writeFileWhole(dir + "/" + s.name + "/build.log", graded.buildLog, Existing::Replace);
   } else if (!fs::exists(probePath)) {
-    result = {check, Grade::Fail, "not built", {}};
+    result = notRun(check, "not built");
   } else {
     result = runCheckSafely(check, probePath, setup);
   }
-  std::cout << s.name << "/" << check << ": " << gradeName(result.grade) << ": " << result.diagnosis
-            << "\n";
-  for (const auto& note : result.notes) std::cout << "  note: " << note << "\n";
+  // Printed through printable: a student's #error text never reaches the terminal raw.
+  std::cout << s.name << "/" << check << ": " << gradeName(result.grade) << ": "
+            << printable(result.diagnosis) << "\n";
+  for (const auto& note : result.notes) std::cout << "  note: " << printable(note) << "\n";
   return result.grade == Grade::Fail ? 1 : 0;
 }
 
@@ -207,14 +238,14 @@ void requireSandbox() {
   if (!problem.empty()) throw std::runtime_error(problem);
 }
 
-int writeCTest(const Options& o, const std::vector<std::string>& checks) {
+int writeCTest(const Options& o, const std::vector<std::string>& paths,
+               const std::vector<std::string>& checks) {
   std::vector<std::string> absolute;
-  for (const auto& p : o.paths) absolute.push_back(fs::absolute(p).string());
+  for (const auto& p : paths) absolute.push_back(fs::absolute(p).string());
   fs::create_directories(o.dir);
   writeCTestFiles(fs::absolute(o.dir).string(), programPath(), nameSubmissions(absolute), checks,
                   o.seed, o.overwrite);
-  std::cout << "cd " << o.dir << " && ctest -j" << o.jobs << "   # "
-            << o.paths.size() * checks.size()
+  std::cout << "cd " << o.dir << " && ctest -j" << o.jobs << "   # " << paths.size() * checks.size()
             << " tests; --output-junit junit.xml for a learning platform\n";
   return 0;
 }
@@ -238,10 +269,12 @@ int run(int argc, char** argv) {
       why = path + ": a name with a line break";
     if (!why.empty()) throw std::invalid_argument(why);
   }
-  if (o.ctest) return writeCTest(o, checks);
+  std::vector<std::string> notes;
+  std::vector<std::string> paths = expandClasses(o.paths, notes);
+  for (const auto& note : notes) std::cerr << "grade: " << note << "\n";
+  if (o.ctest) return writeCTest(o, paths, checks);
   requireSandbox();
-  return gradeAll(nameSubmissions(o.paths), checks, {worldDir(), o.seed}, o.dir, o.overwrite,
-                  o.jobs);
+  return gradeAll(nameSubmissions(paths), checks, {worldDir(), o.seed}, o.dir, o.overwrite, o.jobs);
 }
 
 }  // namespace
@@ -249,6 +282,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   setProgramName("grade");
   installSignalCleanup();
+  installScratchCleanup();  // before any thread: the signals go to its thread
   // What the grader makes for a sandbox (copies of sources, its probe) must be readable by the
   // sandbox's own user, whatever umask the grader was started with.
   umask(022);

@@ -1,11 +1,13 @@
 // probe.cpp: scripts for the probe and their answers (probe.h).
 #include "grader/probe.h"
 
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
+#include "core/output.h"
 #include "grader/submission.h"
 
 namespace jello::grader {
@@ -65,39 +67,34 @@ void resetProbeBudget() {
 bool probeHung() { return hung; }
 
 void Script::world(const World& world, const State& state) {
-  text_ += "W\n" + formatWorld(world, state);
+  std::string text = formatWorld(world, state);
+  if (firstWorld_.empty()) firstWorld_ = text;
+  pending_ += "W\n" + text;
 }
 
 void Script::state(const State& state) {
-  text_ += "S\n";
-  appendPoints(text_, state.p());
-  appendPoints(text_, state.v());
+  pending_ += "S\n";
+  appendPoints(pending_, state.p());
+  appendPoints(pending_, state.v());
 }
 
-void Script::accelerations() {
-  text_ += "A\n";
-  answering_.push_back('A');
-  doing_.push_back("computeAcceleration");
+void Script::answer(char kind, std::string command, std::string doing) {
+  requests_.push_back(pending_ + command);
+  pending_.clear();
+  answering_.push_back(kind);
+  doing_.push_back(std::move(doing));
 }
+
+void Script::accelerations() { answer('A', "A\n", "computeAcceleration"); }
 
 void Script::steps(Integrator integrator, long n) {
   bool euler = integrator == Integrator::Euler;
-  text_ += (euler ? "E " : "R ") + std::to_string(n) + "\n";
-  answering_.push_back('E');
-  doing_.push_back(euler ? "Euler" : "RK4");
+  answer('E', (euler ? "E " : "R ") + std::to_string(n) + "\n", euler ? "Euler" : "RK4");
 }
 
-void Script::read() {
-  text_ += "P\n";
-  answering_.push_back('P');
-  doing_.push_back("reading the state");
-}
+void Script::read() { answer('P', "P\n", "reading the state"); }
 
-void Script::timing(long n) {
-  text_ += "T " + std::to_string(n) + "\n";
-  answering_.push_back('T');
-  doing_.push_back("RK4");
-}
+void Script::timing(long n) { answer('T', "T " + std::to_string(n) + "\n", "RK4"); }
 
 State ProbeRun::state(std::size_t answer) const {
   State state;
@@ -111,11 +108,13 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   Scratch scratch;
   std::filesystem::copy_file(probePath, scratch.path() + "/probe");
   std::filesystem::permissions(scratch.path() + "/probe", std::filesystem::perms(0755));
+  // The world file the student's own main() reads: the script's first world.
+  writeFileWhole(scratch.path() + "/world.w", script.firstWorld(), Existing::Refuse);
   SandboxJob job;
-  job.argv = {"/work/probe"};
+  job.argv = {"/work/probe", "/work/world.w"};
   job.hostDir = scratch.path();
   job.workingDir = "/tmp";
-  job.input = script.text();
+  job.requests = script.requests();
   job.limits.wallSeconds = limits.scale * probeBudget;
   job.limits.cpuSeconds = limits.scale * probeBudget;
   job.limits.memoryBytes = 1LL << 30;
@@ -126,18 +125,25 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
     probeBudget = kProbeSecondsAfterHang;
     hung = true;
   }
+  const std::string& replies = run.sandbox.replies;
   std::size_t at = 0;
+  std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
+  if (run.sandbox.signal == 9 && !run.sandbox.timedOut) how = "was killed (out of memory?)";
+  if (!readWord(replies, at, "jello-probe") || !readWord(replies, at, ".")) {
+    run.failure = "the program never reached the grader: its main() " +
+                  (run.sandbox.exitedWith(0) ? std::string("returned") : how) +
+                  " before calling glutMainLoop()";
+    return run;
+  }
   const auto& kinds = script.answering();
   for (std::size_t n = 0; n < kinds.size(); ++n) {
     std::vector<double> numbers;
-    bool read = kinds[n] == 'E' ? readWord(run.sandbox.output, at, "ok")
-                : kinds[n] == 'T'
-                    ? readNumbers(run.sandbox.output, at, 1, numbers)
-                    : readNumbers(run.sandbox.output, at,
-                                  kinds[n] == 'A' ? kNumCoords : 2 * kNumCoords, numbers);
-    if (!read) {
-      std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
-      if (run.sandbox.signal == 9 && !run.sandbox.timedOut) how = "was killed (out of memory?)";
+    bool read =
+        kinds[n] == 'E' ? readWord(replies, at, "ok")
+        : kinds[n] == 'T'
+            ? readNumbers(replies, at, 1, numbers)
+            : readNumbers(replies, at, kinds[n] == 'A' ? kNumCoords : 2 * kNumCoords, numbers);
+    if (!read || !readWord(replies, at, ".")) {
       run.failure = script.doing()[n] + " " + how;
       break;
     }
@@ -152,6 +158,13 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
     run.answers.push_back(std::move(numbers));
   }
   return run;
+}
+
+bool allUsable(const std::vector<double>& values) {
+  for (double value : values) {
+    if (!(std::fabs(value) <= kLargestAnswer)) return false;  // NaN fails too
+  }
+  return true;
 }
 
 }  // namespace jello::grader

@@ -1,8 +1,8 @@
 // probe.h: talking to a built submission (grader/course/probe.cpp) through the sandbox.
 //
-// A Script is the commands of one probe run; each that answers gives one Answer, in order.
-// The run's answers are checked for count and form here, so that the checks see numbers or
-// the reason there are none (a crash, a hang, garbage), never half an answer.
+// A Script is the requests of one probe run; each answering request gives one Answer, in order.
+// The run's answers are checked for count and form here, so that the checks see numbers or the
+// reason there are none (a crash, a hang, garbage), never half an answer.
 #pragma once
 
 #include <string>
@@ -15,28 +15,34 @@ namespace jello::grader {
 
 class Script {
  public:
-  // W: the world (its parameters, field and state) as the course's input code reads it.
+  // W: the world (its parameters, field and state) as the course's input code reads it. The
+  // first world of a script is also the world file the student's own main() reads (argv[1]).
   void world(const World& world, const State& state);
   // S: the state.
   void state(const State& state);
   // A: answers the accelerations (m/s^2) at the state, per-point arrays (coordIndex).
   void accelerations();
-  // E n or R n: n steps of Euler (integrator Euler) or RK4 (any other); answers nothing.
+  // E n or R n: n steps of Euler (integrator Euler) or RK4 (any other); answers "ok".
   void steps(Integrator integrator, long n);
   // P: answers the state.
   void read();
   // T n: n RK4 steps; answers the microseconds a step took.
   void timing(long n);
 
-  const std::string& text() const { return text_; }
-  // What each answering command is, in order: 'A', 'P' or 'T'; 'E'/'R' answer "ok".
+  // The requests, each ending in an answering command: one is sent after the last is answered.
+  const std::vector<std::string>& requests() const { return requests_; }
+  const std::string& firstWorld() const { return firstWorld_; }
+  // What each answer is, in order: 'A', 'E', 'P' or 'T'.
   const std::vector<char>& answering() const { return answering_; }
   const std::vector<std::string>& doing() const { return doing_; }
 
  private:
-  std::string text_;
+  void answer(char kind, std::string command, std::string doing);
+  std::string pending_;  // W and S requests waiting for the next answering command
+  std::string firstWorld_;
+  std::vector<std::string> requests_;
   std::vector<char> answering_;
-  std::vector<std::string> doing_;  // per answering command: "computeAcceleration", ...
+  std::vector<std::string> doing_;  // per answer: "computeAcceleration", ...
 };
 
 struct ProbeRun {
@@ -66,5 +72,11 @@ struct ProbeLimits {
 };
 
 ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits = {});
+
+// An answer the checks can compare: every number finite and at most kLargestAnswer in size (so
+// that no difference or square of answers overflows into an infinity or a NaN, which every
+// comparison would let pass). False for NaN, infinity, and the like of +-DBL_MAX.
+constexpr double kLargestAnswer = 1e100;
+bool allUsable(const std::vector<double>& values);
 
 }  // namespace jello::grader

@@ -2,6 +2,7 @@
 #include "grader/report.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
@@ -13,9 +14,14 @@
 namespace jello::grader {
 namespace {
 
+// Text for XML 1.0: printable (no control character, no byte outside UTF-8), the markup
+// characters as entities, and the two characters XML forbids that UTF-8 can hold (U+FFFE,
+// U+FFFF) written out: one student's file must not make the class's junit.xml ill-formed.
 std::string xmlEscape(const std::string& text) {
   std::string out;
-  for (unsigned char c : text) {
+  std::string safe = printable(text);
+  for (std::size_t n = 0; n < safe.size(); ++n) {
+    char c = safe[n];
     if (c == '&')
       out += "&amp;";
     else if (c == '<')
@@ -24,10 +30,31 @@ std::string xmlEscape(const std::string& text) {
       out += "&gt;";
     else if (c == '"')
       out += "&quot;";
-    else if (c < 0x20 && c != '\t')
-      out += ' ';
+    else if (safe.compare(n, 2, "\xEF\xBF") == 0 && n + 2 < safe.size() &&
+             (safe[n + 2] == '\xBE' || safe[n + 2] == '\xBF')) {
+      out += safe[n + 2] == '\xBE' ? "\\uFFFE" : "\\uFFFF";
+      n += 2;
+    } else
+      out += c;
+  }
+  return out;
+}
+
+// Text for markdown: printable, and nothing in it read as markup, HTML or a table's edge (a
+// compiler's message quotes the student's code: `int* p`, <windows.h>, a[i]).
+std::string markdownText(const std::string& text) {
+  std::string out;
+  for (char c : printable(text)) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (std::string("`*_[]|#~").find(c) != std::string::npos)
+      out += std::string("\\") + c;
     else
-      out += static_cast<char>(c);
+      out += c;
   }
   return out;
 }
@@ -38,15 +65,6 @@ std::string csvField(const std::string& text) {
   if (!text.empty() && std::string("=+-@").find(text[0]) != std::string::npos) out += '\'';
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
   return out + "\"";
-}
-
-// A markdown table cell: no pipe or line break breaks the table; bytes that are not UTF-8 (a
-// compiler's message quoting a student's file) show as \xNN.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (char c : printable(text))
-    out += c == '|' ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);
-  return out;
 }
 
 // A CMake bracket argument that holds `text` whatever it contains.
@@ -63,14 +81,15 @@ std::string gradeCell(const CheckResult& r, const char* unit) {
 
 std::string submissionReport(const Graded& g) {
   std::ostringstream md;
-  md << "# " << g.submission.name << "\n\nSubmission: `" << printable(g.submission.path) << "`";
-  if (!g.headers.empty()) md << ", built with " << g.headers;
+  md << "# " << g.submission.name << "\n\nSubmission: " << markdownText(g.submission.path);
+  if (!g.how.empty()) md << ", built from " << g.how;
   md << textf(". Graded in %.1f s.\n\n| check | grade | what it found |\n|---|---|---|\n",
               g.seconds);
   for (const auto& r : g.results)
-    md << "| " << r.check << " | " << gradeName(r.grade) << " | " << cell(r.diagnosis) << " |\n";
+    md << "| " << r.check << " | " << gradeName(r.grade) << " | " << markdownText(r.diagnosis)
+       << " |\n";
   for (const auto& r : g.results) {
-    for (const auto& note : r.notes) md << "\n- " << r.check << ": " << printable(note);
+    for (const auto& note : r.notes) md << "\n- " << r.check << ": " << markdownText(note);
   }
   md << "\n\nThe compiler's output is in build.log.\n";
   return md.str();
@@ -95,7 +114,7 @@ std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t see
     for (const auto& r : g.results) {
       if (r.grade == Grade::Fail || r.grade == Grade::Near)
         md << "\n- " << g.submission.name << "/" << r.check << " (" << gradeName(r.grade)
-           << "): " << printable(r.diagnosis);
+           << "): " << markdownText(r.diagnosis);
     }
   }
   return md.str() + "\n";
@@ -122,9 +141,9 @@ std::string junit(const std::vector<Graded>& graded) {
             << r.check << "\">";
       if (r.grade == Grade::Fail) {
         ++failures;
-        cases << "<failure message=\"" << xmlEscape(printable(r.diagnosis)) << "\"/>";
+        cases << "<failure message=\"" << xmlEscape(r.diagnosis) << "\"/>";
       } else if (!r.diagnosis.empty()) {
-        cases << "<system-out>" << gradeName(r.grade) << ": " << xmlEscape(printable(r.diagnosis))
+        cases << "<system-out>" << gradeName(r.grade) << ": " << xmlEscape(r.diagnosis)
               << "</system-out>";
       }
       cases << "</testcase>\n";
@@ -154,9 +173,44 @@ std::vector<std::string> reportFiles(const std::vector<Submission>& submissions)
   return files;
 }
 
+namespace {
+
+const char* const kMark = ".jello-grade";
+
+}  // namespace
+
+bool isGradingReport(const std::string& dir) {
+  struct stat info;
+  return lstat((dir + "/" + kMark).c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+namespace {
+
+// The submissions an earlier grade of `dir` wrote, from its mark.
+std::vector<std::string> earlierSubmissions(const std::string& dir) {
+  std::vector<std::string> names;
+  if (!isGradingReport(dir)) return names;
+  std::ifstream mark(dir + "/" + kMark);
+  for (std::string line; std::getline(mark, line);) {
+    if (!line.empty() && line[0] != '#' && line.find('/') == std::string::npos && line != "." &&
+        line != "..")
+      names.push_back(line);
+  }
+  return names;
+}
+
+}  // namespace
+
 void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
                  bool overwrite) {
   Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
+  std::string mark = "# made by ./grade: the submissions graded here, a name a line\n";
+  for (const auto& g : graded) mark += g.submission.name + "\n";
+  for (const auto& name : earlierSubmissions(dir)) {
+    if (mark.find("\n" + name + "\n") != std::string::npos) continue;
+    for (const char* file : {"/report.md", "/build.log"}) unlink((dir + "/" + name + file).c_str());
+    rmdir((dir + "/" + name).c_str());
+  }
   for (const auto& g : graded) {
     makeFolder(dir + "/" + g.submission.name);
     writeFileWhole(dir + "/" + g.submission.name + "/report.md", submissionReport(g), existing);
@@ -165,6 +219,7 @@ void writeReport(const std::string& dir, const std::vector<Graded>& graded, std:
   writeFileWhole(dir + "/summary.md", summaryMarkdown(graded, seed), existing);
   writeFileWhole(dir + "/summary.csv", summaryCsv(graded), existing);
   writeFileWhole(dir + "/junit.xml", junit(graded), existing);
+  writeFileWhole(dir + "/" + kMark, mark, Existing::Replace);
 }
 
 std::string summaryLine(const Graded& g) {

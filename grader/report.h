@@ -13,16 +13,21 @@ namespace jello::grader {
 
 struct Graded {
   Submission submission;
-  std::string headers;  // which headers served (builds)
+  std::string how;  // how it was built (builds), in words
   std::string buildLog;
   std::vector<CheckResult> results;  // the checks graded, in checkTable() order; "builds" first
   double seconds = 0;
 };
 
+// Whether `dir` holds a report this grader wrote (its mark, .jello-grade, a regular file): a
+// grade into it again replaces the grader's own files there, without --overwrite.
+bool isGradingReport(const std::string& dir);
+
 // The files a report folder will hold, for the check before grading starts.
 std::vector<std::string> reportFiles(const std::vector<Submission>& submissions);
-// Writes them all under `dir` (made), replacing earlier ones only with `overwrite`. Throws
-// std::runtime_error with a one-line message.
+// Writes them all under `dir` (made), replacing earlier ones only with `overwrite`, and the mark
+// .jello-grade (the submissions' names); the report files of an earlier grade's submissions
+// that this one does not grade are removed. Throws std::runtime_error with a one-line message.
 void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
                  bool overwrite);
 // One line a submission for the terminal: "alice: 12 pass, 1 near, 1 FAIL (rk4) in 9.8 s".

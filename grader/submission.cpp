@@ -1,24 +1,23 @@
-// submission.cpp: finding, copying and building a submission (submission.h).
+// submission.cpp: finding and copying submissions (submission.h).
 #include "grader/submission.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <sys/fsuid.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/output.h"
-#include "grader/coursefiles.h"
 #include "grader/sandbox.h"
 
 namespace fs = std::filesystem;
@@ -30,15 +29,9 @@ namespace {
 constexpr int kMostEntries = 5000;
 constexpr int kMostFiles = 300;
 constexpr std::uintmax_t kMostBytes = 16u << 20;
-constexpr std::uintmax_t kMostArchiveBytes = 64u << 20;
+constexpr int kDeepest = 8;  // folders below the submission's own
 const std::set<std::string> kSourceExtensions = {".cpp", ".cc", ".cxx", ".c",  ".h",
                                                  ".hpp", ".hh", ".hxx", ".inl"};
-const std::set<std::string> kCompiledExtensions = {".cpp", ".cc", ".cxx"};
-// The course's files around physics.cpp that draw, read files or hold main(): not built.
-const std::set<std::string> kViewerFiles = {"jello.cpp",       "input.cpp", "showCube.cpp",
-                                            "createWorld.cpp", "pic.cpp",   "ppm.cpp"};
-// Headers of the course that bring GL: given empty stand-ins when the course API serves.
-const char* const kGlHeaders[] = {"openGL-headers.h", "pic.h", "input.h", "showCube.h"};
 
 bool hasSuffix(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
@@ -49,11 +42,54 @@ bool isArchive(const std::string& path) {
   return hasSuffix(path, ".zip") || hasSuffix(path, ".tar.gz") || hasSuffix(path, ".tgz");
 }
 
-std::string readWhole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+// Opens files as the student would: as root, each open of a submission's folder runs with the
+// file-system identity of the folder's owner (this thread only: setfsuid and the raw setgroups
+// call act on the calling thread), so that a file its owner cannot read, hard-linked in, stays
+// unread; the grader's own identity returns at once, for writing the copy.
+class StudentRights {
+ public:
+  explicit StudentRights(const struct stat& top)
+      : switching_(geteuid() == 0 && top.st_uid != 0), uid_(top.st_uid), gid_(top.st_gid) {
+    if (!switching_) return;
+    groups_.resize(static_cast<std::size_t>(std::max(0, getgroups(0, nullptr))));
+    int count = getgroups(static_cast<int>(groups_.size()), groups_.data());
+    groups_.resize(static_cast<std::size_t>(std::max(0, count)));
+  }
+  int openat(int dir, const char* name, int flags) const {
+    if (!switching_) return ::openat(dir, name, flags);
+    syscall(SYS_setgroups, 0, nullptr);
+    setfsgid(gid_);
+    setfsuid(uid_);
+    int fd = ::openat(dir, name, flags);
+    int error = errno;
+    setfsuid(0);
+    setfsgid(0);
+    syscall(SYS_setgroups, groups_.size(), groups_.data());
+    errno = error;
+    return fd;
+  }
+
+ private:
+  bool switching_;
+  uid_t uid_;
+  gid_t gid_;
+  std::vector<gid_t> groups_;
+};
+
+struct CopyBudget {
+  int entries = 0, files = 0;
+  std::uintmax_t bytes = 0;
+  bool full = false;
+};
+
+// The whole of a regular file open at `fd`, up to `most` bytes; false when larger or unreadable.
+bool readAll(int fd, std::uintmax_t most, std::string& text) {
+  char buffer[1 << 16];
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) != 0;) {
+    if (n < 0 || text.size() + static_cast<std::size_t>(n) > most) return false;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  return true;
 }
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -62,52 +98,89 @@ void writeText(const fs::path& path, const std::string& text) {
   if (!out) throw std::runtime_error(path.string() + ": cannot write");
 }
 
-// Copies the source files under `from` into `to`, keeping the layout; symbolic links and other
-// files are not followed or read.
-void copySources(const fs::path& from, const fs::path& to, std::vector<std::string>& notes) {
-  int entries = 0, files = 0;
-  std::uintmax_t bytes = 0;
-  std::error_code error;
-  for (fs::recursive_directory_iterator it(from, error), end; !error && it != end;
-       it.increment(error)) {
-    if (++entries > kMostEntries) {
+// Copies the source files of the folder open at `dir` into `to` / `relative`, keeping the
+// layout. Every step is an openat without following a link, and what is read is what was
+// opened (fstat of the descriptor): no name is looked up twice.
+void copyFolder(int dir, const fs::path& to, const fs::path& relative, int depth,
+                const StudentRights& rights, CopyBudget& budget, std::vector<std::string>& notes) {
+  DIR* listing = fdopendir(dup(dir));
+  if (!listing) return;
+  std::vector<std::string> names;
+  while (dirent* entry = readdir(listing)) {
+    std::string name = entry->d_name;
+    if (name != "." && name != "..") names.push_back(name);
+  }
+  closedir(listing);
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names) {
+    if (budget.full) return;
+    if (++budget.entries > kMostEntries) {
       notes.push_back("more than " + std::to_string(kMostEntries) + " entries: the rest ignored");
-      break;
+      budget.full = true;
+      return;
     }
-    fs::file_status status = it->symlink_status();
-    fs::path relative = fs::relative(it->path(), from);
-    if (fs::is_symlink(status)) {
-      notes.push_back(relative.string() + ": a symbolic link, not followed");
-      if (it.depth() >= 0) it.disable_recursion_pending();
+    fs::path path = relative / name;
+    int fd = rights.openat(dir, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+      if (errno == ELOOP)
+        notes.push_back(printable(path.string()) + ": a symbolic link, not followed");
       continue;
     }
-    if (fs::is_directory(status)) {
-      if (it.depth() >= 8) it.disable_recursion_pending();
-      continue;
+    struct stat info;
+    bool known = fstat(fd, &info) == 0;
+    if (known && S_ISDIR(info.st_mode) && depth < kDeepest) {
+      copyFolder(fd, to, path, depth + 1, rights, budget, notes);
+    } else if (known && S_ISREG(info.st_mode) &&
+               kSourceExtensions.count(fs::path(name).extension().string())) {
+      std::string text;
+      budget.bytes += static_cast<std::uintmax_t>(info.st_size);
+      if (++budget.files > kMostFiles || budget.bytes > kMostBytes ||
+          !readAll(fd, kMostBytes, text)) {
+        notes.push_back("more source than the grader takes (300 files, 16 MB): the rest ignored");
+        budget.full = true;
+      } else {
+        fs::create_directories(to / relative);
+        writeText(to / path, text);
+      }
     }
-    if (!fs::is_regular_file(status) || !kSourceExtensions.count(it->path().extension().string())) {
-      continue;
-    }
-    bytes += it->file_size(error);
-    if (++files > kMostFiles || bytes > kMostBytes) {
-      notes.push_back("more source than the grader takes (300 files, 16 MB): the rest ignored");
-      break;
-    }
-    fs::create_directories(to / relative.parent_path());
-    writeText(to / relative, readWhole(it->path()));
+    close(fd);
   }
 }
 
-// Unpacks an archive in the sandbox into `into` (a folder of the scratch), by a fixed script:
-// nothing of the archive's names reaches a shell outside the sandbox.
-std::string unpack(const Submission& submission, const Scratch& scratch, const fs::path& into) {
-  // The archive is copied first: the sandbox's user may not reach where it lies.
-  std::error_code error;
-  if (fs::file_size(submission.path, error) > kMostArchiveBytes || error) {
-    return "the archive is larger than 64 MB, or unreadable";
+// Copies the folder at `from` (never a link) as copyFolder does.
+std::string copyTree(const std::string& from, const fs::path& to, bool asOwner,
+                     std::vector<std::string>& notes) {
+  int top = open(from.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  struct stat info;
+  if (top < 0 || fstat(top, &info) != 0) {
+    if (top >= 0) close(top);
+    return from + ": cannot open the folder: " + std::strerror(errno);
   }
+  if (!asOwner) info.st_uid = 0;  // the sandbox's own output: read as the grader
+  StudentRights rights(info);
+  CopyBudget budget;
+  fs::create_directories(to);
+  copyFolder(top, to, "", 0, rights, budget, notes);
+  close(top);
+  return "";
+}
+
+// Unpacks an archive in the sandbox into `into`, by a fixed script: nothing of the archive's
+// names reaches a shell outside the sandbox. The size counts every hard link (du -l): 54 kB of
+// links can otherwise unpack to a gigabyte of copies.
+std::string unpack(const Submission& submission, const Scratch& scratch, const fs::path& into,
+                   std::vector<std::string>& notes) {
+  // The archive is copied first, opened without following a link: the sandbox's user may not
+  // reach where it lies.
+  int in = open(submission.path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  std::string bytes;
+  struct stat info;
+  bool ok = in >= 0 && fstat(in, &info) == 0 && S_ISREG(info.st_mode) &&
+            readAll(in, kMostArchiveBytes, bytes);
+  if (in >= 0) close(in);
+  if (!ok) return "the archive is larger than 64 MB, or unreadable";
   std::string copy = scratch.path() + "/submission-archive";
-  fs::copy_file(submission.path, copy);
+  writeText(copy, bytes);
   fs::permissions(copy, fs::perms(0644));
   std::string out = scratch.makeFolder("unpacked");
   bool zip = hasSuffix(submission.path, ".zip");
@@ -116,7 +189,7 @@ std::string unpack(const Submission& submission, const Scratch& scratch, const f
   SandboxJob job;
   job.argv = {"/bin/sh", "-c",
               "cd /tmp && mkdir x && " + extract +
-                  " && [ \"$(du -sk x | cut -f1)\" -le 65536 ] && cp -R x/. /out/"};
+                  " && [ \"$(du -skl x | cut -f1)\" -le 65536 ] && cp -R x/. /out/"};
   job.hostDir = scratch.path();
   job.outputDir = out;
   job.readOnlyFiles = {{copy, "/in/submission"}};
@@ -125,144 +198,21 @@ std::string unpack(const Submission& submission, const Scratch& scratch, const f
   SandboxResult result = runSandboxed(job);
   if (!result.exitedWith(0)) {
     return "cannot unpack " + std::string(zip ? "the zip" : "the tar.gz") + " archive (" +
-           result.describe() + ", or more than 64 MB unpacked)";
+           result.describe() + ", or more than 64 MB unpacked, hard links counted)";
   }
-  std::vector<std::string> ignored;
-  copySources(out, into, ignored);
-  return "";
+  return copyTree(out, into, false, notes);
 }
 
-// The shallowest physics.cpp under `root`, or "" when there is none.
-fs::path findPhysics(const fs::path& root) {
-  fs::path best;
-  std::size_t bestDepth = ~std::size_t{0};
-  for (auto& entry : fs::recursive_directory_iterator(root)) {
-    if (!entry.is_regular_file() || entry.path().filename() != "physics.cpp") continue;
-    std::size_t depth =
-        static_cast<std::size_t>(std::distance(entry.path().begin(), entry.path().end()));
-    if (depth < bestDepth) {
-      best = entry.path();
-      bestDepth = depth;
-    }
-  }
-  return best;
-}
-
-// Whether `text` calls or defines a function main: the word, then blanks, then '('. A plain
-// scan: a pattern would recurse once per blank, and a file of blanks would crash the grader.
-bool hasMain(const std::string& text) {
-  for (std::size_t at = text.find("main"); at != std::string::npos;
-       at = text.find("main", at + 1)) {
-    bool wordStart =
-        at == 0 || !(std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_');
-    std::size_t next = at + 4;
-    while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
-    if (wordStart && next < text.size() && text[next] == '(') return true;
+// Whether the folder at `path` holds a physics.cpp, at most kDeepest folders down (links not
+// followed).
+bool holdsPhysics(const fs::path& path) {
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(path, error), end; !error && it != end;
+       it.increment(error)) {
+    if (it.depth() >= kDeepest) it.disable_recursion_pending();
+    if (it->path().filename() == "physics.cpp" && it->is_regular_file(error)) return true;
   }
   return false;
-}
-
-// A name the compiler can only take for a file: letters, digits, '.', '_', '-', not first '-'.
-bool plainName(const std::string& name) {
-  if (name.empty() || name[0] == '-') return false;
-  for (char c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-')
-      return false;
-  }
-  return true;
-}
-
-// The files of `folder` to compile, physics.cpp first, each as "./NAME" (never an option).
-std::vector<std::string> compiledFiles(const fs::path& folder, std::vector<std::string>& notes) {
-  std::vector<std::string> files = {"./physics.cpp"};
-  for (auto& entry : fs::directory_iterator(folder)) {
-    std::string name = entry.path().filename().string();
-    if (!entry.is_regular_file() || name == "physics.cpp" ||
-        !kCompiledExtensions.count(entry.path().extension().string())) {
-      continue;
-    }
-    if (!plainName(name)) {
-      notes.push_back(
-          printable(name) +
-          ": left out (a name of other characters than letters, digits, '.', '_' and '-')");
-    } else if (kViewerFiles.count(name) || hasMain(readWhole(entry.path()))) {
-      notes.push_back(name + ": left out (the course's viewer, or a main())");
-    } else {
-      files.push_back("./" + name);
-    }
-  }
-  std::sort(files.begin() + 1, files.end());
-  return files;
-}
-
-// Copies the program the sandbox built to `to`: only a regular file, never through a link the
-// sandbox may have put in its place. False when there is none.
-bool copyBuiltProgram(const std::string& from, const std::string& to) {
-  int in = open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  struct stat info;
-  if (in < 0) return false;
-  bool ok = fstat(in, &info) == 0 && S_ISREG(info.st_mode) && info.st_size < (256 << 20);
-  std::string bytes;
-  char buffer[1 << 16];
-  for (ssize_t n; ok && (n = read(in, buffer, sizeof buffer)) != 0;) {
-    if (n < 0)
-      ok = false;
-    else
-      bytes.append(buffer, static_cast<std::size_t>(n));
-  }
-  close(in);
-  if (!ok) return false;
-  writeText(to, bytes);
-  fs::permissions(to, fs::perms(0755));
-  return true;
-}
-
-// The first line of the compiler's output that says what is wrong, without sandbox paths.
-std::string firstError(const std::string& log) {
-  std::istringstream lines(log);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.find("error") != std::string::npos ||
-        line.find("undefined reference") != std::string::npos) {
-      for (const char* prefix : {"/work/build/", "/work/probe/", "/usr/bin/ld: "}) {
-        for (std::size_t at; (at = line.find(prefix)) != std::string::npos;) {
-          line.erase(at, std::strlen(prefix));
-        }
-      }
-      if (line.rfind("./", 0) == 0) line.erase(0, 2);  // the files are given as ./NAME
-      return line.size() > 300 ? line.substr(0, 300) + "..." : line;
-    }
-  }
-  return log.empty() ? "the compiler gave no reason" : log.substr(0, log.find('\n'));
-}
-
-struct Attempt {
-  const char* headers;
-  bool courseJello, coursePhysics;
-};
-
-// Prepares scratch/build for an attempt: the source folder, with the course API's headers in
-// place of the submission's where the attempt says so.
-void prepareAttempt(const fs::path& source, const fs::path& build, const Attempt& attempt) {
-  fs::remove_all(build);
-  fs::create_directories(build);
-  for (auto& entry : fs::directory_iterator(source)) {
-    if (entry.is_regular_file()) fs::copy_file(entry.path(), build / entry.path().filename());
-  }
-  if (attempt.courseJello) {
-    writeText(build / "jello.h", kCourseJelloH);
-    for (const char* header : kGlHeaders) writeText(build / header, "/* no GL when grading */\n");
-  }
-  if (attempt.coursePhysics) writeText(build / "physics.h", kCoursePhysicsH);
-}
-
-// The submission's header an attempt needs and the folder lacks, or nullptr: the probe includes
-// jello.h and physics.h, so without them the attempt fails at its first line, after a second of
-// compiling (a submission with neither header saves two such attempts).
-const char* missingHeader(const fs::path& source, const Attempt& attempt) {
-  if (!attempt.courseJello && !fs::exists(source / "jello.h")) return "jello.h";
-  if (!attempt.coursePhysics && !fs::exists(source / "physics.h")) return "physics.h";
-  return nullptr;
 }
 
 }  // namespace
@@ -270,10 +220,50 @@ const char* missingHeader(const fs::path& source, const Attempt& attempt) {
 std::string whyNotSubmission(const std::string& path) {
   struct stat info;
   if (path.empty()) return "an empty name is no submission";
-  if (stat(path.c_str(), &info) != 0) return path + ": " + std::strerror(errno);
+  if (lstat(path.c_str(), &info) != 0) return path + ": " + std::strerror(errno);
+  if (S_ISLNK(info.st_mode))
+    return path +
+           ": a symbolic link; name the folder or archive itself, so that the report "
+           "names the student it grades";
   if (S_ISDIR(info.st_mode)) return "";
   if (S_ISREG(info.st_mode) && isArchive(path)) return "";
   return path + ": not a folder, .zip, .tar.gz or .tgz";
+}
+
+std::vector<std::string> expandClasses(const std::vector<std::string>& paths,
+                                       std::vector<std::string>& notes) {
+  std::vector<std::string> expanded;
+  for (const auto& path : paths) {
+    struct stat info;
+    bool folder = lstat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
+    std::error_code error;
+    if (!folder || fs::is_regular_file(fs::path(path) / "physics.cpp", error)) {
+      expanded.push_back(path);
+      continue;
+    }
+    std::vector<std::string> members, left;
+    for (const auto& entry : fs::directory_iterator(path, error)) {
+      std::string name = entry.path().filename().string();
+      if (entry.is_symlink(error)) {
+        left.push_back(printable(entry.path().string()) + ": a symbolic link, not graded");
+      } else if ((entry.is_directory(error) && holdsPhysics(entry.path())) ||
+                 (entry.is_regular_file(error) && isArchive(name))) {
+        members.push_back(entry.path().string());
+      } else if (entry.is_directory(error)) {
+        left.push_back(printable(entry.path().string()) + ": no physics.cpp, not graded");
+      }
+    }
+    if (members.size() < 2) {  // one student's folder, whatever its layout
+      expanded.push_back(path);
+      continue;
+    }
+    std::sort(members.begin(), members.end());
+    expanded.insert(expanded.end(), members.begin(), members.end());
+    notes.push_back(printable(path) + ": a class of " + std::to_string(members.size()) +
+                    " submissions");
+    notes.insert(notes.end(), left.begin(), left.end());
+  }
+  return expanded;
 }
 
 std::vector<Submission> nameSubmissions(const std::vector<std::string>& paths) {
@@ -290,8 +280,8 @@ std::vector<Submission> nameSubmissions(const std::vector<std::string>& paths) {
     }
     if (name.empty() || name[0] == '.') name = "submission" + name;
     // The names of the report's own files are not a submission's folder.
-    for (const char* reserved :
-         {"summary.md", "summary.csv", "junit.xml", "grading.txt", "CTestTestfile.cmake"}) {
+    for (const char* reserved : {"summary.md", "summary.csv", "junit.xml", "grading.txt",
+                                 "CTestTestfile.cmake", ".jello-grade"}) {
       if (name == reserved) name += "-submission";
     }
     std::string unique = name;
@@ -302,61 +292,10 @@ std::vector<Submission> nameSubmissions(const std::vector<std::string>& paths) {
   return submissions;
 }
 
-BuildResult buildSubmission(const Submission& submission, const std::string& probePath) {
-  auto start = std::chrono::steady_clock::now();
-  BuildResult result;
-  Scratch scratch;
-  fs::path sources = fs::path(scratch.path()) / "sources";
-  fs::create_directories(sources);
-  if (isArchive(submission.path)) {
-    result.diagnosis = unpack(submission, scratch, sources);
-    if (!result.diagnosis.empty()) return result;
-  } else {
-    copySources(submission.path, sources, result.notes);
-  }
-  fs::path physics = findPhysics(sources);
-  if (physics.empty()) {
-    result.diagnosis = "no physics.cpp in the submission";
-    return result;
-  }
-  std::vector<std::string> files = compiledFiles(physics.parent_path(), result.notes);
-  fs::create_directories(fs::path(scratch.path()) / "probe");
-  writeText(fs::path(scratch.path()) / "probe" / "probe.cpp", kProbeSource);
-  const Attempt attempts[] = {{"its own headers", false, false},
-                              {"its physics.h with the course API's jello.h", true, false},
-                              {"the course API's jello.h and physics.h", true, true}};
-  for (const Attempt& attempt : attempts) {
-    if (const char* missing = missingHeader(physics.parent_path(), attempt)) {
-      result.log += "--- with " + std::string(attempt.headers) + ": not tried, no " + missing +
-                    " beside physics.cpp\n";
-      continue;
-    }
-    prepareAttempt(physics.parent_path(), fs::path(scratch.path()) / "build", attempt);
-    std::string out = scratch.makeFolder("out");
-    SandboxJob job;
-    job.argv = {"/usr/bin/g++", "-std=c++17", "-O2", "-fpermissive", "-w", "-I/work/build"};
-    job.argv.insert(job.argv.end(), files.begin(), files.end());
-    job.argv.insert(job.argv.end(), {"/work/probe/probe.cpp", "-o", "/out/probe", "-lm"});
-    job.hostDir = scratch.path();
-    job.outputDir = out;
-    job.workingDir = "/work/build";
-    job.limits = {60, 60, 4LL << 30, 16, 256LL << 20, 1LL << 20};
-    SandboxResult compiled = runSandboxed(job);
-    result.log += "--- with " + std::string(attempt.headers) + ": " + compiled.describe() + "\n" +
-                  compiled.errors + compiled.output;
-    if (compiled.exitedWith(0) && copyBuiltProgram(out + "/probe", probePath)) {
-      result.built = true;
-      result.headers = attempt.headers;
-      break;
-    }
-    if (result.diagnosis.empty() || attempt.coursePhysics) {
-      result.diagnosis = compiled.started && !compiled.timedOut && compiled.signal == 0
-                             ? firstError(compiled.errors)
-                             : "the compiler " + compiled.describe();
-    }
-  }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
+std::string copySubmission(const Submission& submission, const Scratch& scratch,
+                           const std::string& into, std::vector<std::string>& notes) {
+  if (isArchive(submission.path)) return unpack(submission, scratch, into, notes);
+  return copyTree(submission.path, into, true, notes);
 }
 
 }  // namespace jello::grader

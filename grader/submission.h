@@ -1,12 +1,11 @@
-// submission.h: a student's submission, found, copied and built in the sandbox.
+// submission.h: a student's submission, found and copied out of reach of its author.
 //
 // A submission is a folder, or a .zip, .tar.gz or .tgz of one, holding the course's physics.cpp
-// (anywhere inside: the shallowest one counts) and whatever it brings. What is built: every C++
-// file in physics.cpp's folder except the course's viewer files and files with a main(), with
-// the grader's probe (grader/course/probe.cpp). Headers, in the order tried: the submission's
-// own; its physics.h with the course API's jello.h (and empty stand-ins for the course's GL
-// headers); the course API's jello.h and physics.h. Only regular files are taken: symbolic links
-// are left behind, unread.
+// (anywhere inside: the shallowest one counts) and the rest of the student's program. A class is
+// a folder of submissions: one without a physics.cpp of its own whose entries, two or more, are
+// submissions. Only regular files are taken, opened without following a link at any step, and
+// when the grader runs as root, with the rights of the folder's owner: symbolic links and files
+// the student could not read are left behind, unread.
 #pragma once
 
 #include <string>
@@ -15,27 +14,30 @@
 namespace jello::grader {
 
 struct Submission {
-  std::string path;  // as given
+  std::string path;  // as given, or the class folder's entry
   std::string name;  // letters, digits, '.', '_', '-': for reports and test names; unique
 };
 
-// "" when `path` can be a submission (a folder, or a regular file named .zip, .tar.gz or .tgz);
-// otherwise why not, in words.
+// "" when `path` can be a submission or a class (a folder, or a regular file named .zip,
+// .tar.gz or .tgz, neither of them a symbolic link); otherwise why not, in words.
 std::string whyNotSubmission(const std::string& path);
+
+// `paths` with each class folder among them replaced by its submissions, in name order; what
+// was left out of a class (a symbolic link, an entry that is no submission) goes to `notes`.
+std::vector<std::string> expandClasses(const std::vector<std::string>& paths,
+                                       std::vector<std::string>& notes);
+
 // The submissions for `paths`, named after their last component (without the archive's
 // extension), made unique by "-2", "-3", ...
 std::vector<Submission> nameSubmissions(const std::vector<std::string>& paths);
 
-struct BuildResult {
-  bool built = false;
-  std::string diagnosis;           // when not built: the first error, or what is missing
-  std::string headers;             // which headers served, in words
-  std::vector<std::string> notes;  // files left out, links not followed
-  std::string log;                 // every compiler's output
-  double seconds = 0;
-};
+// Copies the submission's source files into the folder `into` (made): a folder by the safe copy
+// above, an archive unpacked in the sandbox (at most kMostArchiveBytes unpacked, every hard link
+// counted). Files left out go to `notes`. Returns "" or why nothing could be copied.
+class Scratch;
+std::string copySubmission(const Submission& submission, const Scratch& scratch,
+                           const std::string& into, std::vector<std::string>& notes);
 
-// Builds the submission in the sandbox and copies the program to `probePath`.
-BuildResult buildSubmission(const Submission& submission, const std::string& probePath);
+constexpr unsigned long long kMostArchiveBytes = 64ull << 20;
 
 }  // namespace jello::grader

@@ -11,7 +11,7 @@
 
 #include "grader/checkkit.h"
 #include "grader/checks.h"
-#include "grader/coursefiles.h"
+#include "grader/graderfiles.h"
 #include "grader/sandbox.h"
 #include "test_support.h"
 
@@ -266,10 +266,10 @@ TEST(Grader, BuildsWithItsOwnHeadersWhenTheyServeAndTheCourseApiWhenNot) {
   for (const char* name : {"glut", "missing-pic"}) {
     fs::create_directories(root + "/" + name);
     writeText(root + "/" + name + "/physics.cpp", physics);
-    writeText(root + "/" + name + "/physics.h", jello::grader::kCoursePhysicsH);
+    writeText(root + "/" + name + "/physics.h", jello::grader::graderFile("course/physics.h"));
     std::string first =
         std::string(name) == "glut" ? "#include <GL/glut.h>\n" : "#include \"pic.h\"\n";
-    writeText(root + "/" + name + "/jello.h", first + jello::grader::kCourseJelloH);
+    writeText(root + "/" + name + "/jello.h", first + jello::grader::graderFile("course/jello.h"));
   }
   // File names the compiler must not take for options, and a file that would make a pattern
   // search for main( recurse 200,000 times.

@@ -1,31 +1,41 @@
-/* probe.cpp: the grader's side of a submission's program. Built with the submission's
-   physics.cpp (and its headers, or the project's course API headers), run in the sandbox.
+/* probe.cpp: the grader's side of a submission's program, built with the student's code and run
+   in the sandbox (docs/grading.md, "How a submission is built").
 
-   It reads commands on standard input and answers on standard output, numbers in "%.17g"
-   (they read back exactly):
+   Two builds. With the student's whole program (JELLO_GRADER_PROGRAM), the student's own main()
+   runs first, as it would in a window: it reads the world file the grader names in argv[1] and
+   does its own setup (spring lists, plane normals, ...); its call of glutMainLoop(), which the
+   grader's GLUT stand-in turns into jello_grader_main_loop(), hands the program to the probe.
+   With physics.cpp alone, the probe's own main() serves.
+
+   The grader's requests arrive on file descriptor 3 and the answers leave on descriptor 4, never
+   on the student's standard input or output (a printf in a global constructor or left from
+   debugging goes to the log, not into the answers). The grader sends the next request only
+   after the answer to this one, so no request can be read ahead. Numbers in "%.17g" (they read
+   back exactly); each answer ends with a line ".". The probe speaks first, "jello-probe" (it is
+   ready: the student's setup is done):
      W <world file text>   the world, in the course's .w format (readWorld's order)
      S <1024 lines x y z>  the state: 512 positions, then 512 velocities, lattice order
-     A                     prints the 512 accelerations computeAcceleration gives at the state
-     E N / R N             N steps of Euler / RK4
-     P                     prints the 512 positions and the 512 velocities
-     T N                   N steps of RK4, then prints the microseconds a step took
-   It trusts nothing about the submission: output is flushed after every answer, so what was
-   answered before a crash stays answered; and what the submission itself prints (a printf left
-   from debugging) goes to /dev/null, not into the answers. Exit status 3: a command it could
-   not read. */
+     A                     answers the 512 accelerations computeAcceleration gives at the state
+     E N / R N             N steps of Euler / RK4; answers "ok"
+     P                     answers the 512 positions and the 512 velocities
+     T N                   N steps of RK4; answers the microseconds a step took
+   Before its first answer the probe takes one RK4 and one Euler step and puts the world back as
+   it was, so that a program that builds its lists on the first step has them. Exit status 3: a
+   request it could not read. It includes no <unistd.h>: the course's jello.h declares a global
+   `int pause`, which would clash with pause(2). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include <unistd.h>
 
 #include "jello.h"
 #include "physics.h"
 
-/* The course's jello.cpp defines the world; a submission may too. */
+/* The course's jello.cpp defines the world; physics.cpp alone may not. */
 __attribute__((weak)) struct world jello;
 
-static FILE* answers; /* the grader's end of standard output */
+static FILE* requests; /* descriptor 3 */
+static FILE* answers;  /* descriptor 4 */
 
 static void refuse(const char* what) {
   fprintf(stderr, "probe: cannot read %s\n", what);
@@ -37,29 +47,36 @@ static void readPoints(struct point points[8][8][8], const char* what) {
     for (int j = 0; j < 8; j++)
       for (int k = 0; k < 8; k++) {
         struct point* q = &points[i][j][k];
-        if (scanf("%lf %lf %lf", &q->x, &q->y, &q->z) != 3) refuse(what);
+        if (fscanf(requests, "%lf %lf %lf", &q->x, &q->y, &q->z) != 3) refuse(what);
       }
 }
 
 static void readWorldCommand(void) {
   struct world* w = &jello;
-  if (scanf("%9s", w->integrator) != 1) refuse("the integrator");
-  if (scanf("%lf %d", &w->dt, &w->n) != 2) refuse("dt n");
-  if (scanf("%lf %lf %lf %lf", &w->kElastic, &w->dElastic, &w->kCollision, &w->dCollision) != 4)
+  if (fscanf(requests, "%9s", w->integrator) != 1) refuse("the integrator");
+  if (fscanf(requests, "%lf %d", &w->dt, &w->n) != 2) refuse("dt n");
+  if (fscanf(requests, "%lf %lf %lf %lf", &w->kElastic, &w->dElastic, &w->kCollision,
+             &w->dCollision) != 4)
     refuse("the spring constants");
-  if (scanf("%lf", &w->mass) != 1) refuse("the mass");
-  if (scanf("%d", &w->incPlanePresent) != 1) refuse("the plane flag");
-  if (w->incPlanePresent == 1 && scanf("%lf %lf %lf %lf", &w->a, &w->b, &w->c, &w->d) != 4)
+  if (fscanf(requests, "%lf", &w->mass) != 1) refuse("the mass");
+  if (fscanf(requests, "%d", &w->incPlanePresent) != 1) refuse("the plane flag");
+  if (w->incPlanePresent == 1 &&
+      fscanf(requests, "%lf %lf %lf %lf", &w->a, &w->b, &w->c, &w->d) != 4)
     refuse("the plane");
-  if (scanf("%d", &w->resolution) != 1 || w->resolution < 0 || w->resolution > 64)
+  int resolution = 0;
+  if (fscanf(requests, "%d", &resolution) != 1 || resolution < 0 || resolution > 64)
     refuse("the resolution");
-  free(w->forceField);
-  int nodes = w->resolution * w->resolution * w->resolution;
-  /* As the course's input code: malloc of the nodes, R = 0 included. */
-  w->forceField = (struct point*)malloc(sizeof(struct point) * (size_t)nodes);
-  for (int n = 0; n < nodes; n++) {
+  /* As the course's input code: malloc of the nodes, R = 0 included. The student's setup may
+     keep the pointer its readWorld made: it stays while the resolution does. */
+  if (resolution != w->resolution || w->forceField == NULL) {
+    free(w->forceField);
+    w->forceField = (struct point*)malloc(sizeof(struct point) *
+                                          (size_t)(resolution * resolution * resolution + 1));
+  }
+  w->resolution = resolution;
+  for (int n = 0; n < resolution * resolution * resolution; n++) {
     struct point* f = &w->forceField[n];
-    if (scanf("%lf %lf %lf", &f->x, &f->y, &f->z) != 3) refuse("the field");
+    if (fscanf(requests, "%lf %lf %lf", &f->x, &f->y, &f->z) != 3) refuse("the field");
   }
   readPoints(w->p, "the positions");
   readPoints(w->v, "the velocities");
@@ -75,7 +92,7 @@ static void printPoints(struct point points[8][8][8]) {
 
 static long readCount(void) {
   long n = 0;
-  if (scanf("%ld", &n) != 1 || n < 0) refuse("a step count");
+  if (fscanf(requests, "%ld", &n) != 1 || n < 0) refuse("a step count");
   return n;
 }
 
@@ -85,19 +102,41 @@ static double secondsNow(void) {
   return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+/* One RK4 and one Euler step, the world put back after each. */
+static void warmUp(void) {
+  static struct world saved;
+  memcpy(&saved, &jello, sizeof saved);
+  RK4(&jello);
+  memcpy(&jello, &saved, sizeof saved);
+  Euler(&jello);
+  memcpy(&jello, &saved, sizeof saved);
+}
+
 static struct point accelerations[8][8][8];
 
-int main(void) {
+static void serve(void) {
   char command[4];
-  answers = fdopen(dup(1), "w");
-  if (!answers || !freopen("/dev/null", "w", stdout)) return 4;
-  while (scanf("%3s", command) == 1) {
+  int warm = 0;
+  requests = fdopen(3, "r");
+  answers = fdopen(4, "w");
+  if (!requests || !answers) exit(4);
+  fprintf(answers, "jello-probe\n.\n"); /* the greeting: ready for the first request */
+  fflush(answers);
+  while (fscanf(requests, "%3s", command) == 1) {
     if (strcmp(command, "W") == 0) {
       readWorldCommand();
-    } else if (strcmp(command, "S") == 0) {
+      continue;
+    }
+    if (strcmp(command, "S") == 0) {
       readPoints(jello.p, "the positions");
       readPoints(jello.v, "the velocities");
-    } else if (strcmp(command, "A") == 0) {
+      continue;
+    }
+    if (!warm) {
+      warm = 1;
+      warmUp();
+    }
+    if (strcmp(command, "A") == 0) {
       memset(accelerations, 0, sizeof accelerations);
       computeAcceleration(&jello, accelerations);
       printPoints(accelerations);
@@ -121,7 +160,20 @@ int main(void) {
     } else {
       refuse("a command");
     }
+    fprintf(answers, ".\n");
     fflush(answers);
   }
+}
+
+#ifdef JELLO_GRADER_PROGRAM
+extern "C" void jello_grader_main_loop(void) {
+  fflush(stdout);
+  serve();
+  exit(0);
+}
+#else
+int main(void) {
+  serve();
   return 0;
 }
+#endif

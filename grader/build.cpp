@@ -1,0 +1,596 @@
+// build.cpp: building a submission's program in the sandbox (build.h).
+#include "grader/build.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/output.h"
+#include "grader/graderfiles.h"
+#include "grader/probe.h"
+#include "grader/sandbox.h"
+
+namespace fs = std::filesystem;
+
+namespace jello::grader {
+namespace {
+
+constexpr int kMostCompiled = 100;  // source files compiled in one attempt
+const char* const kProbeName = "jello-grader-probe.cpp";
+const std::set<std::string> kCompiledExtensions = {".cpp", ".cc", ".cxx", ".c"};
+const std::set<std::string> kHeaderExtensions = {".h", ".hpp", ".hh", ".hxx", ".inl"};
+// The course's headers that bring GL into jello.h: empty when the course API's jello.h serves.
+const char* const kCourseGlHeaders[] = {"openGL-headers.h", "input.h", "showCube.h"};
+// Copies of the libraries the grader stands in for, which a submission may ship: each is
+// replaced by the stand-in, whatever its case ("Glut.h" too).
+const std::map<std::string, std::string> kStoodInHeaders = {
+    {"pic.h", "standins/always/pic.h"},
+    {"gl.h", "standins/always/GL/gl.h"},
+    {"glu.h", "standins/always/GL/glu.h"},
+    {"glut.h", "standins/always/GL/glut.h"},
+    {"freeglut.h", "standins/always/GL/freeglut.h"},
+    {"freeglut_std.h", "standins/always/GL/freeglut_std.h"},
+    {"freeglut_ext.h", "standins/always/GL/freeglut_ext.h"},
+    {"glew.h", "standins/always/GL/glew.h"}};
+
+// The build script, fixed text: file names reach it only through /work/list, one "ROLE PATH" a
+// line, each PATH a plain relative name (plainPath), and only ever as one quoted argument.
+// Each file is compiled apart; the roots (the probe, physics.cpp, the program's main) are linked
+// with the rest as an archive, from which the linker takes only what the program needs: a stray
+// file that does not compile, or defines something twice, or needs GL, is left out unless used.
+const char* const kBuildScript = R"(set -u -f
+cd /work/build || exit 1
+cxx=$(cat /work/cxxflags); cc=$(cat /work/cflags); probe=$(cat /work/probeflags)
+n=0; roots=; libs=; broken=
+while read -r role source; do
+  n=$((n + 1))
+  case $source in
+    *.c) gcc $cc -c "./$source" -o "/out/$n.o" ;;
+    *) if [ "$role" = probe ]; then g++ $cxx $probe -c "./$source" -o "/out/$n.o"
+       else g++ $cxx -c "./$source" -o "/out/$n.o"; fi ;;
+  esac
+  if [ $? -ne 0 ]; then
+    [ "$role" = lib ] || broken=1
+  elif [ "$role" = lib ]; then libs="$libs /out/$n.o"
+  else roots="$roots /out/$n.o"
+  fi
+done < /work/list
+[ -z "$broken" ] || exit 1
+if [ -n "$libs" ]; then ar rcs /out/lib.a $libs || exit 1; libs=/out/lib.a; fi
+exec g++ -o /out/probe $roots $libs -lm
+)";
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// A name the compiler and the script can only take for a file: letters, digits, '.', '_', '-'
+// in each component, none starting with '-' or being "..".
+bool plainPath(const std::string& relative) {
+  std::stringstream parts(relative);
+  std::string part;
+  int count = 0;
+  while (std::getline(parts, part, '/')) {
+    ++count;
+    if (part.empty() || part[0] == '-' || part == "." || part == "..") return false;
+    for (char c : part) {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-')
+        return false;
+    }
+  }
+  return count > 0;
+}
+
+std::string readWhole(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+// Whether `text` calls or defines a function `word`: the word, then blanks, then '('. A plain
+// scan: a pattern would recurse once per blank, and a file of blanks would crash the grader.
+bool callsWord(const std::string& text, const std::string& word) {
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    bool wordStart =
+        at == 0 || !(std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_');
+    std::size_t next = at + word.size();
+    while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+    if (wordStart && next < text.size() && text[next] == '(') return true;
+  }
+  return false;
+}
+
+// The submission as copied, from physics.cpp's folder down.
+struct Tree {
+  fs::path root;                        // physics.cpp's folder
+  std::vector<std::string> sources;     // files to compile, relative to root, plain; sorted
+  std::set<std::string> definesMain;    // of those, the ones with a main()
+  std::string mainFile;                 // the program's main(): the one calling glutMainLoop
+  std::vector<std::string> headerDirs;  // folders below root (relative, plain) with headers
+  std::vector<std::string> notes;
+};
+
+// The shallowest physics.cpp under `root`, or "" when there is none.
+fs::path findPhysics(const fs::path& root) {
+  fs::path best;
+  std::size_t bestDepth = ~std::size_t{0};
+  for (auto& entry : fs::recursive_directory_iterator(root)) {
+    if (!entry.is_regular_file() || entry.path().filename() != "physics.cpp") continue;
+    auto depth = static_cast<std::size_t>(std::distance(entry.path().begin(), entry.path().end()));
+    if (depth < bestDepth) {
+      best = entry.path();
+      bestDepth = depth;
+    }
+  }
+  return best;
+}
+
+Tree readTree(const fs::path& physics) {
+  Tree tree;
+  tree.root = physics.parent_path();
+  std::set<std::string> headerDirs;
+  for (auto& entry : fs::recursive_directory_iterator(tree.root)) {
+    if (!entry.is_regular_file()) continue;
+    std::string relative = fs::relative(entry.path(), tree.root).generic_string();
+    std::string extension = entry.path().extension().string();
+    if (kHeaderExtensions.count(extension) && entry.path().parent_path() != tree.root &&
+        plainPath(fs::relative(entry.path().parent_path(), tree.root).generic_string())) {
+      headerDirs.insert(fs::relative(entry.path().parent_path(), tree.root).generic_string());
+    }
+    if (!kCompiledExtensions.count(extension) || relative == kProbeName) continue;
+    if (!plainPath(relative)) {
+      tree.notes.push_back(
+          printable(relative) +
+          ": left out (a name of other characters than letters, digits, '.', '_' and '-')");
+      continue;
+    }
+    tree.sources.push_back(relative);
+    std::string text = readWhole(entry.path());
+    if (callsWord(text, "main")) {
+      tree.definesMain.insert(relative);
+      // The program's main: the one that starts GLUT, else jello.cpp's.
+      if (callsWord(text, "glutMainLoop") ||
+          (tree.mainFile.empty() && entry.path().filename() == "jello.cpp"))
+        tree.mainFile = relative;
+    }
+  }
+  std::sort(tree.sources.begin(), tree.sources.end());
+  if (static_cast<int>(tree.sources.size()) > kMostCompiled) {
+    tree.notes.push_back("more than " + std::to_string(kMostCompiled) +
+                         " files to compile: the rest left out");
+    tree.sources.resize(kMostCompiled);
+  }
+  tree.headerDirs.assign(headerDirs.begin(), headerDirs.end());
+  return tree;
+}
+
+enum class Mode { Program, PhysicsAlone };
+struct Attempt {
+  Mode mode;
+  bool courseJello, coursePhysics;
+  const char* words;
+  bool lenient = false;  // each is tried as written, then leniently where that did not compile
+};
+const Attempt kAttempts[] = {
+    {Mode::Program, false, false, "its whole program (its own main()), its own headers"},
+    {Mode::PhysicsAlone, false, false, "physics.cpp alone, its own headers"},
+    {Mode::PhysicsAlone, true, false,
+     "physics.cpp alone, its physics.h with the course API's jello.h"},
+    {Mode::PhysicsAlone, true, true, "physics.cpp alone, the course API's jello.h and physics.h"},
+};
+
+// Why an attempt cannot be made with this tree, or "" when it can.
+std::string whyNot(const Tree& tree, const Attempt& attempt) {
+  if (attempt.mode == Mode::Program) {
+    if (tree.mainFile.empty()) return "no main() that calls glutMainLoop()";
+    if (!fs::exists(tree.root / "jello.h")) return "no jello.h beside physics.cpp";
+    return "";
+  }
+  if (!attempt.courseJello && !fs::exists(tree.root / "jello.h"))
+    return "no jello.h beside physics.cpp";
+  if (!attempt.coursePhysics && !fs::exists(tree.root / "physics.h"))
+    return "no physics.h beside physics.cpp";
+  return "";
+}
+
+// Every file under `dir` by its lower-case relative path.
+std::map<std::string, std::string> byLowerCase(const fs::path& dir) {
+  std::map<std::string, std::string> names;
+  if (!fs::exists(dir)) return names;
+  for (auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file()) {
+      std::string relative = fs::relative(entry.path(), dir).generic_string();
+      names.emplace(lower(relative), relative);
+    }
+  }
+  return names;
+}
+
+// The names of the #include lines of `text`, as written, read line by line (no pattern: one
+// would recurse once per character of a long line).
+std::vector<std::string> includesOf(const std::string& text) {
+  std::vector<std::string> names;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::size_t at = line.find_first_not_of(" \t");
+    if (at == std::string::npos || line[at] != '#') continue;
+    at = line.find_first_not_of(" \t", at + 1);
+    if (at == std::string::npos || line.compare(at, 7, "include") != 0) continue;
+    at = line.find_first_not_of(" \t", at + 7);
+    if (at == std::string::npos || (line[at] != '<' && line[at] != '"')) continue;
+    std::size_t end = line.find(line[at] == '<' ? '>' : '"', at + 1);
+    if (end != std::string::npos) names.push_back(line.substr(at + 1, end - at - 1));
+  }
+  return names;
+}
+
+// A lenient build: each #include that names no file as written but one in another case (the
+// student's own, or a stand-in: Windows does not tell case apart) gets a copy under the name as
+// written, in the folder /work/case. Returns the notes.
+std::vector<std::string> matchIncludeCase(const fs::path& build, const fs::path& standins,
+                                          const fs::path& caseDir) {
+  std::vector<std::string> notes;
+  std::map<std::string, std::string> own = byLowerCase(build);
+  std::map<std::string, std::string> stood = byLowerCase(standins / "always");
+  for (auto& [low, name] : byLowerCase(standins / "lenient")) stood.emplace(low, name);
+  for (auto& entry : fs::recursive_directory_iterator(build)) {
+    if (!entry.is_regular_file()) continue;
+    std::string from = fs::relative(entry.path(), build).generic_string();
+    for (const std::string& wanted : includesOf(readWhole(entry.path()))) {
+      fs::path here = entry.path().parent_path();
+      if (!plainPath(wanted) || fs::exists(here / wanted) || fs::exists(build / wanted) ||
+          fs::exists(caseDir / wanted) || fs::exists(standins / "always" / wanted) ||
+          fs::exists(standins / "lenient" / wanted) || fs::exists("/usr/include/" + wanted))
+        continue;
+      std::string local = fs::relative(here / wanted, build).lexically_normal().generic_string();
+      std::string source;
+      if (own.count(lower(local)))
+        source = (build / own[lower(local)]).string();
+      else if (own.count(lower(wanted)))
+        source = (build / own[lower(wanted)]).string();
+      else if (stood.count(lower(wanted)))
+        source = fs::exists(standins / "always" / stood[lower(wanted)])
+                     ? (standins / "always" / stood[lower(wanted)]).string()
+                     : (standins / "lenient" / stood[lower(wanted)]).string();
+      if (source.empty()) continue;
+      writeText(caseDir / wanted, readWhole(source));
+      notes.push_back("#include \"" + wanted + "\" (" + from + ") read as " +
+                      fs::path(source).filename().string() + ": Windows ignores the case of names");
+    }
+  }
+  return notes;
+}
+
+// The lenient stand-ins a build used: each says so as it is included (#pragma message).
+std::vector<std::string> standInsUsed(const std::string& log) {
+  std::set<std::string> used;
+  const std::string mark = "jello-grader stand-in: ";
+  for (std::size_t at = log.find(mark); at != std::string::npos; at = log.find(mark, at + 1)) {
+    std::size_t end = log.find_first_of(">\n", at);
+    if (end != std::string::npos && log[end] == '>')
+      used.insert(log.substr(at + mark.size(), end + 1 - at - mark.size()));
+  }
+  return {used.begin(), used.end()};
+}
+
+// scratch/build: the tree from physics.cpp's folder, the stand-ins' copies replaced, the course
+// API's headers where the attempt says so, the probe. scratch/standins: the stand-ins.
+void layOut(const Tree& tree, const Attempt& attempt, const fs::path& work) {
+  fs::path build = work / "build";
+  fs::remove_all(build);
+  fs::copy(tree.root, build, fs::copy_options::recursive);
+  for (auto& entry : fs::recursive_directory_iterator(build)) {
+    auto stood = kStoodInHeaders.find(lower(entry.path().filename().string()));
+    if (entry.is_regular_file() && stood != kStoodInHeaders.end())
+      writeText(entry.path(), graderFile(stood->second));
+  }
+  if (attempt.courseJello) {
+    writeText(build / "jello.h", graderFile("course/jello.h"));
+    for (const char* header : kCourseGlHeaders) writeText(build / header, "/* no GL */\n");
+  }
+  if (attempt.coursePhysics || !fs::exists(build / "physics.h"))
+    writeText(build / "physics.h", graderFile("course/physics.h"));
+  writeText(build / kProbeName, graderFile("course/probe.cpp"));
+  fs::remove_all(work / "standins");
+  fs::remove_all(work / "case");
+  fs::create_directories(work / "case");
+  for (const GraderFile& file : graderFiles()) {
+    std::string path = file.path;
+    if (path.rfind("standins/", 0) == 0) writeText(work / path, file.text);
+  }
+}
+
+// The flag files and the list of the attempt; returns the leniencies it used, in words.
+std::vector<std::string> writeFlags(const Tree& tree, const Attempt& attempt,
+                                    const fs::path& work) {
+  std::vector<std::string> leniencies;
+  std::string include = "-I/work/standins/always -I.";
+  for (const auto& dir : tree.headerDirs) include += " -I./" + dir;
+  std::string common = "-O2 -w -fdiagnostics-column-unit=byte -fno-diagnostics-color";
+  std::string cxx = "-std=gnu++17 " + common, cc = "-std=gnu11 " + common;
+  if (attempt.lenient) {
+    include += " -I/work/case -I/work/standins/lenient";
+    cxx += " -fpermissive -include jello-grader-lenient.h";
+    cc += " -include jello-grader-lenient.h";
+    for (const auto& note : matchIncludeCase(work / "build", work / "standins", work / "case"))
+      leniencies.push_back(note);
+    leniencies.push_back(
+        "the standard headers another compiler brings in on its own (<string>, <vector>, "
+        "<cmath>, ...) included before each file, and -fpermissive (it was not built without "
+        "them)");
+  }
+  writeFileWhole((work / "cxxflags").string(), cxx + " " + include + "\n", Existing::Replace);
+  writeFileWhole((work / "cflags").string(), cc + " " + include + "\n", Existing::Replace);
+  writeFileWhole((work / "probeflags").string(),
+                 attempt.mode == Mode::Program ? "-DJELLO_GRADER_PROGRAM\n" : "\n",
+                 Existing::Replace);
+  std::string list = "probe " + std::string(kProbeName) + "\nroot physics.cpp\n";
+  if (attempt.mode == Mode::Program && tree.mainFile != "physics.cpp")
+    list += "root " + tree.mainFile + "\n";
+  for (const auto& source : tree.sources) {
+    if (source == "physics.cpp" || source == tree.mainFile) continue;
+    // Alone, physics.cpp is linked with the probe's main(): no other main() may come in.
+    if (attempt.mode == Mode::PhysicsAlone && tree.definesMain.count(source)) continue;
+    list += "lib " + source + "\n";
+  }
+  writeFileWhole((work / "list").string(), list, Existing::Replace);
+  writeFileWhole((work / "build.sh").string(), kBuildScript, Existing::Replace);
+  return leniencies;
+}
+
+// The first line of the compiler's output that says what is wrong, without sandbox paths.
+std::string firstError(const std::string& log) {
+  std::istringstream lines(log);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.find("error") != std::string::npos ||
+        line.find("undefined reference") != std::string::npos ||
+        line.find("multiple definition") != std::string::npos) {
+      for (const char* prefix : {"/work/build/", "/usr/bin/ld: "}) {
+        for (std::size_t at; (at = line.find(prefix)) != std::string::npos;) {
+          line.erase(at, std::strlen(prefix));
+        }
+      }
+      for (std::size_t at; (at = line.find("./")) != std::string::npos &&
+                           (at == 0 || line[at - 1] == ' ' || line[at - 1] == '(');) {
+        line.erase(at, 2);  // the files are given as ./NAME
+      }
+      if (line.rfind(kProbeName, 0) == 0) {
+        // The grader's own call of the course API does not compile: the API was changed.
+        line =
+            "the course API is changed (the grader calls computeAcceleration(struct world*, "
+            "struct point[8][8][8]), Euler(struct world*) and RK4(struct world*) on struct "
+            "world's fields p, v, dt, ...): " +
+            line;
+      }
+      return line.size() > 400 ? line.substr(0, 400) + "..." : line;
+    }
+  }
+  return log.empty() ? "the compiler gave no reason" : log.substr(0, log.find('\n'));
+}
+
+// Two things Visual C++ allows that no compiler here does, rewritten where the compiler's own
+// error points (a lenient build, once): a pointer compared with > 0 (read as != 0) or <= 0 (as
+// == 0), and a friend declared static (the static dropped). Returns the notes; none: nothing to
+// rewrite.
+std::vector<std::string> rewriteForVisualCpp(const fs::path& build, const std::string& log) {
+  std::vector<std::string> notes;
+  std::map<std::string, std::vector<std::string>> files;  // path -> lines
+  std::istringstream logLines(log);
+  for (std::string entry; std::getline(logLines, entry);) {
+    // "./FILE:LINE:COLUMN: error: WHAT"
+    bool comparison =
+        entry.find(": error: ordered comparison of pointer with integer zero") != std::string::npos;
+    bool friendStatic =
+        entry.find(": error: storage class specifiers invalid in friend") != std::string::npos;
+    if (entry.rfind("./", 0) != 0 || !(comparison || friendStatic)) continue;
+    std::istringstream fields(entry.substr(2));
+    std::string path, lineText, columnText;
+    std::getline(fields, path, ':');
+    std::getline(fields, lineText, ':');
+    std::getline(fields, columnText, ':');
+    std::size_t line = std::strtoul(lineText.c_str(), nullptr, 10);
+    std::size_t column = std::strtoul(columnText.c_str(), nullptr, 10);
+    if (!plainPath(path) || !fs::exists(build / path)) continue;
+    if (!files.count(path)) {
+      std::istringstream in(readWhole(build / path));
+      for (std::string l; std::getline(in, l);) files[path].push_back(l);
+    }
+    std::vector<std::string>& lines = files[path];
+    if (line == 0 || line > lines.size() || column == 0) continue;
+    std::string& l = lines[line - 1];
+    std::string where = path + ":" + std::to_string(line);
+    if (comparison) {
+      std::size_t at = l.find_first_of("<>", column - 1);
+      if (at == std::string::npos) continue;
+      bool greater = l[at] == '>' && (at + 1 >= l.size() || l[at + 1] != '=');
+      bool lessEqual = l[at] == '<' && at + 1 < l.size() && l[at + 1] == '=';
+      if (!greater && !lessEqual) continue;
+      l.replace(at, greater ? 1 : 2, greater ? "!=" : "==");
+      notes.push_back(where + ": a pointer compared with " +
+                      (greater ? "> 0 read as != 0" : "<= 0 read as == 0") +
+                      " (Visual C++ allows the comparison)");
+    } else {
+      std::size_t at = l.find("static", column - 1);
+      if (at == std::string::npos) continue;
+      l.erase(at, 6);
+      notes.push_back(where + ": 'friend static' read as 'friend' (Visual C++ allows it)");
+    }
+  }
+  for (const auto& [path, lines] : files) {
+    std::string joined;
+    for (const auto& l : lines) joined += l + "\n";
+    writeText(build / path, joined);
+  }
+  return notes;
+}
+
+struct Compiled {
+  bool built = false;
+  std::string log;
+  std::string firstError;
+};
+
+// Runs the build script in the sandbox; on success the program is at `out`/probe.
+Compiled compile(const Scratch& scratch, const std::string& out) {
+  SandboxJob job;
+  job.argv = {"/bin/sh", "/work/build.sh"};
+  job.hostDir = scratch.path();
+  job.outputDir = out;
+  job.workingDir = "/work/build";
+  job.limits = {120, 120, 4LL << 30, 16, 256LL << 20, 1LL << 20};
+  SandboxResult result = runSandboxed(job);
+  Compiled compiled;
+  compiled.built = result.exitedWith(0);
+  compiled.log = result.describe() + "\n" + result.errors + result.output;
+  compiled.firstError = result.started && !result.timedOut && result.signal == 0
+                            ? firstError(result.errors + result.output)
+                            : "the compiler " + result.describe();
+  return compiled;
+}
+
+// Copies the program the sandbox built to `to`: only a regular file, never through a link the
+// sandbox may have put in its place. False when there is none.
+bool copyBuiltProgram(const std::string& from, const std::string& to) {
+  int in = open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  struct stat info;
+  if (in < 0) return false;
+  bool ok = fstat(in, &info) == 0 && S_ISREG(info.st_mode) && info.st_size < (256 << 20);
+  std::string bytes;
+  char buffer[1 << 16];
+  for (ssize_t n; ok && (n = read(in, buffer, sizeof buffer)) != 0;) {
+    if (n < 0)
+      ok = false;
+    else
+      bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(in);
+  if (!ok) return false;
+  writeText(to, bytes);
+  fs::permissions(to, fs::perms(0755));
+  return true;
+}
+
+// Whether a program built whole reaches the grader: its main() runs its setup and calls
+// glutMainLoop(). "" when it does; otherwise what happened.
+std::string whyNotReaching(const std::string& probePath) {
+  World world;
+  world.integrator = Integrator::RK4;
+  world.dt = 0.0005;
+  world.kElastic = 300;
+  world.dElastic = 0.7;
+  world.kCollision = 1100;
+  world.dCollision = 1.3;
+  world.mass = 1.0 / kNumPoints;
+  world.field.resolution = 2;
+  world.field.forces.assign(3 * 8, 0.0);
+  State rest;
+  for (int q = 0; q < kNumPoints; ++q)
+    store(rest.p(), q, kRestSpacing * Vec3{double(q / 64), double(q / 8 % 8), double(q % 8)});
+  Script script;
+  script.world(world, rest);
+  script.accelerations();
+  ProbeRun run = runProbe(probePath, script);
+  std::string failure = run.failure;
+  return failure.rfind("the program never reached", 0) == 0 ? failure : "";
+}
+
+// One attempt: laid out, flags written, compiled (leniently, once more after the rewrites).
+Compiled buildAttempt(const Tree& tree, const Attempt& attempt, const Scratch& scratch,
+                      std::vector<std::string>& leniencies) {
+  fs::path work = scratch.path();
+  layOut(tree, attempt, work);
+  leniencies = writeFlags(tree, attempt, work);
+  Compiled compiled = compile(scratch, scratch.makeFolder("out"));
+  for (const auto& header : standInsUsed(compiled.log))
+    leniencies.push_back(header + " stood in for (a Windows header)");
+  if (!compiled.built && attempt.lenient) {
+    std::vector<std::string> rewrites = rewriteForVisualCpp(work / "build", compiled.log);
+    if (!rewrites.empty()) {
+      leniencies.insert(leniencies.end(), rewrites.begin(), rewrites.end());
+      Compiled again = compile(scratch, scratch.makeFolder("out"));
+      again.log = compiled.log + "--- again, after the rewrites:\n" + again.log;
+      compiled = again;
+    }
+  }
+  return compiled;
+}
+
+}  // namespace
+
+BuildResult buildSubmission(const Submission& submission, const std::string& probePath) {
+  auto start = std::chrono::steady_clock::now();
+  BuildResult result;
+  Scratch scratch;
+  fs::path sources = fs::path(scratch.path()) / "sources";
+  result.diagnosis = copySubmission(submission, scratch, sources.string(), result.notes);
+  if (!result.diagnosis.empty()) return result;
+  fs::path physics = fs::exists(sources) ? findPhysics(sources) : fs::path();
+  if (physics.empty()) {
+    result.diagnosis = "no physics.cpp in the submission";
+    return result;
+  }
+  Tree tree = readTree(physics);
+  result.notes.insert(result.notes.end(), tree.notes.begin(), tree.notes.end());
+  std::string programError;  // why its whole program was not graded
+  for (Attempt attempt : kAttempts) {
+    std::string why = whyNot(tree, attempt);
+    if (!why.empty()) {
+      result.log += "--- " + std::string(attempt.words) + ": not tried, " + why + "\n";
+      continue;
+    }
+    for (bool lenient : {false, true}) {
+      attempt.lenient = lenient;
+      std::vector<std::string> leniencies;
+      Compiled compiled = buildAttempt(tree, attempt, scratch, leniencies);
+      result.log += "--- " + std::string(attempt.words) + (lenient ? ", leniently" : "") + ": " +
+                    compiled.log;
+      if (result.diagnosis.empty() && !compiled.built) result.diagnosis = compiled.firstError;
+      if (!compiled.built) {
+        if (attempt.mode == Mode::Program && lenient)
+          programError = "its whole program did not build (" + result.diagnosis + ")";
+        continue;
+      }
+      if (!copyBuiltProgram(scratch.path() + "/out/probe", probePath)) break;
+      if (attempt.mode == Mode::Program) {
+        std::string notReaching = whyNotReaching(probePath);
+        if (!notReaching.empty()) {
+          programError = "its whole program built, but " + notReaching;
+          break;
+        }
+      }
+      if (!programError.empty())
+        result.notes.push_back(programError + ": physics.cpp graded alone");
+      for (const auto& leniency : leniencies) result.notes.push_back("leniency: " + leniency);
+      result.built = true;
+      result.how = std::string(attempt.words) + (lenient ? ", leniently" : "");
+      result.diagnosis.clear();
+      break;
+    }
+    if (result.built) break;
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace jello::grader

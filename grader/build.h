@@ -1,0 +1,36 @@
+// build.h: building a submission in the sandbox, as its student's program is built.
+//
+// The grader builds the student's program as they wrote it, headless (docs/grading.md, "How a
+// submission is built"): their own main() (jello.cpp's, or whichever file calls glutMainLoop),
+// their physics.cpp and input.cpp and whatever else the program needs, with their own headers,
+// against stand-ins for GL, GLU, GLUT and the course's pic library that draw nothing; the
+// stand-in glutMainLoop() hands the program to the grader's probe once the student's own setup
+// has run. Each file is compiled apart and only what the program needs is linked (the rest goes
+// into an archive). Where that does not build, the same leniently (the Windows headers, the
+// standard headers another compiler includes on its own, file names in any case,
+// -fpermissive, and two rewrites Visual C++ allows: each named in the report); then physics.cpp
+// alone, with its own headers, then with the course API's (grader/course/).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grader/submission.h"
+
+namespace jello::grader {
+
+struct BuildResult {
+  bool built = false;
+  // When not built: the first error of the first attempt (the student's own program, with its
+  // own headers), "FILE:LINE:COLUMN: error: ..." in the student's file; or what is missing.
+  std::string diagnosis;
+  std::string how;                 // how it was built, in words ("its whole program, ...")
+  std::vector<std::string> notes;  // leniencies, fallbacks and why, files left out, links
+  std::string log;                 // every compiler's output
+  double seconds = 0;
+};
+
+// Builds the submission in the sandbox and copies the program to `probePath`.
+BuildResult buildSubmission(const Submission& submission, const std::string& probePath);
+
+}  // namespace jello::grader
