@@ -28,6 +28,11 @@ namespace {
 
 constexpr int kMostCompiled = 100;  // source files compiled in one attempt
 const char* const kProbeName = "jello-grader-probe.cpp";
+// How a build error in the grader's own probe begins: the student changed the course API.
+const std::string kApiChanged =
+    "the course API is changed (the grader calls computeAcceleration(struct world*, struct "
+    "point[8][8][8]), Euler(struct world*) and RK4(struct world*) on struct world's fields p, v, "
+    "dt, ...): ";
 const std::set<std::string> kCompiledExtensions = {".cpp", ".cc", ".cxx", ".c"};
 const std::set<std::string> kHeaderExtensions = {".h", ".hpp", ".hh", ".hxx", ".inl"};
 // The course's headers that bring GL into jello.h: empty when the course API's jello.h serves.
@@ -377,11 +382,7 @@ std::string firstError(const std::string& log) {
       }
       if (line.rfind(kProbeName, 0) == 0) {
         // The grader's own call of the course API does not compile: the API was changed.
-        line =
-            "the course API is changed (the grader calls computeAcceleration(struct world*, "
-            "struct point[8][8][8]), Euler(struct world*) and RK4(struct world*) on struct "
-            "world's fields p, v, dt, ...): " +
-            line;
+        line = kApiChanged + line;
       }
       return line.size() > 400 ? line.substr(0, 400) + "..." : line;
     }
@@ -567,8 +568,11 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
                     compiled.log;
       if (result.diagnosis.empty() && !compiled.built) result.diagnosis = compiled.firstError;
       if (!compiled.built) {
-        if (attempt.mode == Mode::Program && lenient)
+        // Leniency cannot mend a changed API: the grader's own call does not compile.
+        bool apiChanged = compiled.firstError.rfind(kApiChanged, 0) == 0;
+        if (attempt.mode == Mode::Program && (lenient || apiChanged))
           programError = "its whole program did not build (" + result.diagnosis + ")";
+        if (apiChanged) break;
         continue;
       }
       if (!copyBuiltProgram(scratch.path() + "/out/probe", probePath)) break;

@@ -1,0 +1,146 @@
+// The grader on whole programs laid out as students keep them: tests/data/students/base (the
+// course's jello.h with its extern int pause, the spring list built in jello.cpp's main, the
+// viewer, input and picture code) and its shapes (scripts/make-students), each graded and
+// checked against its expect.txt.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "grader/sandbox.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace jello::test;
+
+namespace {
+
+const std::string kStudents = std::string(JELLO_TEST_DATA) + "/students";
+
+// report.md's rows as check -> (grade, what it found), and its notes, the markdown undone
+// enough to compare words (the escapes before markdown's characters dropped).
+struct Report {
+  std::map<std::string, std::pair<std::string, std::string>> rows;
+  std::string notes;
+};
+
+std::string unescaped(const std::string& text) {
+  std::string out;
+  for (std::size_t n = 0; n < text.size(); ++n) {
+    if (text[n] == '\\' && n + 1 < text.size() &&
+        std::string("`*_[]|#~").find(text[n + 1]) != std::string::npos)
+      out += text[++n];
+    else if (text.compare(n, 4, "&lt;") == 0)
+      out += '<', n += 3;
+    else if (text.compare(n, 4, "&gt;") == 0)
+      out += '>', n += 3;
+    else if (text.compare(n, 5, "&amp;") == 0)
+      out += '&', n += 4;
+    else
+      out += text[n];
+  }
+  return out;
+}
+
+Report readReport(const std::string& path) {
+  Report report;
+  std::istringstream lines(readText(path));
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("- ", 0) == 0) report.notes += unescaped(line) + "\n";
+    if (line.rfind("| ", 0) != 0 || line.rfind("| check", 0) == 0) continue;
+    std::vector<std::string> cells;
+    std::string cell;
+    for (std::size_t n = 1; n < line.size(); ++n) {
+      if (line[n] == '|' && line[n - 1] != '\\') {
+        cells.push_back(cell);
+        cell.clear();
+      } else {
+        cell += line[n];
+      }
+    }
+    if (cells.size() < 3) continue;
+    auto trim = [](std::string t) {
+      t.erase(0, t.find_first_not_of(' '));
+      t.erase(t.find_last_not_of(' ') + 1);
+      return t;
+    };
+    report.rows[trim(cells[0])] = {trim(cells[1]), unescaped(trim(cells[2]))};
+  }
+  return report;
+}
+
+// Checks one graded shape against its expect.txt: "CHECK GRADE [WORDS]" (the check has that
+// grade and its line holds WORDS), "builds note WORDS" (the build's notes hold WORDS), "* pass"
+// (every other check graded passes, or is info).
+void expectShape(const std::string& shape, const Report& report) {
+  SCOPED_TRACE(shape);
+  // The base program itself ("course") builds whole and passes everything.
+  std::istringstream expect(shape == "course" ? "builds pass its whole program\n* pass\n"
+                                              : readText(kStudents + "/" + shape + "/expect.txt"));
+  std::map<std::string, bool> named;
+  bool restPass = false;
+  for (std::string line; std::getline(expect, line);) {
+    std::istringstream words(line);
+    std::string check, grade, text;
+    words >> check >> grade;
+    std::getline(words, text);
+    text.erase(0, text.find_first_not_of(' '));
+    if (check == "*") {
+      restPass = true;
+      continue;
+    }
+    if (!report.rows.count(check)) continue;  // not graded in this run
+    if (grade == "note") {
+      EXPECT_NE(report.notes.find(text), std::string::npos) << check << " note: " << text;
+      continue;
+    }
+    named[check] = true;
+    EXPECT_EQ(report.rows.at(check).first, grade) << check << ": " << report.rows.at(check).second;
+    EXPECT_NE(report.rows.at(check).second.find(text), std::string::npos)
+        << check << ": " << report.rows.at(check).second << "\nexpected: " << text;
+  }
+  if (!restPass) return;
+  for (const auto& [check, row] : report.rows) {
+    if (named.count(check)) continue;
+    EXPECT_TRUE(row.first == "pass" || row.first == "info") << check << ": " << row.second;
+  }
+}
+
+}  // namespace
+
+// Every shape of student program: built as written (or leniently, or physics.cpp alone, as each
+// expects, the report naming how), graded right, wrong ones told why. The agreement check is
+// left to the mutants' test (it is half the time); CTest runs this beside the other tests.
+TEST(GraderPrograms, BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSays) {
+  if (!jello::grader::sandboxProblem().empty()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), cls = root + "/class", report = root + "/report";
+  CommandResult made = runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls});
+  ASSERT_EQ(made.status, 0) << made.err;
+  ProgramSetup setup;
+  setup.hangGuardSeconds = 280;
+  CommandResult r =
+      runProgram({JELLO_GRADE, "-o", report, "--seed", "5", "--checks",
+                  "rest,structural,shear,bend,dampers,walls,plane,field,euler,rk4,robust", cls},
+                 setup);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // One folder of submissions is a class: each graded, with a line as it starts and as it ends.
+  int shapes = 0;
+  for (const auto& entry : fs::directory_iterator(cls)) {
+    std::string name = entry.path().filename().string();
+    ++shapes;
+    EXPECT_NE(r.err.find("] " + name + ": building and grading"), std::string::npos) << name;
+    EXPECT_NE(r.err.find("] " + name + ": "), std::string::npos) << name;
+    expectShape(name, readReport(report + "/" + name + "/report.md"));
+  }
+  EXPECT_GE(shapes, 16);
+  EXPECT_NE(r.err.find("a class of " + std::to_string(shapes) + " submissions"), std::string::npos)
+      << r.err;
+  // What failed is on the terminal in words, not only in report.md.
+  EXPECT_NE(r.err.find("missing-walls: "), std::string::npos);
+  EXPECT_NE(
+      r.err.find("  walls (FAIL): walls x = +2, y = +2, z = +2: no force on points across it"),
+      std::string::npos)
+      << r.err;
+  removeTree(root);
+}
