@@ -125,7 +125,9 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
   FolderClaim claim = claimOutputs(dir, {"summary.md", "summary.csv", "junit.xml"}, existing);
   if (made) removeIfEmptyOnSignal(dir);
   for (const auto& file : reportFiles(submissions)) {
-    fs::create_directories(fs::path(dir + "/" + file).parent_path());
+    fs::path folder = fs::path(dir + "/" + file).parent_path();
+    if (!fs::exists(folder)) removeIfEmptyOnSignal(folder.string());
+    fs::create_directories(folder);
     std::string why = whyNotWritable(dir + "/" + file, existing);
     if (!why.empty()) throw std::runtime_error(why);
   }

@@ -59,6 +59,15 @@ std::string markdownText(const std::string& text) {
   return out;
 }
 
+// The compilers' log, line by line through printable: a student's #error reaches no terminal
+// that shows build.log as an escape sequence.
+std::string logText(const std::string& log) {
+  std::string out;
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) out += printable(line) + "\n";
+  return out;
+}
+
 // A CSV field: quoted, quotes doubled; a leading = + - @ is kept from spreadsheets' formulas.
 std::string csvField(const std::string& text) {
   std::string out = "\"";
@@ -214,7 +223,7 @@ void writeReport(const std::string& dir, const std::vector<Graded>& graded, std:
   for (const auto& g : graded) {
     makeFolder(dir + "/" + g.submission.name);
     writeFileWhole(dir + "/" + g.submission.name + "/report.md", submissionReport(g), existing);
-    writeFileWhole(dir + "/" + g.submission.name + "/build.log", g.buildLog, existing);
+    writeFileWhole(dir + "/" + g.submission.name + "/build.log", logText(g.buildLog), existing);
   }
   writeFileWhole(dir + "/summary.md", summaryMarkdown(graded, seed), existing);
   writeFileWhole(dir + "/summary.csv", summaryCsv(graded), existing);

@@ -293,7 +293,9 @@ void installScratchCleanup() {
       std::lock_guard<std::mutex> lock(scratchMutex);
       std::error_code ignored;
       for (const auto& folder : scratchFolders) std::filesystem::remove_all(folder, ignored);
-      for (const auto& folder : emptyFolders) rmdir(folder.c_str());
+      // Deepest first: a folder sorts before the folders inside it.
+      for (auto folder = emptyFolders.rbegin(); folder != emptyFolders.rend(); ++folder)
+        rmdir(folder->c_str());
     }
     // The signal again, now to the handler core/output installed (its temporary files), which
     // then ends the program as the signal would have.
