@@ -25,7 +25,10 @@ all:
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	cp -f $(BUILD_DIR)/jello $(BUILD_DIR)/createWorld $(BUILD_DIR)/grade .
 
+# A fresh clone's first `make` installs what building needs first (as `make run` does), or
+# says in one line which packages are missing.
 $(BUILD_DIR)/Makefile: CMakeLists.txt tests/CMakeLists.txt
+	@scripts/install-deps --run
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
 
 # Installs the Debian packages the project needs, when some are missing and we can: all of them,

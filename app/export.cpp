@@ -151,10 +151,7 @@ void MeshSequence::open(const std::string& heldFolder) {
                       " exported meshes; choose another folder, or add --overwrite to replace "
                       "them");
   }
-  for (const std::string& name : old) {
-    if (::unlink((dir_ + "/" + name).c_str()) != 0)
-      throw OutputError(dir_ + "/" + name + ": cannot remove: " + std::strerror(errno));
-  }
+  removeOutputs(dir_, old);
   opened_ = true;
 }
 

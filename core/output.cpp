@@ -48,9 +48,24 @@ void forgetTemporary(const std::string& path) {
     if (slot.used.load() && path == slot.path) slot.used.store(false);
 }
 
+// The handlers these replaced, per signal: a second copy of this file (one linked into the
+// graphics library, which keeps its own copy of the list) installs its handler too, and each
+// cleans its own list, then hands the signal on, the last one to the default action.
+constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP};
+struct sigaction previousActions[3];
+bool installed = false;
+
 extern "C" void removeTemporariesAndDie(int signal) {
   for (TemporarySlot& slot : temporaries)
     if (slot.used.load()) ::unlink(slot.path);
+  for (int n = 0; n < 3; ++n) {
+    const struct sigaction& previous = previousActions[n];
+    if (kCleanedSignals[n] != signal || (previous.sa_flags & SA_SIGINFO) ||
+        previous.sa_handler == SIG_DFL || previous.sa_handler == SIG_IGN)
+      continue;
+    previous.sa_handler(signal);  // the other copy's cleanup, which ends the program
+    return;
+  }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -141,6 +156,20 @@ WriteCheck checkWritable(const std::string& path, Existing existing) {
   if (path.size() >= PATH_MAX)
     return {"the path is longer than the system's " + std::to_string(PATH_MAX) + " bytes"};
   return {};
+}
+
+void removeOutputs(const std::string& dir, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    const WriteCheck check = checkWritable(dir + "/" + name, Existing::Replace);
+    if (!check.writable())
+      throw OutputError(dir + "/" + name + ": " + check.why.substr(0, check.why.find(";")) +
+                        "; --overwrite replaces only "
+                        "regular files it may write: move it away, or choose another folder");
+  }
+  for (const std::string& name : names) {
+    if (::unlink((dir + "/" + name).c_str()) != 0)
+      throw OutputError(withError(dir + "/" + name, "cannot remove", errno));
+  }
 }
 
 std::string makeTemporary(const std::string& dir, const std::string& suffix) {
@@ -282,11 +311,13 @@ FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>&
 }
 
 void installSignalCleanup() {
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+  if (installed) return;
+  installed = true;
+  for (int n = 0; n < 3; ++n) {
     struct sigaction action {};
     action.sa_handler = removeTemporariesAndDie;
     sigemptyset(&action.sa_mask);
-    ::sigaction(signal, &action, nullptr);
+    ::sigaction(kCleanedSignals[n], &action, &previousActions[n]);
   }
 }
 

@@ -54,6 +54,11 @@ void writeFileWhole(const std::string& path, std::string_view bytes, Existing ex
 void writeFileWhole(const std::string& path, const std::function<void(std::FILE*)>& fill,
                     Existing existing);
 
+// Removes dir/NAME for each of `names` (an earlier run's frames or meshes, for --overwrite),
+// each checked first under the rules above: when one is not a regular, writable file (a link,
+// a FIFO, a read-only file), none is removed and OutputError names it.
+void removeOutputs(const std::string& dir, const std::vector<std::string>& names);
+
 // A temporary file name in `dir`, made (empty, mode 0600) and registered for removal on a
 // signal, for output a child program writes (gnuplot's PNG). `suffix` ends the name (".png").
 // Finish with publishTemporary or discardTemporary. Throws OutputError.
@@ -94,7 +99,9 @@ FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>&
                          Existing existing);
 
 // Removes the temporary files of writes under way when SIGINT, SIGTERM or SIGHUP arrives, then
-// lets the signal end the program as it would have. Called once by each main.
+// lets the signal end the program as it would have. Called once by each main, and by the
+// graphics library as it loads (it holds a copy of this file, and of its list, of its own): the
+// handlers chain, each cleaning its own list.
 void installSignalCleanup();
 
 // True when both names lead to the same file (same device and inode).

@@ -57,10 +57,10 @@ void FrameSequence::open() {
     throw FrameError(dir_ + " already holds " + std::to_string(old.size()) +
                      " frames; choose another folder, or add --overwrite to replace them");
   }
-  for (const std::string& name : old) {
-    if (::unlink((dir_ + "/" + name).c_str()) != 0) {
-      throw FrameError(dir_ + "/" + name + ": cannot remove: " + std::strerror(errno));
-    }
+  try {
+    removeOutputs(dir_, old);
+  } catch (const OutputError& e) {
+    throw FrameError(e.what());
   }
   opened_ = true;
 }

@@ -37,6 +37,12 @@ void silence(j_common_ptr, int) {}
 
 }  // namespace
 
+namespace {
+// This library holds its own copy of core/output (linked in, its symbols hidden): its list of
+// temporary files is cleaned on a signal by its own handler, chained to the program's.
+[[maybe_unused]] const bool kCleanupInstalled = (installSignalCleanup(), true);
+}  // namespace
+
 void writeJpeg(const std::string& path, const Image& image, int quality, Existing existing) {
   writeFileWhole(
       path,

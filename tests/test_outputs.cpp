@@ -1,6 +1,7 @@
 // What jello writes, and what it never does: hostile file names, full disks, signals, two runs
 // at once, files it was not told to replace (issue 12; README "Reliability").
 #include <dirent.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -271,6 +272,40 @@ TEST(Signals, TheTemporaryFileOfAWriteUnderWayGoesWithTheSignal) {
   }
 }
 
+// A frame being written when SIGINT arrives leaves no temporary JPEG: the graphics library's
+// own list of temporary files is cleaned too (its handler chained to the program's).
+TEST(Signals, AFrameBeingWrittenLeavesNoTemporaryFileBehind) {
+  const std::string world = test::dataPath("still.w");
+  int leftovers = 0, runs = 0;
+  for (int run = 0; run < 12; ++run) {
+    std::string dir = test::makeTempDir(), frames = dir + "/f";
+    pid_t child = ::fork();
+    if (child == 0) {
+      int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 2);
+      ::execl(JELLO_BINARY, JELLO_BINARY, "--headless", "--steps", "100000", "--n", "1", "--size",
+              "4000x3000", "--max-frames", "10000", "--frames", frames.c_str(), world.c_str(),
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    for (int i = 0; i < 400 && sizeOf(frames + "/0000.jpg") < 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(9 * run));  // somewhere in a frame
+    ::kill(child, SIGINT);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    if (sizeOf(frames + "/0000.jpg") < 0) {
+      test::removeTree(dir);
+      GTEST_SKIP() << "no frames: pictures are not built here";
+    }
+    ++runs;
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+    for (const std::string& name : entries(frames)) leftovers += name.rfind(".jello-", 0) == 0;
+    test::removeTree(dir);
+  }
+  EXPECT_EQ(leftovers, 0) << "in " << runs << " runs";
+}
+
 // ---- Item 9: two runs cannot share a folder ---------------------------------------------------
 
 TEST(FolderClaims, ASecondClaimOnAFolderIsRefusedUntilTheFirstEnds) {
@@ -320,6 +355,51 @@ TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceed) {
   EXPECT_EQ(second.status, 2) << second.err;
   EXPECT_NE(second.err.find("in use by another run"), std::string::npos) << second.err;
   test::removeTree(dir);
+}
+
+// --overwrite replaces an earlier run's frames or meshes only where each is a regular file it may
+// write: a symbolic link, a FIFO or a read-only file named like one is refused by name, and
+// nothing is removed (the regular 0001 beside it stays too).
+TEST(OverwriteRule, FramesAndMeshesNeverReplaceALinkAFifoOrAReadOnlyFile) {
+  const std::string world = test::dataPath("still.w");
+  for (const std::string option : {"--frames", "--export"}) {
+    for (const std::string kind : {"link", "fifo", "read-only"}) {
+      SCOPED_TRACE(option + " " + kind);
+      std::string dir = test::makeTempDir(), out = dir + "/out";
+      ::mkdir(out.c_str(), 0755);
+      const std::string ext = option == "--frames" ? ".jpg" : ".obj";
+      const std::string first = out + "/0000" + ext, second = out + "/0001" + ext;
+      test::writeText(dir + "/target.txt", "the user's own\n");
+      test::writeText(second, "an earlier frame\n");
+      if (kind == "link") {
+        ASSERT_EQ(::symlink((dir + "/target.txt").c_str(), first.c_str()), 0);
+      } else if (kind == "fifo") {
+        ASSERT_EQ(::mkfifo(first.c_str(), 0644), 0);
+      }
+      if (kind == "read-only") {
+        test::writeText(first, "read-only\n");
+        ::chmod(first.c_str(), 0444);
+      }
+      test::CommandResult r = test::runJelloArgs(
+          {"--headless", "--steps", "2", "--n", "1", "--overwrite", option, out, world});
+      if (option == "--frames" && r.err.find("pictures") != std::string::npos) GTEST_SKIP();
+      EXPECT_EQ(r.status, 2) << r.err;
+      EXPECT_NE(r.err.find(first), std::string::npos) << r.err;
+      EXPECT_EQ(test::readText(dir + "/target.txt"), "the user's own\n");
+      EXPECT_EQ(test::readText(second), "an earlier frame\n");
+      struct stat info {};
+      ASSERT_EQ(::lstat(first.c_str(), &info), 0);
+      if (kind == "link") {
+        EXPECT_TRUE(S_ISLNK(info.st_mode));
+      } else if (kind == "fifo") {
+        EXPECT_TRUE(S_ISFIFO(info.st_mode));
+      } else {
+        EXPECT_EQ(test::readText(first), "read-only\n");
+      }
+      ::chmod(first.c_str(), 0644);
+      test::removeTree(dir);
+    }
+  }
 }
 
 // ---- Item 10: --report and --map replace nothing they did not check --------------------------
