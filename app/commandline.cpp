@@ -13,6 +13,7 @@
 #include "app/export.h"
 #include "core/output.h"
 #include "solver/integrators.h"
+#include "solver/simulation.h"
 
 namespace jello {
 
@@ -88,7 +89,8 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
       app.add_option("--steps", g->steps,
                      "steps to run (default: headless 300 frames of n steps, the window without "
                      "end); the window pauses there, p runs on")
-          ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
+          // At most kMaxSteps, as --time is: a run of 2^63 steps would never end.
+          ->transform(wholeNumber(0, static_cast<long long>(kMaxSteps)));
   g->timeOption = app.add_option("--time", g->time,
                                  "simulated seconds to run; the window pauses there, p runs on")
                       ->transform(kPositive);

@@ -144,6 +144,25 @@ bool countLine(const std::vector<std::string_view>& words, const std::string& wh
   } else if (words[0] == "vt") {
     count = &counts->textureCoordinates;
   } else if (words[0] == "f" && words.size() >= 4) {
+    // tinyobjloader reads each index as an int, without a word when it overflows: 4294967304
+    // would wrap round to 8. Every index (vertex/texture/normal) is a whole number no larger
+    // than the most points a model may have.
+    for (std::size_t w = 1; w < words.size(); ++w) {
+      std::string_view corner = words[w];
+      for (std::size_t start = 0; start <= corner.size();) {
+        std::size_t slash = std::min(corner.find('/', start), corner.size());
+        std::string_view index = corner.substr(start, slash - start);
+        std::size_t digits = index.size() - (!index.empty() && index[0] == '-');
+        if (!index.empty() &&
+            (digits == 0 || digits > 9 ||
+             index.find_first_not_of("0123456789", index.size() - digits) !=
+                 std::string_view::npos ||
+             std::stoull(std::string(index.substr(index.size() - digits))) > kMostPoints))
+          return fail(why, where + "face index " + std::string(index) +
+                               " is not a whole number of at most " + std::to_string(kMostPoints));
+        start = slash + 1;
+      }
+    }
     counts->triangles += words.size() - 3;  // a polygon of n corners is n - 2 triangles
     if (counts->triangles > kMostMeshTriangles)
       return fail(why, where + "more than " + std::to_string(kMostMeshTriangles) + " triangles");

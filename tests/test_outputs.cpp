@@ -463,8 +463,11 @@ TEST(CommandLineNumbers, StepsBeyondTheLargestWholeNumberAreRefusedNotClamped) {
   JelloCommand c;
   EXPECT_EQ(parse({"--steps", "99999999999999999999"}, &c), kExitBadInput);
   EXPECT_EQ(parse({"--steps", "0x10"}, &c), kExitBadInput);
-  ASSERT_EQ(parse({"--steps", "9223372036854775807"}, &c), kGoOn);
-  EXPECT_EQ(*c.run.steps, 9223372036854775807LL);
+  // At most 1e12 steps, as --time allows: --bench --steps 2^63 - 1 ran until killed.
+  EXPECT_EQ(parse({"--steps", "9223372036854775807"}, &c), kExitBadInput);
+  EXPECT_EQ(parse({"--steps", "1000000000001"}, &c), kExitBadInput);
+  ASSERT_EQ(parse({"--steps", "1000000000000"}, &c), kGoOn);
+  EXPECT_EQ(*c.run.steps, 1000000000000LL);
 }
 
 TEST(CommandLineNames, AnEmptyFramesDumpReportOrMapFolderIsRefusedNotIgnored) {

@@ -489,6 +489,11 @@ TEST_F(VoxelObjFile, BadFacesAreRefused) {
                 "a face (f) refers to a vertex that is not there (3 vertices)");
   expectRefused(std::string(kTriangle) + "f 1 2 3 4\n", "not there");
   expectRefused(std::string(kTriangle) + "f -1 -2 -4\n", "not there");
+  // An index beyond an int wraps in tinyobjloader (2^32 + 8 to vertex 8): refused as written.
+  expectRefused(std::string(kTriangle) + "f 1 2 4294967304\n",
+                ":4: face index 4294967304 is not a whole number of at most 3000000");
+  expectRefused(std::string(kTriangle) + "f 1/4294967297 2 3\n", "face index 4294967297");
+  expectRefused(std::string(kTriangle) + "f 1 2 +3\n", "face index +3");
   expectRefused(std::string(kTriangle) + "f 1 2 0\n",
                 "not an OBJ file tinyobjloader reads: Failed parse `f' line");
   const char nul[] = "v 0 0 0\0v 1 0 0\nv 0 1 0\nf 1 2 3\n";
