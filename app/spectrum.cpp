@@ -60,17 +60,75 @@ class ShiftSolve {
   Eigen::SimplicialLDLT<SparseMatrix> factor_;
 };
 
+// Below this many unknowns every eigenpair comes from one dense solve: cheaper than Lanczos at
+// that size, and Lanczos cannot give n - 1 or more pairs of n (a body of 8 points has 24).
+constexpr Eigen::Index kDenseBelow = 300;
+
+bool solvesDensely(const SparseMatrix& matrix, int count) {
+  return matrix.rows() < kDenseBelow || count >= matrix.rows() - 1;
+}
+
+// Every eigenpair of `matrix` from one dense solve; none when it fails.
+std::optional<Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>> denseSolve(
+    const SparseMatrix& matrix) {
+  const Eigen::MatrixXd dense(matrix);
+  if (!dense.allFinite()) return std::nullopt;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense);
+  if (solver.info() != Eigen::Success) return std::nullopt;
+  return solver;
+}
+
+// The `count` eigenpairs of a dense solve whose key(value) comes first, largest first; values
+// descending, as every Eigenpairs.
+template <class Key>
+Eigenpairs denseChoice(const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& solver, int count,
+                       Key key) {
+  const Eigen::VectorXd& values = solver.eigenvalues();
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(values.size()));
+  for (std::size_t n = 0; n < order.size(); ++n) order[n] = static_cast<Eigen::Index>(n);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](Eigen::Index a, Eigen::Index b) { return key(values[a]) > key(values[b]); });
+  order.resize(std::min(order.size(), static_cast<std::size_t>(std::max(count, 0))));
+  std::sort(order.begin(), order.end(),
+            [&](Eigen::Index a, Eigen::Index b) { return values[a] > values[b]; });
+  const auto chosen = static_cast<Eigen::Index>(order.size());
+  Eigenpairs pairs{Eigen::VectorXd(chosen), Eigen::MatrixXd(values.size(), chosen)};
+  for (Eigen::Index n = 0; n < chosen; ++n) {
+    pairs.values[n] = values[order[static_cast<std::size_t>(n)]];
+    pairs.vectors.col(n) = solver.eigenvectors().col(order[static_cast<std::size_t>(n)]);
+  }
+  return pairs;
+}
+
+// Spectra reports some failures by throwing (its tridiagonal solve of a matrix with entries
+// beyond a double's range): a failed solve, never an error of its own words.
+template <class Solve>
+auto guarded(Solve solve) -> decltype(solve()) {
+  try {
+    return solve();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::optional<Eigenpairs> largestEigenpairs(const SparseMatrix& matrix, int count) {
-  JELLO_ASSERT(count > 0 && count < matrix.rows());
-  Spectra::SparseSymMatProd<double> product(matrix);
-  Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(product, count,
-                                                                   basisSize(count, matrix.rows()));
-  solver.init();
-  solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
-  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
-  return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
+  JELLO_ASSERT(count > 0);
+  if (solvesDensely(matrix, count)) {
+    auto solver = denseSolve(matrix);
+    if (!solver) return std::nullopt;
+    return denseChoice(*solver, count, [](double v) { return v; });
+  }
+  return guarded([&]() -> std::optional<Eigenpairs> {
+    Spectra::SparseSymMatProd<double> product(matrix);
+    Spectra::SymEigsSolver<Spectra::SparseSymMatProd<double>> solver(
+        product, count, basisSize(count, matrix.rows()));
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestAlge, kMaxRestarts, kTolerance);
+    if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
+    return Eigenpairs{solver.eigenvalues(), solver.eigenvectors()};
+  });
 }
 
 namespace {
@@ -79,16 +137,28 @@ namespace {
 // `rule`, and the number of negative pivots of matrix - shift I (its eigenvalues below the shift).
 std::optional<AboveShift> shiftInverted(const SparseMatrix& matrix, double shift, int count,
                                         Spectra::SortRule rule) {
-  JELLO_ASSERT(count > 0 && count < matrix.rows());
-  ShiftSolve inverse(matrix);
-  // The solver's constructor factorises matrix - shift I.
-  Spectra::SymEigsShiftSolver<ShiftSolve> solver(inverse, count, basisSize(count, matrix.rows()),
-                                                 shift);
-  if (!inverse.factorised()) return std::nullopt;
-  solver.init();
-  solver.compute(rule, kMaxRestarts, kTolerance);
-  if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
-  return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
+  JELLO_ASSERT(count > 0);
+  if (solvesDensely(matrix, count)) {
+    auto solver = denseSolve(matrix);
+    if (!solver) return std::nullopt;
+    const bool magnitude = rule == Spectra::SortRule::LargestMagn;
+    Eigenpairs pairs = denseChoice(*solver, count, [&](double v) {
+      return magnitude ? std::fabs(1 / (v - shift)) : 1 / (v - shift);
+    });
+    return AboveShift{std::move(pairs),
+                      static_cast<int>((solver->eigenvalues().array() < shift).count())};
+  }
+  return guarded([&]() -> std::optional<AboveShift> {
+    ShiftSolve inverse(matrix);
+    // The solver's constructor factorises matrix - shift I.
+    Spectra::SymEigsShiftSolver<ShiftSolve> solver(inverse, count, basisSize(count, matrix.rows()),
+                                                   shift);
+    if (!inverse.factorised()) return std::nullopt;
+    solver.init();
+    solver.compute(rule, kMaxRestarts, kTolerance);
+    if (solver.info() != Spectra::CompInfo::Successful) return std::nullopt;
+    return AboveShift{{solver.eigenvalues(), solver.eigenvectors()}, inverse.negativePivots()};
+  });
 }
 
 }  // namespace
@@ -108,7 +178,8 @@ std::optional<Eigenpairs> eigenpairsNear(const SparseMatrix& matrix, double shif
 }
 
 RitzPairs ritzPairs(const SparseMatrix& matrix, const Eigen::VectorXd& start, int steps) {
-  JELLO_ASSERT(steps > 0 && steps < matrix.rows() && start.size() == matrix.rows());
+  JELLO_ASSERT(steps > 0 && start.size() == matrix.rows());
+  steps = static_cast<int>(std::min<Eigen::Index>(steps, matrix.rows()));  // a small body's all
   Eigen::MatrixXd basis(matrix.rows(), steps);
   Eigen::VectorXd diagonal(steps), offDiagonal(steps);
   basis.col(0) = start.normalized();

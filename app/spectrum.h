@@ -43,7 +43,8 @@ std::optional<AboveShift> eigenpairsAbove(const SparseMatrix& matrix, double shi
 std::optional<Eigenpairs> eigenpairsNear(const SparseMatrix& matrix, double shift, int count);
 
 // The Ritz pairs of `matrix` on the Krylov space of `start` of dimension `steps` (Lanczos,
-// reorthogonalised in full, no restart): `steps` values (fewer when the space is invariant) and
+// reorthogonalised in full, no restart): `steps` values (fewer when the space is invariant, or
+// has fewer dimensions than `steps`) and
 // unit vectors, and the residual |matrix y - value y| of each (matrix's units). Those at the ends
 // of the spectrum converge first; a Ritz vector inside it is a mixture of the eigenvectors near
 // its value, weighted as `start` weights them.

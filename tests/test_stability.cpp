@@ -407,3 +407,50 @@ TEST(CheckCommand, TextJsonAndMap) {
 
 }  // namespace
 }  // namespace jello
+
+namespace jello {
+namespace {
+
+// A body of 8 points (24 unknowns: fewer than Lanczos can be asked for) goes through --check,
+// its map and a diverging run's diagnosis; before, each failed with Spectra's own words.
+TEST(SmallAndWildStates, AnEightPointBodyIsAnalysedAndItsDivergenceDiagnosed) {
+  const std::string dir = test::makeTempDir(), scene = dir + "/eight.toml";
+  const std::string body =
+      "n = 10\ngravity = [0.0, 0.0, -9.81]\n\n[jelly]\nshape = \"lattice\"\nsize = [2, 2, 2]\n"
+      "spacing = 0.2\ntotal_mass = 1\nstiffness = 100\ndamping = 0.5\n";
+  test::writeText(scene, "dt = 0.001\n" + body);
+  test::CommandResult check = test::runJelloArgs({"--check", scene});
+  EXPECT_EQ(check.status, 0) << check.err;
+  // The dense solve's figures: the fastest mode 80 rad/s; RK4's limit 0.0368 s, near its
+  // undamped bound on the imaginary axis, 2.83 / 80 = 0.0354 s (damping moves it out).
+  EXPECT_NE(check.out.find("highest frequency 80 rad/s"), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("RK4          0.0368"), std::string::npos) << check.out;
+  test::CommandResult map = test::runJelloArgs({"--check", "--map", dir + "/map", scene});
+  EXPECT_EQ(map.status, 0) << map.err;
+  test::writeText(scene, "dt = 0.5\n" + body);
+  test::CommandResult diverged = test::runJelloArgs({"--headless", "--steps", "50", scene});
+  EXPECT_EQ(diverged.status, 1) << diverged.err;
+  EXPECT_NE(diverged.err.find("exceeds RK4's stable limit 0.0285"), std::string::npos)
+      << diverged.err;
+  for (const auto& text : {check.err, map.err, diverged.err})
+    EXPECT_EQ(text.find("nev must satisfy"), std::string::npos) << text;
+  test::removeTree(dir);
+}
+
+// A point thrown at 1e100 m/s diverges at once: the diagnosis says so (exit 1), never the
+// eigensolver's own failure ("TridiagEigen: eigen decomposition failed", exit 2).
+TEST(SmallAndWildStates, AVelocityOf1e100IsADivergenceNotAnEigensolverFailure) {
+  const std::string dir = test::makeTempDir(), world = dir + "/wild.w";
+  WorldFile file = readWorldFile(test::dataPath("rotate.w"));
+  file.state.v()[coordIndex(0, 0)] = 1e100;
+  test::writeText(world, formatWorld(file.world, file.state));
+  test::CommandResult r = test::runJelloArgs({"--headless", "--steps", "20", world});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("diverged at step 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no step will do"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("Eigen"), std::string::npos) << r.err;
+  test::removeTree(dir);
+}
+
+}  // namespace
+}  // namespace jello
