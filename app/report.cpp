@@ -185,10 +185,26 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
              gnuplotString(legendLabel(integrator, fittedOrder(rows, integrator, floor)));
   }
   gp << "$OWN << EOD\n";
+  int ownPoints = 0;
   for (const ReportRow& r : rows)
-    if (r.worldsOwn && !r.diverged && r.rmsError > 0)
+    if (r.worldsOwn && !r.diverged && r.rmsError > 0) {
       gp << r.cpuSeconds << " " << r.rmsError << "\n";
+      ++ownPoints;
+    }
   gp << "EOD\n";
+  if (ownPoints > 0)
+    plots +=
+        (plots.empty() ? "" : ", ") +
+        std::string("$OWN using 1:2 with points pt 6 ps 3 lc 'black' title \"the world's own\"");
+  // Every error 0 (a body at rest under no force: every run exact to the bit): no point has a
+  // place on a log scale, so the axes are given and the picture says why it is empty.
+  const bool empty = plots.empty();
+  if (empty) {
+    gp << "set xrange [1e-6:10]\nset yrange [" << visualTolerance * 1e-6 << ":"
+       << visualTolerance * 10 << "]\n"
+       << "set label 1 'every run ended exactly where the reference did (error 0 m): nothing to "
+          "draw on a log scale' at graph 0.5, 0.5 center\n";
+  }
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"
      << "set output png\n"
@@ -198,9 +214,8 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
      << "set xlabel 'CPU time of the run (s)'\n"
      << "set ylabel 'RMS position error at the end (m)'\n"
      << "set grid\nset key outside right top\n"
-     << "plot " << plots << (plots.empty() ? "" : ", ")
-     << "$OWN using 1:2 with points pt 6 ps 3 lc 'black' title \"the world's own\", "
-     << visualTolerance << " with lines dt 2 lc 'gray40' title 'visual tolerance'\n";
+     << "plot " << plots << (empty ? "" : ", ") << visualTolerance
+     << " with lines dt 2 lc 'gray40' title 'visual tolerance'\n";
   return gp.str();
 }
 

@@ -180,6 +180,27 @@ TEST(Report, AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep)
   test::removeTree(dir);
 }
 
+// A body at rest under no force: every run is exact to the bit, every error 0. The report is
+// written whole, its picture too (axes given, a line saying why it is empty): before, gnuplot
+// found no point for its log scale and the run failed (exit 2).
+TEST(Report, ErrorsThatAreAllZeroStillMakeTheWholeReport) {
+  const std::string dir = test::makeTempDir(), scene = dir + "/rest.toml";
+  test::writeText(scene,
+                  "dt = 0.001\nn = 10\n\n[jelly]\nshape = \"lattice\"\nsize = [2, 2, 2]\n"
+                  "spacing = 0.2\ntotal_mass = 1\nstiffness = 100\ndamping = 0.5\n");
+  test::CommandResult r = test::runJelloArgs({"--report", dir + "/rep", "--time", "0.05", scene});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(test::readText(dir + "/rep/report.md").find("error 0 m"), std::string::npos);
+  EXPECT_NE(test::readText(dir + "/rep/report.gp").find("nothing to draw on a log scale"),
+            std::string::npos);
+  if (test::haveGnuplot()) {
+    struct stat info {};
+    EXPECT_EQ(::stat((dir + "/rep/report.png").c_str(), &info), 0);
+    EXPECT_GT(info.st_size, 1000);
+  }
+  test::removeTree(dir);
+}
+
 TEST(ReportFunctions, FittedOrderOfAnExactPowerLaw) {
   std::vector<ReportRow> rows;
   for (double dt : {1e-3, 5e-4, 2.5e-4}) {
