@@ -243,8 +243,9 @@ void writeFileWhole(const std::string& path, std::string_view bytes, Existing ex
   writeFileWhole(
       path,
       [bytes](std::FILE* file) {
+        // Not an OutputError: the caller above puts the file's name before it.
         if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size())
-          throw OutputError(std::string("cannot write: ") + std::strerror(errno));
+          throw std::runtime_error(std::string("cannot write: ") + std::strerror(errno));
       },
       existing);
 }

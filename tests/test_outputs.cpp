@@ -226,6 +226,23 @@ TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
   test::removeTree(dir);
 }
 
+// A mesh that does not fit (PLY and OBJ alike) is named in the one line, and leaves no file.
+TEST(FullDisk, AnExportedMeshThatDoesNotFitIsNamedAndLeavesNoFile) {
+  for (const std::string format : {"ply", "obj"}) {
+    std::string dir = test::makeTempDir();
+    test::CommandResult r = test::runJelloArgs(
+        {"--headless", "--steps", "1", "--export", dir + "/m", "--export-format", format,
+         test::dataPath("still.w")},
+        {"", 0, smallFiles});
+    EXPECT_EQ(r.status, 2) << format;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(dir + "/m/0000." + format + ": cannot write"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(entries(dir + "/m"), std::vector<std::string>{}) << format;
+    test::removeTree(dir);
+  }
+}
+
 TEST(FullDisk, AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile) {
   if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
   std::string dir = test::makeTempDir();
