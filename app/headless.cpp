@@ -175,6 +175,9 @@ std::string frameLimitNote(const FrameObserver& frames, double savedUntil, doubl
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
   if (sameFile(dumpPath, worldPath))
     return "is the world being run; it is never replaced, name another file";
+  if (heldByAnotherRun(folderOf(dumpPath)))
+    return "its folder is in use by another run (its frames or meshes); wait for it, or name a "
+           "file elsewhere";
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 

@@ -70,12 +70,6 @@ extern "C" void removeTemporariesAndDie(int signal) {
   std::raise(signal);
 }
 
-std::string folderOf(const std::string& path) {
-  std::size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
-
 std::string withError(const std::string& path, const std::string& what, int error) {
   return path + ": " + what + (error ? std::string(": ") + std::strerror(error) : "");
 }
@@ -282,6 +276,20 @@ FolderClaim claimFolder(const std::string& dir) {
     throw OutputError(dir + ": in use by another run; wait for it, or choose another folder");
   if (::access(dir.c_str(), W_OK) != 0) throw OutputError(withError(dir, "cannot write", errno));
   return claim;
+}
+
+std::string folderOf(const std::string& path) {
+  std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+bool heldByAnotherRun(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);  // and with it the lock taken to ask
+  return held;
 }
 
 std::string makeNewFolder(const std::string& parent, const std::string& stem) {

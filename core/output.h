@@ -87,6 +87,13 @@ class FolderClaim {
 // made or written, or when another run holds it.
 FolderClaim claimFolder(const std::string& dir);
 
+// The folder a file's path lies in: "." for a bare name, "/" for a file at the root.
+std::string folderOf(const std::string& path);
+
+// Whether another run holds the folder `dir` (claimFolder) now. A run asks before it writes a
+// file into a folder it did not claim (--dump into another run's frames).
+bool heldByAnotherRun(const std::string& dir);
+
 // Makes a new folder under `parent` (made too when missing) and returns its name: parent/STEM-001,
 // parent/STEM-002, ..., the first that did not exist. mkdir decides, so two runs never get the
 // same folder. Throws OutputError.

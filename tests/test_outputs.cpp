@@ -230,14 +230,13 @@ TEST(FullDisk, ADumpThatDoesNotFitLeavesNoFileAndExitsTwo) {
 TEST(FullDisk, AnExportedMeshThatDoesNotFitIsNamedAndLeavesNoFile) {
   for (const std::string format : {"ply", "obj"}) {
     std::string dir = test::makeTempDir();
-    test::CommandResult r = test::runJelloArgs(
-        {"--headless", "--steps", "1", "--export", dir + "/m", "--export-format", format,
-         test::dataPath("still.w")},
-        {"", 0, smallFiles});
+    test::CommandResult r =
+        test::runJelloArgs({"--headless", "--steps", "1", "--export", dir + "/m", "--export-format",
+                            format, test::dataPath("still.w")},
+                           {"", 0, smallFiles});
     EXPECT_EQ(r.status, 2) << format;
     EXPECT_EQ(lines(r.err), 1) << r.err;
-    EXPECT_NE(r.err.find(dir + "/m/0000." + format + ": cannot write"), std::string::npos)
-        << r.err;
+    EXPECT_NE(r.err.find(dir + "/m/0000." + format + ": cannot write"), std::string::npos) << r.err;
     EXPECT_EQ(entries(dir + "/m"), std::vector<std::string>{}) << format;
     test::removeTree(dir);
   }
@@ -352,7 +351,7 @@ TEST(FolderClaims, ASecondClaimOnAFolderIsRefusedUntilTheFirstEnds) {
   test::removeTree(dir.substr(0, dir.rfind('/')));
 }
 
-TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceed) {
+TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceedNorADumpIntoIt) {
   std::string dir = test::makeTempDir();
   const std::string frames = dir + "/f", world = test::dataPath("still.w");
   // The first run is long (200 frames of 1000 steps); the second starts once it has begun.
@@ -366,11 +365,19 @@ TEST(FolderClaims, TwoFrameRunsIntoOneFolderDoNotBothSucceed) {
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
   test::CommandResult second =
       test::runJelloArgs({"--headless", "--steps", "10", "--overwrite", "--frames", frames, world});
+  // Nor may a dump go into the folder the first run holds.
+  test::CommandResult dump =
+      test::runJelloArgs({"--headless", "--steps", "10", "--dump", frames + "/end.w", world});
   ::kill(first, SIGTERM);
   ::waitpid(first, nullptr, 0);
   if (sizeOf(frames + "/0000.jpg") < 0) GTEST_SKIP() << "no frames: pictures are not built here";
   EXPECT_EQ(second.status, 2) << second.err;
   EXPECT_NE(second.err.find("in use by another run"), std::string::npos) << second.err;
+  EXPECT_EQ(dump.status, 2) << dump.err;
+  EXPECT_NE(dump.err.find("--dump " + frames + "/end.w: its folder is in use by another run"),
+            std::string::npos)
+      << dump.err;
+  EXPECT_LT(sizeOf(frames + "/end.w"), 0);
   test::removeTree(dir);
 }
 
