@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "app/runqueue.h"
+#include "app/stability.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
@@ -578,6 +579,8 @@ void measureAll(const Study& s, const std::vector<Integrator>& integrators, cons
 struct Choice {
   const ReportRow* best = nullptr;
   const ReportRow* inWorldFile = nullptr;  // only when best is not worldFileHolds
+  // A cheaper run within the error left out, and why: --check does not call its step stable.
+  std::string leftOut;
 };
 
 // What to recommend: the cheapest setting as accurate as the world's own, and the cheapest
@@ -587,27 +590,54 @@ struct Recommendations {
   Choice asAccurate, looksSame;
 };
 
-Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit) {
-  auto cheapest = [&](bool inWorldFile) {
+// Whether --check calls the row's fixed step stable (the one definition: verdictFor, below the
+// world's stable fraction of the integrator's limit). A run that did not diverge over T can
+// still be marginal: the report recommends only steps --check would keep. The world's own
+// setting is the user's already, and stays.
+// RK45 is swept by its tolerance: its dt is only the cap its error control keeps the step under.
+bool checkCallsStable(const ReportRow& row, const StabilityReport& stability) {
+  return row.worldsOwn || sweepsTolerance(row.integrator) ||
+         verdictFor(row.dt, stability.verdictLimit(row.integrator), stability.stableFraction) ==
+             Verdict::Stable;
+}
+
+// The note on a cheaper run left out of a recommendation, e.g. "MIDPOINT dt=0.0009765625 is
+// cheaper but left out: --check calls it marginal (100% of its limit 0.00098 s)".
+std::string leftOutNote(const ReportRow& row, const StabilityReport& stability) {
+  const double limit = stability.verdictLimit(row.integrator);
+  return std::string(integratorName(row.integrator)) + " dt=" + number(row.dt) +
+         " is cheaper but left out: --check calls it " +
+         verdictName(verdictFor(row.dt, limit, stability.stableFraction)) +
+         textf(" (%.0f%% of its limit %s s; stable is below %.0f%%)", 100 * row.dt / limit,
+               number(limit).c_str(), 100 * stability.stableFraction);
+}
+
+Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit,
+                      const StabilityReport& stability) {
+  auto cheapest = [&](bool inWorldFile, bool stable) {
     const ReportRow* best = nullptr;
     for (const ReportRow& row : rows)
       if (!row.diverged && row.rmsError <= limit && (!inWorldFile || worldFileHolds(row)) &&
+          (!stable || checkCallsStable(row, stability)) &&
           (!best || row.cpuSeconds < best->cpuSeconds))
         best = &row;
     return best;
   };
   Choice choice;
-  choice.best = cheapest(false);
-  if (choice.best && !worldFileHolds(*choice.best)) choice.inWorldFile = cheapest(true);
+  choice.best = cheapest(false, true);
+  if (choice.best && !worldFileHolds(*choice.best)) choice.inWorldFile = cheapest(true, true);
+  const ReportRow* any = cheapest(false, false);
+  if (any && any != choice.best) choice.leftOut = leftOutNote(*any, stability);
   return choice;
 }
 
-Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance) {
+Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance,
+                          const StabilityReport& stability) {
   Recommendations r;
   for (const ReportRow& row : rows)
     if (row.worldsOwn) r.own = &row;
-  if (r.own && !r.own->diverged) r.asAccurate = cheapestWithin(rows, r.own->rmsError);
-  r.looksSame = cheapestWithin(rows, visualTolerance);
+  if (r.own && !r.own->diverged) r.asAccurate = cheapestWithin(rows, r.own->rmsError, stability);
+  r.looksSame = cheapestWithin(rows, visualTolerance, stability);
   return r;
 }
 
@@ -749,6 +779,7 @@ std::string markdownRecommendations(const std::string& worldPath,
     } else {
       markdownAdvice(worldPath, *choice.best, own, md);
     }
+    if (!choice.leftOut.empty()) md << "  - " << choice.leftOut << ".\n";
     if (!choice.best || worldFileHolds(*choice.best)) return;
     md << "  - " << noWorldFileNote() << ". The cheapest setting a world file can hold: ";
     if (!choice.inWorldFile)
@@ -791,12 +822,14 @@ void writeReportFiles(const std::string& worldPath, const ReportOptions& options
 // the command that runs it, and the one that keeps it in a world file.
 void printChoice(const std::string& what, const std::string& worldPath, const Choice& choice,
                  const ReportRow* own) {
+  const std::string leftOut = choice.leftOut.empty() ? "" : "  (" + choice.leftOut + ")\n";
   if (!choice.best) {
-    std::printf("%s: none of the runs\n", what.c_str());
+    std::printf("%s: none of the runs\n%s", what.c_str(), leftOut.c_str());
     return;
   }
   if (choice.best == own) {
-    std::printf("%s: nothing cheaper than the world's own setting\n", what.c_str());
+    std::printf("%s: nothing cheaper than the world's own setting\n%s", what.c_str(),
+                leftOut.c_str());
     return;
   }
   auto print = [&](const ReportRow& row) {
@@ -808,6 +841,7 @@ void printChoice(const std::string& what, const std::string& worldPath, const Ch
   };
   std::printf("%s: %s\n", what.c_str(), advise(worldPath, *choice.best, own).setting.c_str());
   print(*choice.best);
+  std::printf("%s", leftOut.c_str());
   if (worldFileHolds(*choice.best)) return;
   std::printf("  (%s)\n", noWorldFileNote().c_str());
   if (!choice.inWorldFile || choice.inWorldFile == own) {
@@ -875,7 +909,9 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
     if (!rows[i].diverged)
       rows[i].rmsError = rms(measured.ends[i], reference.end, &rows[i].maxError);
   }
-  const Recommendations recommended = recommend(rows, options.visualTolerance);
+  // The stability verdicts of --check, which every recommended step must pass.
+  const StabilityReport stability = analyseStability(world, file.state);
+  const Recommendations recommended = recommend(rows, options.visualTolerance, stability);
   std::vector<OrderCheck> orders;
   for (Integrator integrator : integrators)
     orders.push_back(checkOrder(rows, integrator, reference.error, reference.contacts));

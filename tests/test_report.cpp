@@ -638,3 +638,36 @@ TEST(ReportProgress, LinesFitANarrowTerminal) {
 
 }  // namespace
 }  // namespace jello
+
+namespace jello {
+namespace {
+
+// --report recommends only steps --check calls stable (one definition: below the stable
+// fraction of the integrator's limit). On rotate.w to T = 0.25 s, MIDPOINT at dt = T/256 =
+// 0.0009765625 does not diverge and is the cheapest within 1 cm, but it is 100% of MIDPOINT's
+// limit (0.00098 s), which --check calls marginal: it is named and left out, and what is
+// recommended --check calls stable.
+TEST(Report, RecommendsOnlyStepsThatCheckCallsStable) {
+  const std::string dir = test::makeTempDir(), world = test::dataPath("rotate.w");
+  test::CommandResult r =
+      test::runJelloArgs({"--report", dir + "/rep", "--time", "0.25", "--tolerance", "0.01",
+                          "--integrators", "MIDPOINT", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(MIDPOINT dt=0.000976562 is cheaper but left out: --check calls it "
+                       "marginal (100% of its limit 0.00098034 s; stable is below 80%))"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(test::readText(dir + "/rep/report.md").find("is cheaper but left out"),
+            std::string::npos);
+  for (const std::string& line : linesAfter(r.out, "  run it: ")) {
+    std::vector<std::string> words = shellWords(line);
+    ASSERT_GE(words.size(), 5u) << line;
+    test::CommandResult check =
+        test::runJelloArgs({"--check", "--integrator", words[2], "--dt", words[4], world});
+    EXPECT_NE(check.out.find(": stable ("), std::string::npos) << line << "\n" << check.out;
+  }
+  test::removeTree(dir);
+}
+
+}  // namespace
+}  // namespace jello
