@@ -31,7 +31,7 @@ struct ReportRow {
   bool worldsOwn = false;  // the world's own integrator and dt
 };
 
-// The CSV of the report (README: Error against run time), header included. Its tolerance
+// The CSV of the report (docs/running.md: Error against run time), header included. Its tolerance
 // column is RK45's rtol.
 std::string reportCsv(const std::vector<ReportRow>& rows);
 

@@ -1,4 +1,4 @@
-// The code's layers (README, Code): every #include points down them, and Eigen, Spectra and GL
+// The code's layers (docs/design.md): every #include points down them, and Eigen, Spectra and GL
 // appear only where they are needed.
 //
 //   core/ < world.h, vec3.h, input.cpp, physics.*, forces/, scene/ < solver/ < app/, grader/
