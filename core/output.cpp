@@ -7,6 +7,7 @@
 #include <limits.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -55,7 +56,14 @@ constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP};
 struct sigaction previousActions[3];
 bool installed = false;
 
+constexpr int kChildSlots = 8;
+std::array<std::atomic<int>, kChildSlots> children{};
+
 extern "C" void removeTemporariesAndDie(int signal) {
+  for (std::atomic<int>& child : children) {
+    const int pid = child.load();
+    if (pid > 0 && ::kill(pid, SIGKILL) == 0) ::waitpid(pid, nullptr, 0);
+  }
   for (TemporarySlot& slot : temporaries)
     if (slot.used.load()) ::unlink(slot.path);
   for (int n = 0; n < 3; ++n) {
@@ -317,6 +325,20 @@ FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>&
     if (!check.writable()) throw OutputError(path + ": " + check.why);
   }
   return claim;
+}
+
+void rememberChild(int pid) {
+  for (std::atomic<int>& child : children) {
+    int none = 0;
+    if (child.compare_exchange_strong(none, pid)) return;
+  }
+}
+
+void forgetChild(int pid) {
+  for (std::atomic<int>& child : children) {
+    int ours = pid;
+    child.compare_exchange_strong(ours, 0);
+  }
 }
 
 void installSignalCleanup() {

@@ -105,6 +105,12 @@ std::string makeNewFolder(const std::string& parent, const std::string& stem);
 FolderClaim claimOutputs(const std::string& dir, const std::vector<std::string>& names,
                          Existing existing);
 
+// A child program writing into a temporary file (gnuplot drawing a picture): killed, and waited
+// for, when a signal stops this program, before the temporary files are removed (else it would
+// write its file again after). Forget it once it has ended.
+void rememberChild(int pid);
+void forgetChild(int pid);
+
 // Removes the temporary files of writes under way when SIGINT, SIGTERM or SIGHUP arrives, then
 // lets the signal end the program as it would have. Called once by each main, and by the
 // graphics library as it loads (it holds a copy of this file, and of its list, of its own): the

@@ -17,26 +17,49 @@ namespace {
 constexpr int kExecFailed = 127;  // the child's status when gnuplot could not be started
 
 // Runs gnuplot in `dir` with `png` set to `output`; its exit status, or -1 when it could not
-// be started at all.
-int runGnuplot(const std::string& dir, const std::string& script, const std::string& output) {
+// be started at all. *startError: errno of a start that failed (ENOENT: no gnuplot), told by
+// the child through a pipe that closes on exec.
+int runGnuplot(const std::string& dir, const std::string& script, const std::string& output,
+               int* startError) {
   const std::string setOutput = "png='" + output + "'";  // output is our own temporary name
+  int told[2];
+  if (::pipe2(told, O_CLOEXEC) != 0) return -1;
   pid_t child = ::fork();
-  if (child < 0) return -1;
+  if (child < 0) {
+    *startError = errno;
+    ::close(told[0]);
+    ::close(told[1]);
+    return -1;
+  }
   if (child == 0) {
+    ::close(told[0]);
     int quiet = ::open("/dev/null", O_RDWR);
     if (quiet >= 0) {
       ::dup2(quiet, STDIN_FILENO);
       ::dup2(quiet, STDOUT_FILENO);
       ::dup2(quiet, STDERR_FILENO);
     }
-    if (::chdir(dir.c_str()) != 0) ::_exit(kExecFailed);
-    const char* argv[] = {"gnuplot", "-e", setOutput.c_str(), script.c_str(), nullptr};
-    ::execvp(argv[0], const_cast<char* const*>(argv));
+    if (::chdir(dir.c_str()) == 0) {
+      const char* argv[] = {"gnuplot", "-e", setOutput.c_str(), script.c_str(), nullptr};
+      ::execvp(argv[0], const_cast<char* const*>(argv));
+    }
+    const int error = errno;
+    (void)!::write(told[1], &error, sizeof error);
     ::_exit(kExecFailed);
   }
+  rememberChild(child);  // killed with us by a signal: it would write its picture after us
+  ::close(told[1]);
+  *startError = 0;
+  while (::read(told[0], startError, sizeof *startError) < 0 && errno == EINTR) {
+  }
+  ::close(told[0]);
   int status = 0;
   while (::waitpid(child, &status, 0) < 0)
-    if (errno != EINTR) return -1;
+    if (errno != EINTR) {
+      forgetChild(child);
+      return -1;
+    }
+  forgetChild(child);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -67,12 +90,16 @@ std::string drawWithGnuplot(const std::string& dir, const std::string& script,
     return e.what();
   }
   const std::string name = temporary.substr(temporary.find_last_of('/') + 1);
-  const int status = runGnuplot(dir, script, name);
+  int startError = 0;
+  const int status = runGnuplot(dir, script, name, &startError);
   if (status != 0 || !isCompletePng(temporary)) {
     discardTemporary(temporary);
-    return status == kExecFailed ? kGnuplotMissing
-           : status != 0         ? "gnuplot failed"
-                                 : "gnuplot could not write it whole";
+    // Not installed only when there is no gnuplot to start; one that could not start (memory,
+    // processes) is a failure.
+    if (startError == ENOENT) return kGnuplotMissing;
+    if (startError != 0)
+      return std::string("gnuplot could not start: ") + std::strerror(startError);
+    return status != 0 ? "gnuplot failed" : "gnuplot could not write it whole";
   }
   try {
     publishTemporary(temporary, dir + "/" + png, existing);

@@ -580,6 +580,7 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
         std::string notReaching = whyNotReaching(probePath);
         if (!notReaching.empty()) {
           programError = "its whole program built, but " + notReaching;
+          result.log += "--- its whole program, run: " + notReaching + "\n";
           break;
         }
       }
@@ -593,6 +594,10 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
     }
     if (result.built) break;
   }
+  // Nothing built: a whole program that built but never reached the grader says why first
+  // (physics.cpp alone then failed for want of what that program's setup defines).
+  if (!result.built && programError.rfind("its whole program built", 0) == 0)
+    result.diagnosis = programError + "; physics.cpp alone: " + result.diagnosis;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

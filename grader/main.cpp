@@ -12,12 +12,14 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <random>
 #include <sstream>
 #include <thread>
 
+#include "app/cli.h"
 #include "core/output.h"
 #include "forces/term.h"
 #include "grader/build.h"
@@ -126,10 +128,17 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
   if (made) removeIfEmptyOnSignal(dir);
   for (const auto& file : reportFiles(submissions)) {
     fs::path folder = fs::path(dir + "/" + file).parent_path();
+    struct stat info;
+    // A submission's folder in the report is a folder the grader makes or made: never a link
+    // (written through, it would replace the files it points to) or anything else.
+    if (lstat(folder.c_str(), &info) == 0 && !S_ISDIR(info.st_mode))
+      throw std::runtime_error(folder.string() +
+                               ": not a folder (a symbolic link, or a file); the report writes "
+                               "into folders of its own: move it away, or choose another -o");
     if (!fs::exists(folder)) removeIfEmptyOnSignal(folder.string());
     fs::create_directories(folder);
     std::string why = whyNotWritable(dir + "/" + file, existing);
-    if (!why.empty()) throw std::runtime_error(why);
+    if (!why.empty()) throw std::runtime_error(dir + "/" + file + ": " + why);
   }
   Scratch work;  // the built programs, trusted: never shown to a sandbox but by copy
   jobs = std::max(1, std::min(jobs, static_cast<int>(submissions.size())));
@@ -215,23 +224,24 @@ struct Options {
 // Parses the command line into `o`; an exit status when it is done (help, or a usage error).
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app{
-      "grade: builds students' jello physics.cpp (the course API) and grades each check,\n"
-      "every submission in a sandbox. README, \"Grading\"; docs/grading.md."};
+      "grade: builds each student's jello program as written (or its physics.cpp alone) and\n"
+      "grades each check, every submission in a sandbox. README, \"Grading\"; docs/grading.md.",
+      "grade"};
   app.add_option("SUBMISSION", o.paths, "a folder, .zip, .tar.gz or .tgz holding physics.cpp");
   app.add_option("-o,--output", o.dir, "the report's folder (default grading/)");
   app.add_flag("--overwrite", o.overwrite, "replace an earlier report in that folder");
-  app.add_option("--seed", o.seed, "the seed of the unseen worlds (default: a new one, printed)");
+  app.add_option("--seed", o.seed, "the seed of the unseen worlds (default: a new one, printed)")
+      ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
   app.add_option("--checks", o.checkList, "only these checks (and builds), e.g. --checks rest,rk4");
   app.add_option("-j,--jobs", o.jobs, "submissions graded at once (default: the cores)")
-      ->check(CLI::Range(1, 256));
+      ->transform(wholeNumber(1, 256));
   app.add_flag("--ctest", o.ctest, "write a CTest file into the report folder instead of grading");
   app.add_option("--one", o.one, "(for the CTest file) run one check")->group("");
-  app.add_option("--item", o.item, "(for the CTest file) of this submission")->group("");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  app.add_option("--item", o.item, "(for the CTest file) of this submission")
+      ->group("")
+      ->transform(wholeNumber(0, 100000));
+  int status = 0;
+  if (!parseCommandLine(app, argc, argv, &status)) return status;  // one line, or --help
   return std::nullopt;
 }
 

@@ -130,9 +130,9 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
   if (run.sandbox.signal == 9 && !run.sandbox.timedOut) how = "was killed (out of memory?)";
   if (!readWord(replies, at, "jello-probe") || !readWord(replies, at, ".")) {
-    run.failure = "the program never reached the grader: its main() " +
-                  (run.sandbox.exitedWith(0) ? std::string("returned") : how) +
-                  " before calling glutMainLoop()";
+    run.failure = "the program never reached the grader: it " +
+                  (run.sandbox.exitedWith(0) ? std::string("ended") : how) +
+                  " before its main() called glutMainLoop()";
     return run;
   }
   const auto& kinds = script.answering();

@@ -203,6 +203,28 @@ TEST(GraderIntegrity, ArchivesAndLinksReachNothingBeyondTheStudentsOwnFiles) {
   auto grades = readSummary(report);
   EXPECT_EQ(grades["bomb"]["builds"], "FAIL");
   EXPECT_NE(readText(report + "/bomb/report.md").find("hard links counted"), std::string::npos);
+  // A submission's folder in the report that is a link (to a folder of someone else's files) is
+  // refused by name before anything is written through it.
+  fs::create_directories(root + "/elsewhere");
+  writeText(root + "/elsewhere/report.md", "precious\n");
+  fs::remove_all(report + "/bomb");
+  fs::create_directory_symlink(root + "/elsewhere", report + "/bomb");
+  CommandResult through =
+      grade({"-o", report, "--overwrite", "--checks", "rest", root + "/bomb.tar.gz"});
+  EXPECT_EQ(through.status, 2);
+  EXPECT_NE(through.err.find(report + "/bomb: not a folder (a symbolic link"), std::string::npos)
+      << through.err;
+  EXPECT_EQ(readText(root + "/elsewhere/report.md"), "precious\n");
+  fs::remove(report + "/bomb");
+  // A report file that may not be replaced is named.
+  const std::string fresh = root + "/fresh";
+  fs::create_directories(fresh + "/other");
+  writeText(fresh + "/other/report.md", "mine\n");
+  fs::copy(kSubmissions + "/correct", root + "/other");
+  CommandResult named = grade({"-o", fresh, "--checks", "rest", root + "/other"});
+  EXPECT_EQ(named.status, 2);
+  EXPECT_NE(named.err.find(fresh + "/other/report.md: already exists"), std::string::npos)
+      << named.err;
   if (asRoot) {
     EXPECT_EQ(grades["student"]["builds"], "FAIL");  // secret.h was not copied
     EXPECT_EQ(everything(report).find("ROOT-ONLY-SECRET"), std::string::npos);

@@ -322,6 +322,45 @@ TEST(Signals, AFrameBeingWrittenLeavesNoTemporaryFileBehind) {
   EXPECT_EQ(leftovers, 0) << "in " << runs << " runs";
 }
 
+// Stopped while gnuplot draws, --report leaves no temporary picture behind: gnuplot is killed
+// with it (it wrote its .jello-XXXXXX.png a second later, after the folder's claim had ended).
+TEST(Signals, AReportStoppedWhileGnuplotDrawsLeavesNoTemporaryPicture) {
+  if (!test::haveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  int leftovers = 0;
+  for (int run = 0; run < 3; ++run) {
+    std::string dir = test::makeTempDir(), rep = dir + "/rep";
+    pid_t child = ::fork();
+    if (child == 0) {
+      int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+      ::execl(JELLO_BINARY, JELLO_BINARY, "--report", rep.c_str(), "--time", "0.01",
+              "--integrators", "RK4", test::dataPath("jello.w").c_str(),
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // Until its child gnuplot runs.
+    bool drawing = false;
+    for (int i = 0; i < 20000 && !drawing; ++i) {
+      for (const std::string& pid : entries("/proc")) {
+        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::string stat = test::readText("/proc/" + pid + "/stat");
+        std::size_t name = stat.find(") ");
+        if (stat.find("(gnuplot)") == std::string::npos || name == std::string::npos) continue;
+        drawing |= std::atoi(stat.c_str() + name + 4) == child;  // "pid (comm) S ppid"
+      }
+      if (!drawing) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ::kill(child, SIGTERM);
+    ::waitpid(child, nullptr, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // a gnuplot left would write
+    for (const std::string& name : entries(rep)) leftovers += name.rfind(".jello-", 0) == 0;
+    test::removeTree(dir);
+    if (!drawing) GTEST_SKIP() << "gnuplot was never seen running";
+  }
+  EXPECT_EQ(leftovers, 0);
+}
+
 // ---- Item 9: two runs cannot share a folder ---------------------------------------------------
 
 TEST(FolderClaims, ASecondClaimOnAFolderIsRefusedUntilTheFirstEnds) {
