@@ -73,10 +73,10 @@ void obstacleJacobian(const Obstacle& obstacle, Vec3 p, Vec3 v, Block3* dFdp, Bl
 // The viewer). The regularised friction has no true sticking: a held point creeps (above). Up to
 // about 3 eps the force still rises steeply with the slip (0.7 mu N at eps, 0.9 mu N at 3 eps for
 // the scenes' mu), so a load it can hold settles at a steady creep below that: "sticking" (the
-// scenes' slope holds its jelly, its bottom points slipping at up to 1.8 eps). Faster, the force is at its limit and the
-// point slides. "None": out of contact, in contact without a push (leaving faster than the
-// spring pushes), or against an obstacle without friction. Ordered: a point that slides against
-// any obstacle slides (strongerState).
+// scenes' slope holds its jelly, its bottom points slipping at up to 1.8 eps). Faster, the force is
+// at its limit and the point slides. "None": out of contact, in contact without a push (leaving
+// faster than the spring pushes), or against an obstacle without friction. Ordered: a point that
+// slides against any obstacle slides (strongerState).
 enum class FrictionState { None, Sticking, Sliding };
 constexpr double kStickingSpeedRatio = 3;
 FrictionState frictionState(const Obstacle& obstacle, Vec3 p, Vec3 v);
