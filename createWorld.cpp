@@ -512,6 +512,14 @@ int exitStatus(const jello::Outcome& outcome) {
 }  // namespace
 
 // Every exception ends here as one line and exit status 2.
+// `status`, unless standard output could not be written (--describe, --help into a full disk):
+// then that line, and 2.
+static int writtenOut(int status) {
+  const std::string unwritten = jello::unwrittenStandardOutput();
+  if (unwritten.empty()) return status;
+  return exitStatus(jello::failed(unwritten));
+}
+
 int main(int argc, char** argv) {
   jello::setProgramName("createWorld");
   jello::installSignalCleanup();
@@ -529,8 +537,8 @@ int main(int argc, char** argv) {
     addFieldOptions(app, options);
     addStateOptions(app, options);
     int status = 0;
-    if (!jello::parseCommandLine(app, argc, argv, &status)) return status;
-    return exitStatus(run(options, app));
+    if (!jello::parseCommandLine(app, argc, argv, &status)) return writtenOut(status);
+    return writtenOut(exitStatus(run(options, app)));
   } catch (const std::bad_alloc&) {
     return exitStatus(jello::failed("not enough memory for this world"));
   } catch (const std::exception& e) {

@@ -159,8 +159,8 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     jello::printError(e.what());
   }
-  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-    jello::printError(std::string("cannot write to standard output: ") + std::strerror(errno));
+  if (const std::string unwritten = jello::unwrittenStandardOutput(); !unwritten.empty()) {
+    jello::printError(unwritten);
     if (status == jello::kExitOk) status = jello::kExitBadInput;
   }
   return status;

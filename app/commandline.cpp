@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "app/cli.h"
 #include "app/export.h"
@@ -21,28 +22,50 @@ namespace {
 
 constexpr const char* kVersion = "jello 0.1.0";
 
-// "WxH" within the renderer's limits.
+// `text` split at each `separator`.
+std::vector<std::string> splitAt(const std::string& text, char separator) {
+  std::vector<std::string> parts(1);
+  for (char c : text) {
+    if (c == separator)
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  }
+  return parts;
+}
+
+// "WxH" within the renderer's limits, each a whole number in the world files' grammar (no
+// sign, no hexadecimal, no blank).
 bool parseSize(const std::string& text, int* width, int* height) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+  std::vector<std::string> parts = splitAt(text, 'x');
+  if (parts.size() != 2) parts = splitAt(text, 'X');
+  long long w = 0, h = 0;
+  std::string why;
+  if (parts.size() != 2 || parts[0].find_first_not_of("0123456789") != std::string::npos ||
+      parts[1].find_first_not_of("0123456789") != std::string::npos ||
+      !parseWorldInteger(parts[0], &w, &why) || !parseWorldInteger(parts[1], &h, &why))
     return false;
   if (w < kMinPictureSize || h < kMinPictureSize || w > kMaxPictureSize || h > kMaxPictureSize)
     return false;
-  *width = w;
-  *height = h;
+  *width = static_cast<int>(w);
+  *height = static_cast<int>(h);
   return true;
 }
 
-// "AZ,EL" or "AZ,EL,DIST": degrees, degrees, metres, finite and within the camera's range.
+// "AZ,EL" or "AZ,EL,DIST": degrees, degrees, metres, numbers in the world files' grammar,
+// within the camera's range.
 bool parseCamera(const std::string& text, CameraRequest* camera) {
   CameraRequest c;
-  char extra = 0;
-  const int read =
-      std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &c.azimuth, &c.elevation, &c.distance, &extra);
-  if (read != 2 && read != 3) return false;
-  if (!std::isfinite(c.azimuth) || !(std::fabs(c.elevation) <= kMostCameraElevation)) return false;
-  if (read == 3 && !(c.distance >= kMinCameraDistance && c.distance <= kMaxCameraDistance))
+  const std::vector<std::string> parts = splitAt(text, ',');
+  double* values[3] = {&c.azimuth, &c.elevation, &c.distance};
+  std::string why;
+  if (parts.size() != 2 && parts.size() != 3) return false;
+  for (std::size_t n = 0; n < parts.size(); ++n) {
+    if (parts[n].empty() || parts[n][0] == '+' || !parseWorldNumber(parts[n], values[n], &why))
+      return false;
+  }
+  if (!(std::fabs(c.elevation) <= kMostCameraElevation)) return false;
+  if (parts.size() == 3 && !(c.distance >= kMinCameraDistance && c.distance <= kMaxCameraDistance))
     return false;
   *camera = c;
   return true;

@@ -415,6 +415,15 @@ const char* programName = "jello";
 
 void setProgramName(const char* name) { programName = name; }
 
+std::string unwrittenStandardOutput() {
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;  // the flush's own, never an earlier call's
+  if (flushed && !std::ferror(stdout)) return "";
+  return std::string("cannot write to standard output") +
+         (!flushed && error != 0 ? std::string(": ") + std::strerror(error) : "");
+}
+
 void printError(std::string_view message) {
   std::fprintf(stderr, "%s: %s\n", programName, printable(message).c_str());
 }

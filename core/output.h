@@ -124,6 +124,10 @@ bool sameFile(const std::string& a, const std::string& b);
 // \xNN (a backslash as \\): safe to print in one line and to put in JSON or a script's string.
 std::string printable(std::string_view text);
 
+// After a program's last output: "" when all of its standard output was written, otherwise the
+// line saying it was not (a closed or full standard output is a failure, not a success).
+std::string unwrittenStandardOutput();
+
 // The name errors begin with ("jello", "createWorld"); set once by main.
 void setProgramName(const char* name);
 // Prints "NAME: message" on stderr as exactly one line (the message through printable).

@@ -578,6 +578,35 @@ TEST(StandardOutput, AResultThatCannotBeWrittenIsAFailure) {
                                          test::dataPath("still.w") + "' >/dev/full");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("cannot write to standard output"), std::string::npos) << r.err;
+  // createWorld's answers too (it exited 0 with --describe into a full disk).
+  for (const std::string& args :
+       {" --describe '" + test::dataPath("still.w") + "'", std::string(" --help")}) {
+    test::CommandResult c = test::runShell(std::string(JELLO_CREATE_WORLD) + args + " >/dev/full");
+    EXPECT_EQ(c.status, 2) << args;
+    EXPECT_NE(c.err.find("createWorld: cannot write to standard output: No space left on device"),
+              std::string::npos)
+        << c.err;
+  }
+}
+
+// --camera and --size read their numbers in the world files' grammar: no hexadecimal, no sign
+// where none belongs, no blank (each was accepted).
+TEST(CommandLineNumbers, CameraAndSizeTakeOnlyTheWorldFilesNumbers) {
+  for (const char* camera : {"0x1e,0x1e", "+30,30", "30,30,0x6", " 30,30", "30,,30", "30"}) {
+    JelloCommand c;
+    EXPECT_EQ(parse({"--headless", "--frames", "f", "--camera", camera}, &c), kExitBadInput)
+        << camera;
+  }
+  for (const char* size : {"+16x16", "16x+16", " 16x16", "0x10x16", "16x16x16", "16x"}) {
+    JelloCommand c;
+    EXPECT_EQ(parse({"--headless", "--frames", "f", "--size", size}, &c), kExitBadInput) << size;
+  }
+  JelloCommand c;
+  ASSERT_EQ(
+      parse({"--headless", "--frames", "f", "--camera", "-90,8,3.5", "--size", "320X240"}, &c),
+      kGoOn);
+  EXPECT_EQ(c.pictures.width, 320);
+  EXPECT_EQ(c.pictures.camera->azimuth, -90);
 }
 
 }  // namespace
