@@ -3,6 +3,7 @@
 #include "app/commandline.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -225,13 +226,17 @@ void addAnalysisOptions(CLI::App& app, JelloCommand* c, Given* g) {
 }
 
 // The integrators of --integrators, comma-separated.
+// Each at most once: a name given twice would be studied twice (RK4 given 1000 times ran on).
 int readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
+  if (list.empty()) return refuse("--integrators: an empty list (leave the option out for all)");
   std::stringstream names(list);
   for (std::string name; std::getline(names, name, ',');) {
     Integrator chosen;
     if (!parseIntegratorName(name, &chosen))
       return refuse("--integrators: unknown integrator '" + name + "', expected " +
                     integratorNameList());
+    if (std::find(out->begin(), out->end(), chosen) != out->end())
+      return refuse("--integrators: " + std::string(integratorName(chosen)) + " given twice");
     out->push_back(chosen);
   }
   return kGoOn;
@@ -255,6 +260,16 @@ int chooseMode(const Given& g, JelloCommand* c) {
     return refuse(
         "--export goes with a run (headless or the window), not with --check, --report "
         "or --bench");
+  // Each analysis writes what it names, nothing else: an option that would be ignored is
+  // refused (--check --dump F, --bench --report D, --report --dump F ran and wrote nothing).
+  if (*g.dumpOption && analysis)
+    return refuse(
+        "--dump goes with a run (headless or the window), not with --check, --report "
+        "or --bench");
+  if (*g.framesOption && (*g.checkOption || *g.benchOption))
+    return refuse("--frames goes with a run (headless or the window), not with --check or --bench");
+  if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) > 1)
+    return refuse("--check, --report and --bench are each a command of its own: give one");
   if (*g.benchOption)
     c->mode = JelloCommand::Mode::Bench;
   else if (*g.checkOption)
@@ -266,7 +281,8 @@ int chooseMode(const Given& g, JelloCommand* c) {
       return refuse("--report runs to --time T (default 1 s); it takes no --steps or --frames");
     if (*g.timeOption) c->report.time = g.time;
     c->report.overwrite = c->pictures.overwrite;
-    return readIntegratorList(g.integrators, &c->report.integrators);
+    return *g.integratorsOption ? readIntegratorList(g.integrators, &c->report.integrators)
+                                : kGoOn;  // none given: all
   }
   if (c->mode == JelloCommand::Mode::Map && *g.timeOption) c->mapTime = g.time;
   return kGoOn;

@@ -550,6 +550,26 @@ TEST(CommandLine, OptionsThatNeedAnotherAreRefusedAlone) {
   EXPECT_EQ(c.mode, JelloCommand::Mode::Check);
 }
 
+// An option the command would ignore is refused, not run past (each ran and wrote nothing);
+// --integrators names each integrator once.
+TEST(CommandLine, OptionsACommandWouldIgnoreAreRefused) {
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"--check", "--dump", "x.w"},
+                                             {"--check", "--report", "r"},
+                                             {"--check", "--frames", "f"},
+                                             {"--bench", "--report", "r"},
+                                             {"--bench", "--frames", "f"},
+                                             {"--report", "r", "--dump", "x.w"},
+                                             {"--report", "r", "--integrators", ""},
+                                             {"--report", "r", "--integrators", "RK4,rk4"}}) {
+    JelloCommand c;
+    EXPECT_EQ(parse(args, &c), kExitBadInput) << args[0] << " " << args[1];
+  }
+  JelloCommand c;
+  ASSERT_EQ(parse({"--report", "r", "--integrators", "RK4,EULER"}, &c), kGoOn);
+  EXPECT_EQ(c.report.integrators.size(), 2u);
+}
+
 TEST(DefaultRun, AWorldWhoseNMakesTheDefaultRunEndlessIsRefusedWithWhatToDo) {
   test::CommandResult r =
       test::runJelloArgs({"--headless", "--n", "2147483647", test::dataPath("still.w")});
