@@ -889,6 +889,8 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   // Claim the folder and check every file before the long work, not after it.
   FolderClaim claim;
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
+  struct stat before {};
+  const bool made = ::stat(options.dir.c_str(), &before) != 0;  // removed again if left empty
   try {
     claim =
         claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);
@@ -901,9 +903,11 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   Measured measured;
   measureAll(study, integrators, world, runOptions.tolerances, &measured);
   const Reference& reference = measured.reference;
-  if (reference.diverged)
+  if (reference.diverged) {
+    if (made) ::rmdir(options.dir.c_str());  // only when empty: the folder this run made
     return diverged("--report: the reference run (RK4 at dt=" + number(reference.step) +
                     ") diverged; no report");
+  }
   std::vector<ReportRow>& rows = measured.rows;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (!rows[i].diverged)

@@ -164,9 +164,10 @@ Tree readTree(const fs::path& physics) {
     }
     if (!kCompiledExtensions.count(extension) || relative == kProbeName) continue;
     if (!plainPath(relative)) {
-      tree.notes.push_back(
-          printable(relative) +
-          ": left out (a name of other characters than letters, digits, '.', '_' and '-')");
+      tree.notes.push_back(printable(relative) +
+                           ": left out (a name the compiler could read as an option: one that "
+                           "starts with '-', or holds other characters than letters, digits, "
+                           "'.', '_' and '-')");
       continue;
     }
     tree.sources.push_back(relative);

@@ -642,6 +642,27 @@ TEST(ReportProgress, LinesFitANarrowTerminal) {
 namespace jello {
 namespace {
 
+// A report whose reference run diverges (a point thrown at 1e20 m/s) says so (exit 1) and
+// leaves no empty report folder behind; a folder that was there stays.
+TEST(Report, AReferenceThatDivergesLeavesNoEmptyFolder) {
+  const std::string dir = test::makeTempDir(), world = dir + "/wild.w";
+  WorldFile file = readWorldFile(test::dataPath("rotate.w"));
+  file.state.v()[0] = 1e20;
+  test::writeText(world, formatWorld(file.world, file.state));
+  test::CommandResult r = test::runJelloArgs(
+      {"--report", dir + "/rep", "--time", "0.01", "--integrators", "EULER", world});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("the reference run (RK4 at dt="), std::string::npos) << r.err;
+  struct stat info {};
+  EXPECT_NE(::stat((dir + "/rep").c_str(), &info), 0) << "an empty folder left";
+  ASSERT_EQ(::mkdir((dir + "/mine").c_str(), 0755), 0);
+  r = test::runJelloArgs(
+      {"--report", dir + "/mine", "--time", "0.01", "--integrators", "EULER", world});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(::stat((dir + "/mine").c_str(), &info), 0) << "the user's own folder stays";
+  test::removeTree(dir);
+}
+
 // --report recommends only steps --check calls stable (one definition: below the stable
 // fraction of the integrator's limit). On rotate.w to T = 0.25 s, MIDPOINT at dt = T/256 =
 // 0.0009765625 does not diverge and is the cheapest within 1 cm, but it is 100% of MIDPOINT's
