@@ -549,12 +549,29 @@ void readObstacles(const Reader& r, const toml::table& root, ContactSpring sprin
   }
 }
 
+// The character at (line, column) of `text`, both from 1, as oneLine shows it; "the end" past it.
+std::string characterAt(std::string_view text, std::size_t line, std::size_t column) {
+  std::size_t at = 0;
+  for (std::size_t l = 1; l < line && at < text.size(); ++l) {
+    const std::size_t end = text.find('\n', at);
+    at = end == std::string_view::npos ? text.size() : end + 1;
+  }
+  at += column > 0 ? column - 1 : 0;
+  if (at >= text.size()) return "the end of the file";
+  return "'" + oneLine(text.substr(at, 1)) + "'";
+}
+
+// A file that is not TOML: said in this program's words where the TOML reader stopped (its own
+// text, from a library, is not shown).
 toml::table parseToml(std::string_view text, const std::string& name) {
   try {
     return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
-    throw WorldFileError(name + ":" + std::to_string(e.source().begin.line) + ": " +
-                         oneLine(e.description()) + " (TOML)");
+    const auto& where = e.source().begin;
+    throw WorldFileError(
+        name + ":" + std::to_string(where.line) + ": not TOML: it cannot be read on from column " +
+        std::to_string(where.column) + ", at " + characterAt(text, where.line, where.column) +
+        " (each line is key = value, [table] or [[list]]: docs/scenes.md)");
   }
 }
 

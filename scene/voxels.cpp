@@ -271,9 +271,15 @@ bool parseObjText(std::string text, const std::string& name, TriangleMesh* mesh,
   // polygons are cut here, for tinyobjloader's cutting skips a quad with an index out of range
   // with only a warning, and reads a larger polygon's vertices before any index is checked.
   if (!tinyobj::LoadObj(&attributes, &shapes, &materials, &warnings, &error, &stream, nullptr,
-                        false, false))
-    return fail(why, name + ": not an OBJ file tinyobjloader reads: " +
-                         error.substr(0, std::min(error.find('\n'), std::size_t(200))));
+                        false, false)) {
+    // The line it stopped at, in this program's words (the reader's own text is not shown).
+    const std::size_t mark = error.find("line ");
+    const std::string line =
+        mark == std::string::npos ? "" : ":" + std::to_string(std::atol(error.c_str() + mark + 5));
+    return fail(why, name + (line == ":0" ? "" : line) +
+                         ": not an OBJ model this program reads (v lines of three numbers, f "
+                         "lines of vertex numbers from 1, or from -1 backwards)");
+  }
   text = std::string();  // its memory back before the mesh is built
   mesh->vertices.reserve(counts.vertices);
   mesh->triangles.reserve(counts.triangles);

@@ -470,9 +470,12 @@ const Malformed kMalformed[] = {
     {"[contact]\nstiffness = -1\n", "test.toml:2: must be at least 0 (contact.stiffness)"},
     {"dt = 1e-3\ndt = 2e-3\n", "test.toml:2:"},
     {"[jelly\n", "test.toml:1:"},
-    // toml++ quotes the character it stopped at, and a quoted key may hold any: both are named
+    // Not TOML: said in this program's words (toml++'s own text is not shown), naming the
+    // character it stopped at, whatever it is; a quoted key may hold any character too
     {"n = n\n",
-     "test.toml:1: Error while parsing floating-point: expected 'nan', saw 'n<newline>'"},
+     "test.toml:1: not TOML: it cannot be read on from column 6, at '<newline>' (each line is "
+     "key = value, [table] or [[list]]: docs/scenes.md)"},
+    {"dt = \"1\u0001", "test.toml:1: not TOML: it cannot be read on from column"},
     {"\"a\\nb\" = 1\n", "test.toml:1: unknown key (a<newline>b)"},
     {"\"a\\u0001\" = 1\n", "test.toml:1: unknown key (a<U+0001>)"},
     // bodies

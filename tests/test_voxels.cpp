@@ -494,8 +494,10 @@ TEST_F(VoxelObjFile, BadFacesAreRefused) {
                 ":4: face index 4294967304 is not a whole number of at most 3000000");
   expectRefused(std::string(kTriangle) + "f 1/4294967297 2 3\n", "face index 4294967297");
   expectRefused(std::string(kTriangle) + "f 1 2 +3\n", "face index +3");
+  // In this program's words, with the line (tinyobjloader's own text is not shown).
   expectRefused(std::string(kTriangle) + "f 1 2 0\n",
-                "not an OBJ file tinyobjloader reads: Failed parse `f' line");
+                ":4: not an OBJ model this program reads (v lines of three numbers, f lines of "
+                "vertex numbers from 1, or from -1 backwards)");
   const char nul[] = "v 0 0 0\0v 1 0 0\nv 0 1 0\nf 1 2 3\n";
   expectRefused(std::string(nul, sizeof nul - 1), "holds a NUL byte");
   // One face of 1,000,003 corners is 1,000,001 triangles, one too many.
