@@ -889,8 +889,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   // Claim the folder and check every file before the long work, not after it.
   FolderClaim claim;
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
-  struct stat before {};
-  const bool made = ::stat(options.dir.c_str(), &before) != 0;  // removed again if left empty
+  const bool made = ::access(options.dir.c_str(), F_OK) != 0;  // removed again if left empty
   try {
     claim =
         claimOutputs(options.dir, {"report.csv", "report.md", "report.gp", "report.png"}, existing);

@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "core/output.h"
+#include "grader/checkkit.h"
 #include "grader/graderfiles.h"
 #include "grader/probe.h"
 #include "grader/sandbox.h"
@@ -340,10 +341,6 @@ std::vector<std::string> writeFlags(const Tree& tree, const Attempt& attempt,
     cc += " -include jello-grader-lenient.h";
     for (const auto& note : matchIncludeCase(work / "build", work / "standins", work / "case"))
       leniencies.push_back(note);
-    leniencies.push_back(
-        "the standard headers another compiler brings in on its own (<string>, <vector>, "
-        "<cmath>, ...) included before each file, and -fpermissive (it was not built without "
-        "them)");
   }
   writeFileWhole((work / "cxxflags").string(), cxx + " " + include + "\n", Existing::Replace);
   writeFileWhole((work / "cflags").string(), cc + " " + include + "\n", Existing::Replace);
@@ -496,21 +493,8 @@ bool copyBuiltProgram(const std::string& from, const std::string& to) {
 // Whether a program built whole reaches the grader: its main() runs its setup and calls
 // glutMainLoop(). "" when it does; otherwise what happened.
 std::string whyNotReaching(const std::string& probePath) {
-  World world;
-  world.integrator = Integrator::RK4;
-  world.dt = 0.0005;
-  world.kElastic = 300;
-  world.dElastic = 0.7;
-  world.kCollision = 1100;
-  world.dCollision = 1.3;
-  world.mass = 1.0 / kNumPoints;
-  world.field.resolution = 2;
-  world.field.forces.assign(3 * 8, 0.0);
-  State rest;
-  for (int q = 0; q < kNumPoints; ++q)
-    store(rest.p(), q, kRestSpacing * Vec3{double(q / 64), double(q / 8 % 8), double(q % 8)});
   Script script;
-  script.world(world, rest);
+  script.world(probeWorld(), restLattice(kCentred));  // the term checks' world, at rest
   script.accelerations();
   ProbeRun run = runProbe(probePath, script);
   std::string failure = run.failure;
@@ -524,9 +508,8 @@ Compiled buildAttempt(const Tree& tree, const Attempt& attempt, const Scratch& s
   layOut(tree, attempt, work);
   leniencies = writeFlags(tree, attempt, work);
   Compiled compiled = compile(scratch, scratch.makeFolder("out"));
-  for (const auto& header : standInsUsed(compiled.log))
-    leniencies.push_back(header + " stood in for (a Windows header)");
-  if (!compiled.built && attempt.lenient) {
+  if (!attempt.lenient) return compiled;
+  if (!compiled.built) {
     std::vector<std::string> rewrites = rewriteForVisualCpp(work / "build", compiled.log);
     if (!rewrites.empty()) {
       leniencies.insert(leniencies.end(), rewrites.begin(), rewrites.end());
@@ -535,7 +518,54 @@ Compiled buildAttempt(const Tree& tree, const Attempt& attempt, const Scratch& s
       compiled = again;
     }
   }
+  for (const auto& header : standInsUsed(compiled.log))
+    leniencies.push_back(header + " stood in for (a Windows header)");
+  leniencies.push_back(
+      "the standard headers another compiler brings in on its own (<string>, <vector>, <cmath>, "
+      "...) included before each file, and -fpermissive");
   return compiled;
+}
+
+// One attempt, as written, then leniently where that did not compile. True when it built a
+// program that reaches the grader (`result` then says how); `programError` keeps why the whole
+// program was not graded, for the notes of a later attempt or the diagnosis.
+bool tryAttempt(const Tree& tree, Attempt attempt, const Scratch& scratch,
+                const std::string& probePath, BuildResult& result, std::string& programError) {
+  std::string asWritten;  // the first error of the attempt as written
+  for (bool lenient : {false, true}) {
+    attempt.lenient = lenient;
+    std::vector<std::string> leniencies;
+    Compiled compiled = buildAttempt(tree, attempt, scratch, leniencies);
+    if (!lenient && !compiled.built) asWritten = compiled.firstError;
+    result.log +=
+        "--- " + std::string(attempt.words) + (lenient ? ", leniently" : "") + ": " + compiled.log;
+    if (result.diagnosis.empty() && !compiled.built) result.diagnosis = compiled.firstError;
+    if (!compiled.built) {
+      // Leniency cannot mend a changed API: the grader's own call does not compile.
+      bool apiChanged = compiled.firstError.rfind(kApiChanged, 0) == 0;
+      if (attempt.mode == Mode::Program && (lenient || apiChanged))
+        programError = "its whole program did not build (" + result.diagnosis + ")";
+      if (apiChanged) return false;
+      continue;
+    }
+    if (!copyBuiltProgram(scratch.path() + "/out/probe", probePath)) return false;
+    if (attempt.mode == Mode::Program) {
+      std::string notReaching = whyNotReaching(probePath);
+      if (!notReaching.empty()) {
+        programError = "its whole program built, but " + notReaching;
+        result.log += "--- its whole program, run: " + notReaching + "\n";
+        return false;
+      }
+    }
+    if (!programError.empty()) result.notes.push_back(programError + ": physics.cpp graded alone");
+    if (lenient) result.notes.push_back("built leniently: as written, " + asWritten);
+    for (const auto& leniency : leniencies) result.notes.push_back("leniency: " + leniency);
+    result.built = true;
+    result.how = std::string(attempt.words) + (lenient ? ", leniently" : "");
+    result.diagnosis.clear();
+    return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -555,45 +585,13 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
   Tree tree = readTree(physics);
   result.notes.insert(result.notes.end(), tree.notes.begin(), tree.notes.end());
   std::string programError;  // why its whole program was not graded
-  for (Attempt attempt : kAttempts) {
+  for (const Attempt& attempt : kAttempts) {
     std::string why = whyNot(tree, attempt);
     if (!why.empty()) {
       result.log += "--- " + std::string(attempt.words) + ": not tried, " + why + "\n";
       continue;
     }
-    for (bool lenient : {false, true}) {
-      attempt.lenient = lenient;
-      std::vector<std::string> leniencies;
-      Compiled compiled = buildAttempt(tree, attempt, scratch, leniencies);
-      result.log += "--- " + std::string(attempt.words) + (lenient ? ", leniently" : "") + ": " +
-                    compiled.log;
-      if (result.diagnosis.empty() && !compiled.built) result.diagnosis = compiled.firstError;
-      if (!compiled.built) {
-        // Leniency cannot mend a changed API: the grader's own call does not compile.
-        bool apiChanged = compiled.firstError.rfind(kApiChanged, 0) == 0;
-        if (attempt.mode == Mode::Program && (lenient || apiChanged))
-          programError = "its whole program did not build (" + result.diagnosis + ")";
-        if (apiChanged) break;
-        continue;
-      }
-      if (!copyBuiltProgram(scratch.path() + "/out/probe", probePath)) break;
-      if (attempt.mode == Mode::Program) {
-        std::string notReaching = whyNotReaching(probePath);
-        if (!notReaching.empty()) {
-          programError = "its whole program built, but " + notReaching;
-          result.log += "--- its whole program, run: " + notReaching + "\n";
-          break;
-        }
-      }
-      if (!programError.empty())
-        result.notes.push_back(programError + ": physics.cpp graded alone");
-      for (const auto& leniency : leniencies) result.notes.push_back("leniency: " + leniency);
-      result.built = true;
-      result.how = std::string(attempt.words) + (lenient ? ", leniently" : "");
-      result.diagnosis.clear();
-      break;
-    }
-    if (result.built) break;
+    if (tryAttempt(tree, attempt, scratch, probePath, result, programError)) break;
   }
   // Nothing built: a whole program that built but never reached the grader says why first
   // (physics.cpp alone then failed for want of what that program's setup defines).

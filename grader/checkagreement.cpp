@@ -116,6 +116,25 @@ Judged judgeWorld(const std::string& name, const AgreementReference& ref, const 
           std::isfinite(distance) ? where : name + ": NaN by step " + std::to_string(step)};
 }
 
+// Near is a constant rounded in the source, which every world shows. An Euler world that
+// drifts while every RK4 world agrees is the Euler step itself: wrong, never near.
+void failEulerDriftAlone(const std::vector<std::pair<std::string, WorldFile>>& worlds,
+                         std::vector<Judged>& judged) {
+  bool rk4Drifts = false;
+  for (std::size_t w = 0; w < worlds.size(); ++w) {
+    rk4Drifts |= worlds[w].second.world.integrator != Integrator::Euler &&
+                 judged[w].grade != Grade::Pass && judged[w].grade != Grade::Info;
+  }
+  for (std::size_t w = 0; w < worlds.size(); ++w) {
+    if (worlds[w].second.world.integrator == Integrator::Euler && judged[w].grade == Grade::Near &&
+        !rk4Drifts) {
+      judged[w].grade = Grade::Fail;
+      judged[w].line +=
+          ", while every RK4 world agrees: the Euler step differs (the euler check says how)";
+    }
+  }
+}
+
 }  // namespace
 
 AgreementReference agreementReference(const WorldFile& file) {
@@ -171,22 +190,7 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
     ProbeRun run = runProbe(probe, script, {3});
     judgedWorlds.push_back(judgeWorld(name, *ref, run, 0));
   }
-  // Near is a constant rounded in the source, which every world shows. An Euler world that
-  // drifts while every RK4 world agrees is the Euler step itself: wrong, never near.
-  bool rk4Drifts = false;
-  for (std::size_t w = 0; w < worlds.size(); ++w) {
-    rk4Drifts |= worlds[w].second.world.integrator != Integrator::Euler &&
-                 judgedWorlds[w].grade != Grade::Pass && judgedWorlds[w].grade != Grade::Info;
-  }
-  for (std::size_t w = 0; w < worlds.size(); ++w) {
-    Judged& judged = judgedWorlds[w];
-    if (worlds[w].second.world.integrator == Integrator::Euler && judged.grade == Grade::Near &&
-        !rk4Drifts) {
-      judged.grade = Grade::Fail;
-      judged.line +=
-          ", while every RK4 world agrees: the Euler step differs (the euler check says how)";
-    }
-  }
+  failEulerDriftAlone(worlds, judgedWorlds);
   CheckResult result = passed("agreement", "");
   int off = 0;
   for (const Judged& judged : judgedWorlds) {

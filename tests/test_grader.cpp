@@ -13,6 +13,7 @@
 #include "grader/checks.h"
 #include "grader/graderfiles.h"
 #include "grader/sandbox.h"
+#include "grader_test_support.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -24,25 +25,6 @@ const std::string kSubmissions = std::string(JELLO_TEST_DATA) + "/submissions";
 const std::string kSeed = "5";
 
 bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
-
-// summary.csv as submission -> check -> grade.
-std::map<std::string, std::map<std::string, std::string>> readSummary(const std::string& dir) {
-  std::istringstream csv(readText(dir + "/summary.csv"));
-  std::string line, field;
-  std::getline(csv, line);
-  std::vector<std::string> checks;
-  std::istringstream header(line);
-  while (std::getline(header, field, ',')) checks.push_back(field);
-  std::map<std::string, std::map<std::string, std::string>> grades;
-  while (std::getline(csv, line)) {
-    std::istringstream row(line);
-    std::string name;
-    std::getline(row, name, ',');
-    name = name.substr(1, name.size() - 2);
-    for (std::size_t n = 1; std::getline(row, field, ','); ++n) grades[name][checks[n]] = field;
-  }
-  return grades;
-}
 
 // mutants.txt's expectations: the checks each mutant must fail (or be near, marked ~).
 std::map<std::string, std::set<std::string>> expectedFailures() {
@@ -100,26 +82,6 @@ TEST(Grader, MutantsAreTheCorrectSolutionWithTheTableReplacements) {
   EXPECT_EQ(mutants, static_cast<int>(expectedFailures().size()));
   EXPECT_GE(mutants, 14);
   removeTree(out);
-}
-
-// summary.md's text as it reads rendered: the markdown escapes undone.
-std::string rendered(std::string text) {
-  std::string out;
-  for (std::size_t n = 0; n < text.size(); ++n) {
-    if (text[n] == '\\' && n + 1 < text.size() &&
-        std::string("\\`*_[]|#~").find(text[n + 1]) != std::string::npos) {
-      out += text[++n];
-    } else if (text.compare(n, 4, "&lt;") == 0) {
-      out += '<', n += 3;
-    } else if (text.compare(n, 4, "&gt;") == 0) {
-      out += '>', n += 3;
-    } else if (text.compare(n, 5, "&amp;") == 0) {
-      out += '&', n += 4;
-    } else {
-      out += text[n];
-    }
-  }
-  return out;
 }
 
 // Every fixture, every check but the agreement (the next test's, on a few: it is half the time).

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "grader/sandbox.h"
+#include "grader_test_support.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -50,25 +51,6 @@ std::string attack(const std::string& root, const std::string& name, const std::
   fs::create_directories(root + "/" + name);
   writeText(root + "/" + name + "/physics.cpp", text);
   return root + "/" + name;
-}
-
-// summary.csv as submission -> check -> grade.
-std::map<std::string, std::map<std::string, std::string>> readSummary(const std::string& dir) {
-  std::istringstream csv(readText(dir + "/summary.csv"));
-  std::string line, field;
-  std::getline(csv, line);
-  std::vector<std::string> checks;
-  std::istringstream header(line);
-  while (std::getline(header, field, ',')) checks.push_back(field);
-  std::map<std::string, std::map<std::string, std::string>> grades;
-  while (std::getline(csv, line)) {
-    std::istringstream row(line);
-    std::string name;
-    std::getline(row, name, ',');
-    name = name.substr(1, name.size() - 2);
-    for (std::size_t n = 1; std::getline(row, field, ','); ++n) grades[name][checks[n]] = field;
-  }
-  return grades;
 }
 
 // Every file under `dir`, read whole, concatenated.

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "grader/sandbox.h"
+#include "grader_test_support.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -25,29 +26,11 @@ struct Report {
   std::string notes;
 };
 
-std::string unescaped(const std::string& text) {
-  std::string out;
-  for (std::size_t n = 0; n < text.size(); ++n) {
-    if (text[n] == '\\' && n + 1 < text.size() &&
-        std::string("`*_[]|#~").find(text[n + 1]) != std::string::npos)
-      out += text[++n];
-    else if (text.compare(n, 4, "&lt;") == 0)
-      out += '<', n += 3;
-    else if (text.compare(n, 4, "&gt;") == 0)
-      out += '>', n += 3;
-    else if (text.compare(n, 5, "&amp;") == 0)
-      out += '&', n += 4;
-    else
-      out += text[n];
-  }
-  return out;
-}
-
 Report readReport(const std::string& path) {
   Report report;
   std::istringstream lines(readText(path));
   for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("- ", 0) == 0) report.notes += unescaped(line) + "\n";
+    if (line.rfind("- ", 0) == 0) report.notes += rendered(line) + "\n";
     if (line.rfind("| ", 0) != 0 || line.rfind("| check", 0) == 0) continue;
     std::vector<std::string> cells;
     std::string cell;
@@ -65,7 +48,7 @@ Report readReport(const std::string& path) {
       t.erase(t.find_last_not_of(' ') + 1);
       return t;
     };
-    report.rows[trim(cells[0])] = {trim(cells[1]), unescaped(trim(cells[2]))};
+    report.rows[trim(cells[0])] = {trim(cells[1]), rendered(trim(cells[2]))};
   }
   return report;
 }
