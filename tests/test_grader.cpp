@@ -42,15 +42,6 @@ std::map<std::string, std::set<std::string>> expectedFailures() {
   return expected;
 }
 
-// Runs ./grade; a whole class of fixtures takes a minute on two cores, more under sanitizers.
-CommandResult grade(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {JELLO_GRADE};
-  argv.insert(argv.end(), args.begin(), args.end());
-  ProgramSetup setup;
-  setup.hangGuardSeconds = 280;
-  return runProgram(argv, setup);
-}
-
 void expectGrades(const std::string& dir, const std::vector<std::string>& names) {
   auto grades = readSummary(dir);
   auto expected = expectedFailures();

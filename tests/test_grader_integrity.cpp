@@ -31,14 +31,6 @@ const std::string kEntry =
 
 bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
 
-CommandResult grade(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {JELLO_GRADE};
-  argv.insert(argv.end(), args.begin(), args.end());
-  ProgramSetup setup;
-  setup.hangGuardSeconds = 280;
-  return runProgram(argv, setup);
-}
-
 // The correct solution with `hook` run after its own computeAcceleration (a and jello in scope)
 // and `top` before everything: a submission folder `name` under `root`.
 std::string attack(const std::string& root, const std::string& name, const std::string& hook,

@@ -100,12 +100,9 @@ TEST(GraderPrograms, BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSay
   std::string root = makeTempDir(), cls = root + "/class", report = root + "/report";
   CommandResult made = runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls});
   ASSERT_EQ(made.status, 0) << made.err;
-  ProgramSetup setup;
-  setup.hangGuardSeconds = 280;
   CommandResult r =
-      runProgram({JELLO_GRADE, "-o", report, "--seed", "5", "--checks",
-                  "rest,structural,shear,bend,dampers,walls,plane,field,euler,rk4,robust", cls},
-                 setup);
+      grade({"-o", report, "--seed", "5", "--checks",
+             "rest,structural,shear,bend,dampers,walls,plane,field,euler,rk4,robust", cls});
   ASSERT_EQ(r.status, 0) << r.err;
   // One folder of submissions is a class: each graded, with a line as it starts and as it ends.
   int shapes = 0;
