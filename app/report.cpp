@@ -865,11 +865,17 @@ void printReportSummary(const std::string& worldPath, const ReportOptions& optio
       runs, options.time, reference.step, reference.error);
   for (const OrderCheck& c : orders)
     if (c.far) std::printf("note: %s\n", orderWarningLine(c, reference.contacts).c_str());
-  if (recommended.own && !recommended.own->diverged)
+  const bool first = recommended.own && !recommended.own->diverged;
+  if (first)
     printChoice("as accurate as the world's own", worldPath, recommended.asAccurate,
                 recommended.own);
-  printChoice("within " + number(options.visualTolerance) + " m", worldPath, recommended.looksSame,
-              recommended.own);
+  const std::string within = "within " + number(options.visualTolerance) + " m";
+  // The same setting twice: its commands once (a second createWorld would refuse its file).
+  if (first && recommended.looksSame.best && recommended.looksSame.best != recommended.own &&
+      recommended.looksSame.best == recommended.asAccurate.best)
+    std::printf("%s: the same setting\n", within.c_str());
+  else
+    printChoice(within, worldPath, recommended.looksSame, recommended.own);
 }
 
 }  // namespace

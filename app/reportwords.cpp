@@ -39,8 +39,10 @@ std::string worldWord(const std::string& worldPath) {
   return !worldPath.empty() && worldPath[0] == '-' ? "./" + worldPath : worldPath;
 }
 
-// world/rotate.w and MIDPOINT: world/rotate-midpoint.w, beside the world.
-std::string worldFileFor(const std::string& worldPath, Integrator integrator) {
+// world/rotate.w, MIDPOINT and dt 0.00078125: world/rotate-midpoint-dt0.00078125.w, beside the
+// world: each recommended setting a name of its own (two of one integrator once shared one).
+std::string worldFileFor(const std::string& worldPath, Integrator integrator,
+                         const std::string& dt) {
   const std::size_t slash = worldPath.rfind('/');
   const std::string folder = slash == std::string::npos ? "" : worldPath.substr(0, slash + 1);
   std::string stem = worldPath.substr(folder.size());
@@ -48,7 +50,7 @@ std::string worldFileFor(const std::string& worldPath, Integrator integrator) {
   if (dot != std::string::npos && dot > 0) stem.erase(dot);
   std::string name = integratorName(integrator);
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return worldWord(folder + stem + "-" + name + ".w");
+  return worldWord(folder + stem + "-" + name + "-dt" + dt + ".w");
 }
 
 // The characters no POSIX shell gives a meaning to within a word.
@@ -227,7 +229,7 @@ std::vector<std::string> worldFileCommand(const std::string& worldPath, const Re
           "--dt",
           exactNumber(row.dt),
           "-o",
-          worldFileFor(worldPath, row.integrator)};
+          worldFileFor(worldPath, row.integrator, exactNumber(row.dt))};
 }
 
 std::string shellWord(const std::string& word) {
