@@ -677,6 +677,9 @@ TEST(Report, AReferenceThatDivergesLeavesNoEmptyFolder) {
 // limit (0.00098 s), which --check calls marginal: it is named and left out, and what is
 // recommended --check calls stable.
 TEST(Report, RecommendsOnlyStepsThatCheckCallsStable) {
+  // Its reference is 65536 RK4 steps: 10 s here, over two minutes under the sanitizers, whose
+  // build runs every other report test; the release suite runs this one.
+  if (test::kAddressSanitizer) GTEST_SKIP() << "too slow under AddressSanitizer";
   const std::string dir = test::makeTempDir(), world = test::dataPath("rotate.w");
   test::CommandResult r =
       test::runJelloArgs({"--report", dir + "/rep", "--time", "0.25", "--tolerance", "0.01",

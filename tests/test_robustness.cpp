@@ -161,17 +161,8 @@ TEST(SpecialFiles, PathsWithSpacesAndPipesWork) {
   test::removeTree(dir);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;  // reserves terabytes of address space: no RLIMIT_AS
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+// AddressSanitizer reserves terabytes of address space: no RLIMIT_AS (test::kAddressSanitizer).
+using test::kAddressSanitizer;
 
 constexpr std::uint64_t kTwoGigabytes = 2'000'000'000;
 

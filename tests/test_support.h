@@ -11,6 +11,19 @@
 
 namespace jello::test {
 
+// Whether the tests are built with AddressSanitizer (make test-sanitize).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 // A file of tests/data (copied from ../shared/reference-worlds).
 std::string dataPath(const std::string& name);
 
