@@ -1,144 +1,19 @@
-// physics.cpp: the scene of a world, the force kernel that sums its terms, and the derivative
-// of a state. See physics.h for units and signs, forces/ for the terms themselves.
+// physics.cpp (the course's file): the acceleration of the jello, declared in solver/physics.h:
+// the force kernel that sums a model's terms (model/model.h) a range of points at a time, the
+// derivative of a state, the divergence test, and the jello as the integrators' ODE system. The
+// terms themselves are in model/, the integrators in solver/integrators.cpp.
 
-#include "physics.h"
+#include "solver/physics.h"
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
+#include <vector>
 
-#include "core/assert.h"
 #include "core/team.h"
-#include "forces/gravity.h"
-#include "forces/obstacle.h"
-#include "scene/spec.h"
+#include "solver/integrators.h"
+#include "solver/jacobian.h"
 
 namespace jello {
-
-namespace {
-
-// The field as a specialised scene computes it, or why it is left out.
-void addField(const World& world, int n, KernelChoice choice, Scene* scene) {
-  if (choice == KernelChoice::General) {
-    scene->terms.push_back(
-        std::make_unique<FieldTerm>(n, world.field, world.mass, FieldTerm::Method::Reference));
-    return;
-  }
-  switch (fieldUse(world.field)) {
-    case FieldUse::Absent:
-      scene->leftOut.push_back("field (none in the file)");
-      return;
-    case FieldUse::Zero:
-      scene->leftOut.push_back("field (all zero)");
-      return;
-    case FieldUse::Uniform:
-      scene->terms.push_back(
-          std::make_unique<FieldTerm>(n, world.field, world.mass, FieldTerm::Method::Uniform));
-      return;
-    case FieldUse::Trilinear:
-      // A field the scene calls trilinear has R >= 2: one node would be uniform.
-      scene->terms.push_back(
-          std::make_unique<FieldTerm>(n, world.field, world.mass, FieldTerm::Method::Padded));
-      return;
-  }
-}
-
-// What a scene file adds after the course's terms (so that a scene that adds nothing sums as the
-// course world does): gravity, then the obstacles in the file's order.
-void addSceneTerms(const World& world, int n, const SceneSpec& spec, Scene* scene) {
-  if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0)
-    scene->terms.push_back(std::make_unique<GravityTerm>(n, spec.gravity, world.mass));
-  for (const Obstacle& obstacle : spec.obstacles)
-    scene->terms.push_back(std::make_unique<ObstacleTerm>(n, obstacle));
-}
-
-// The terms of `world` in the order their forces are summed. The field term reads the nodes of
-// `world`, which must be the model's own.
-Scene buildScene(const World& world, const State& initial, KernelChoice choice) {
-  Scene scene;
-  const bool general = choice == KernelChoice::General;
-  scene.culling = !general;
-  const SceneSpec* spec = world.scene.get();
-  const Body& body = bodyOf(world);
-  const int n = body.count();
-  const SpringConstants constants = springConstantsOf(world);
-  auto springs = std::make_unique<SpringTerm>(body, constants, general || constants.anyDamping());
-  scene.springs = springs.get();
-  scene.terms.push_back(std::move(springs));
-  const ContactSpring contact{world.kCollision, world.dCollision};
-  if (hasCourseWalls(spec))
-    scene.terms.push_back(std::make_unique<WallsTerm>(n, contact));
-  else if (spec->bounds)
-    scene.terms.push_back(std::make_unique<ObstacleTerm>(n, *spec->bounds));
-  else
-    scene.leftOut.push_back("walls (the scene has no bounding box)");
-  if (world.hasPlane) {
-    auto plane = std::make_unique<PlaneTerm>(n, world.plane,
-                                             allowedSide(world.plane, initial.p(), n), contact);
-    scene.plane = plane.get();
-    scene.terms.push_back(std::move(plane));
-  } else {
-    // In a scene, the course world's inclined plane, not the scene's own [[plane]] obstacles.
-    scene.leftOut.push_back(spec ? "the course's inclined plane (none in the world)"
-                                 : "plane (none in the file)");
-  }
-  addField(world, n, choice, &scene);
-  if (spec) addSceneTerms(world, n, *spec, &scene);
-  return scene;
-}
-
-constexpr int kMaxTerms = 8 + kMostObstacles;
-
-}  // namespace
-
-SceneSummary summarise(const Scene& scene) {
-  SceneSummary summary;
-  for (const auto& term : scene.terms) term->summarise(&summary.kept, &summary.leftOut);
-  summary.leftOut.insert(summary.leftOut.end(), scene.leftOut.begin(), scene.leftOut.end());
-  return summary;
-}
-
-std::string listText(const std::vector<std::string>& parts) {
-  std::string out;
-  for (const std::string& part : parts) out += (out.empty() ? "" : ", ") + part;
-  return out.empty() ? std::string("nothing") : out;
-}
-
-std::string sceneLine(const Scene& scene) {
-  const SceneSummary summary = summarise(scene);
-  return "scene: kept: " + listText(summary.kept) + "; left out: " + listText(summary.leftOut);
-}
-
-const Body& Model::body() const { return bodyOf(world); }
-
-const Body& bodyOf(const World& world) {
-  return world.scene && world.scene->body ? *world.scene->body : courseBody();
-}
-
-SpringConstants springConstantsOf(const World& world) {
-  if (world.scene && world.scene->springs) return *world.scene->springs;
-  return SpringConstants::same(world.kElastic, world.dElastic);
-}
-
-bool hasCourseSprings(const World& world) {
-  return courseSprings(bodyOf(world), springConstantsOf(world));
-}
-
-Model makeModel(const World& world, const State& initial, KernelChoice choice) {
-  JELLO_ASSERT(initial.points() == bodyOf(world).count());
-  Model model;
-  model.world = world;
-  model.scene = buildScene(model.world, initial, choice);
-  if (world.scene) model.pinned = world.scene->pinned;
-  JELLO_ASSERT(model.scene.terms.size() <= kMaxTerms);
-  return model;
-}
-
-int pointsAcrossPlane(const Model& model, const State& state) {
-  return model.scene.plane ? model.scene.plane->pointsAcross(state.p()) : 0;
-}
-
-Vec3 pullForce(const Pull& pull, Vec3 p) { return pull.stiffness * (pull.target - p); }
 
 // The pair terms add into the total; the point terms in reach add into their own sum first,
 // which then joins the total (one term alone adds directly: x + (0 + y) is x + y). This is the
@@ -152,9 +27,9 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
     std::fill(force + a * n + points.begin, force + a * n + points.end, 0.0);
   const ForceTerm* inReach[kMaxTerms];
   int count = 0;
-  for (const auto& term : model.scene.terms) {
-    if (springForce && term.get() == model.scene.springs)
-      model.scene.springs->addListedForces(points, springForce, force);
+  for (const auto& term : model.forces.terms) {
+    if (springForce && term.get() == model.forces.springs)
+      model.forces.springs->addListedForces(points, springForce, force);
     else if (term->isPairTerm())
       term->addForcesOn(points, p, v, reach, force);
     else if (!reach || term->mayReach(*reach))
@@ -186,7 +61,7 @@ namespace {
 PointRange teamPart(const Model& model, int part) {
   static const int rowSplit = balancedSplitPoint();
   const int n = model.points();
-  const int split = model.scene.springs->rowKernel()
+  const int split = model.forces.springs->rowKernel()
                         ? rowSplit
                         : (n / 2 + kRangeAlignment / 2) / kRangeAlignment * kRangeAlignment;
   return part == 0 ? PointRange{0, split} : PointRange{split, n};
@@ -197,7 +72,7 @@ PointRange teamPart(const Model& model, int part) {
 // springs of its points, each at both ends). Into this thread's buffer, grown once. Null for the
 // row kernel, whose rows split as they are.
 const double* listedSpringForces(const Model& model, const double* p, const double* v, Team* team) {
-  const SpringTerm& springs = *model.scene.springs;
+  const SpringTerm& springs = *model.forces.springs;
   if (springs.rowKernel()) return nullptr;
   thread_local std::vector<double> buffer;
   const int count = static_cast<int>(springs.springs().size());
@@ -234,8 +109,8 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
 
 void computeForces(const Model& model, const double* p, const double* v, double* force,
                    const Pull* pull, Team* team) {
-  const Bounds box = model.scene.culling ? boundsOf(p, model.points()) : Bounds{};
-  const Bounds* reach = model.scene.culling ? &box : nullptr;
+  const Bounds box = model.forces.culling ? boundsOf(p, model.points()) : Bounds{};
+  const Bounds* reach = model.forces.culling ? &box : nullptr;
   if (!team)
     computeForcesOn(model, {0, model.points()}, p, v, reach, force, pull);
   else {
@@ -247,8 +122,8 @@ void computeForces(const Model& model, const double* p, const double* v, double*
 }
 
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull, Team* team) {
-  const Bounds box = model.scene.culling ? boundsOf(y, model.points()) : Bounds{};
-  const Bounds* reach = model.scene.culling ? &box : nullptr;
+  const Bounds box = model.forces.culling ? boundsOf(y, model.points()) : Bounds{};
+  const Bounds* reach = model.forces.culling ? &box : nullptr;
   if (!team)
     derivativeOn(model, {0, model.points()}, y, reach, dydt, pull, nullptr);
   else {
@@ -270,6 +145,22 @@ int findDivergedPoint(const State& state) {
     if (!finite || dot(pq, pq) > kDivergenceRadius * kDivergenceRadius) return q;
   }
   return -1;
+}
+
+OdeSystem jelloSystem(const JelloInputs& inputs) {
+  OdeSystem system;
+  system.derivative = [&inputs](const double* y, double* dydt) {
+    derivative(*inputs.model, y, dydt, inputs.pull, inputs.team);
+  };
+  system.newtonMatrix = [&inputs](const double* y, double cv, double cp, NewtonBlocks& matrix) {
+    newtonBlocks(*inputs.model, y, y + inputs.model->coords(), inputs.pull, cv, cp, &matrix);
+  };
+  return system;
+}
+
+void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
+  const JelloInputs inputs{&model, pull, team};
+  step(jelloSystem(inputs), state.y, dt);
 }
 
 }  // namespace jello

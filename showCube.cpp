@@ -3,7 +3,7 @@
 // Every call sets all the GL state it relies on, so that a frame does not depend on what was
 // drawn before it, nor on which of the two contexts draws it.
 
-#include "showCube.h"
+#include "graphics/showCube.h"
 
 #include <GL/gl.h>
 #include <GL/glu.h>
@@ -13,9 +13,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "app/contacts.h"
+#include "analysis/contacts.h"
 #include "graphics/scenedraw.h"
-#include "scene/spec.h"
+#include "model/scenespec.h"
 
 namespace jello {
 

@@ -14,8 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "core/outcome.h"
 #include "core/output.h"
-#include "world.h"
+#include "io/input.h"
+#include "model/world.h"
 
 namespace jello {
 
@@ -111,25 +113,26 @@ inline std::string extrasMessage(const CLI::App& app, const CLI::ExtrasError& e)
   return e.what();
 }
 
-// Parses the command line. --help and --version print and set *status to 0; an error prints
-// one line "NAME: what (see NAME --help)" and sets *status to 2. Returns true when the program
-// should go on.
-inline bool parseCommandLine(CLI::App& app, int argc, const char* const* argv, int* status) {
+// The words that say --help or --version was answered: parseCommandLine's outcome then.
+constexpr const char* kAnswered = "answered";
+
+// Parses the command line: succeeded() (no message) when the program should go on; after
+// printing --help or --version on stdout, succeeded(kAnswered); on an error, failed with one line
+// "what (see NAME --help)" for the caller to print.
+inline Outcome parseCommandLine(CLI::App& app, int argc, const char* const* argv) {
   try {
     app.parse(argc, argv);
-    return true;
+    return succeeded();
   } catch (const CLI::CallForHelp& e) {
-    *status = app.exit(e);
+    app.exit(e);
   } catch (const CLI::CallForVersion& e) {
-    *status = app.exit(e);
+    app.exit(e);
   } catch (const CLI::ExtrasError& e) {
-    printError(extrasMessage(app, e) + " (see " + app.get_name() + " --help)");
-    *status = 2;
+    return failed(extrasMessage(app, e) + " (see " + app.get_name() + " --help)");
   } catch (const CLI::ParseError& e) {
-    printError(std::string(e.what()) + " (see " + app.get_name() + " --help)");
-    *status = 2;
+    return failed(std::string(e.what()) + " (see " + app.get_name() + " --help)");
   }
-  return false;
+  return succeeded(kAnswered);
 }
 
 }  // namespace jello

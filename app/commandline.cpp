@@ -80,11 +80,8 @@ int colouringIndex(std::string name) {
   return -1;
 }
 
-// One error line and the bad-input status.
-int refuse(const std::string& message) {
-  printError(message);
-  return kExitBadInput;
-}
+// The argument refused, in one line (main prints it).
+Outcome refuse(const std::string& message) { return failed(message); }
 
 }  // namespace
 
@@ -227,7 +224,7 @@ void addAnalysisOptions(CLI::App& app, JelloCommand* c, Given* g) {
 
 // The integrators of --integrators, comma-separated.
 // Each at most once: a name given twice would be studied twice (RK4 given 1000 times ran on).
-int readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
+Outcome readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
   if (list.empty()) return refuse("--integrators: an empty list (leave the option out for all)");
   std::stringstream names(list);
   for (std::string name; std::getline(names, name, ',');) {
@@ -239,11 +236,11 @@ int readIntegratorList(const std::string& list, std::vector<Integrator>* out) {
       return refuse("--integrators: " + std::string(integratorName(chosen)) + " given twice");
     out->push_back(chosen);
   }
-  return kGoOn;
+  return succeeded();
 }
 
 // The mode, from the options that choose one, and the options that go only with one mode.
-int chooseMode(const Given& g, JelloCommand* c) {
+Outcome chooseMode(const Given& g, JelloCommand* c) {
   if (*g.mapOption && !*g.checkOption) return refuse("--map goes with --check");
   if (*g.jsonOption && !*g.checkOption) return refuse("--json goes with --check");
   if (*g.jsonOption && *g.mapOption)
@@ -282,14 +279,14 @@ int chooseMode(const Given& g, JelloCommand* c) {
     if (*g.timeOption) c->report.time = g.time;
     c->report.overwrite = c->pictures.overwrite;
     return *g.integratorsOption ? readIntegratorList(g.integrators, &c->report.integrators)
-                                : kGoOn;  // none given: all
+                                : succeeded();  // none given: all
   }
   if (c->mode == JelloCommand::Mode::Map && *g.timeOption) c->mapTime = g.time;
-  return kGoOn;
+  return succeeded();
 }
 
 // The pictures' camera and colouring, once parsed.
-int readViewOptions(const Given& g, JelloCommand* c) {
+Outcome readViewOptions(const Given& g, JelloCommand* c) {
   if (*g.cameraOption) {
     CameraRequest camera;
     if (!parseCamera(g.camera, &camera))
@@ -305,11 +302,11 @@ int readViewOptions(const Given& g, JelloCommand* c) {
       return refuse("--colouring: unknown colouring '" + g.colouring +
                     "', expected plain, strain, force or friction");
   }
-  return kGoOn;
+  return succeeded();
 }
 
 // The run's overrides, once parsed.
-int readRunOptions(const Given& g, JelloCommand* c) {
+Outcome readRunOptions(const Given& g, JelloCommand* c) {
   RunOptions& run = c->run;
   if (*g.integratorOption) {
     Integrator chosen;
@@ -338,7 +335,7 @@ int readRunOptions(const Given& g, JelloCommand* c) {
 
 }  // namespace
 
-int parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* command) {
+ParsedCommand parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* command) {
   *command = JelloCommand{};
   command->run.worldPath = kDefaultWorld;
   CLI::App app{"jello: the jello cube simulator. Runs WORLD (default " +
@@ -350,10 +347,12 @@ int parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* comma
   addPictureOptions(app, command, &given);
   addAnalysisOptions(app, command, &given);
   app.footer("Integrators (--integrator, --integrators, and world files):\n" + integratorHelp());
-  int status = 0;
-  if (!parseCommandLine(app, argc, argv, &status)) return status;
-  status = readRunOptions(given, command);
-  return status == kGoOn ? chooseMode(given, command) : status;
+  const Outcome parsed = parseCommandLine(app, argc, argv);
+  if (!parsed.ok()) return {false, parsed};
+  if (parsed.message == kAnswered) return {false, succeeded()};
+  Outcome read = readRunOptions(given, command);
+  if (read.ok()) read = chooseMode(given, command);
+  return {read.ok(), read};
 }
 
 }  // namespace jello

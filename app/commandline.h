@@ -5,9 +5,9 @@
 
 #include <string>
 
+#include "analysis/report.h"
 #include "app/headless.h"
 #include "app/pictures.h"
-#include "app/report.h"
 
 namespace jello {
 
@@ -28,11 +28,13 @@ struct JelloCommand {
   double maxMemoryGB = 0;  // --max-memory: 0 for the machine's own figures
 };
 
-// The exit status parseJelloCommandLine returns when the program is to go on.
-constexpr int kGoOn = -1;
-
-// Parses and checks argv. Returns kGoOn with *command filled in, or the exit status after
-// printing --help or --version (0) or one error line (2).
-int parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* command);
+// What parsing came to: go on with *command filled in, or stop with `outcome`: succeeded once
+// --help or --version is printed, failed with the one line that refuses an argument (which the
+// caller prints: the parser prints only what was asked for, on stdout).
+struct ParsedCommand {
+  bool goOn = false;
+  Outcome outcome;
+};
+ParsedCommand parseJelloCommandLine(int argc, const char* const* argv, JelloCommand* command);
 
 }  // namespace jello

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/stability.h"
-#include "physics.h"
+#include "analysis/stability.h"
+#include "solver/physics.h"
 
 namespace jello {
 
@@ -37,10 +37,10 @@ namespace {
 std::string termLines(const World& w, const State& state) {
   std::string out;
   const Model general = makeModel(w, state, KernelChoice::General);
-  for (const auto& term : general.scene.terms)
+  for (const auto& term : general.forces.terms)
     for (const TermLine& line : term->describe(state.p()))
       out += textf("%-11s %s\n", line.label.c_str(), line.text.c_str());
-  const std::vector<std::string> left = summarise(general.scene).leftOut;
+  const std::vector<std::string> left = summarise(general.forces).leftOut;
   if (!left.empty()) out += "left out    " + listText(left) + "\n";
   return out;
 }

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "forces/field.h"
-#include "vec3.h"
-#include "world.h"
+#include "model/field.h"
+#include "model/vec3.h"
+#include "model/world.h"
 
 namespace jello {
 

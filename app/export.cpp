@@ -12,8 +12,8 @@
 #include <cstring>
 #include <vector>
 
-#include "body.h"
-#include "forces/term.h"
+#include "model/body.h"
+#include "model/term.h"
 
 namespace jello {
 

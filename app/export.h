@@ -18,9 +18,9 @@
 
 #include "app/headless.h"
 #include "app/pictures.h"
-#include "body.h"
 #include "core/output.h"
-#include "world.h"
+#include "model/body.h"
+#include "model/world.h"
 
 namespace jello {
 

@@ -12,12 +12,12 @@
 #include <cstdio>
 #include <cstring>
 
-#include "app/stability.h"
+#include "analysis/stability.h"
 #include "core/output.h"
 #include "core/progress.h"
-#include "physics.h"
-#include "scene/reader.h"
+#include "io/scenereader.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 
 namespace jello {
@@ -181,36 +181,6 @@ std::string whyNotDumpable(const std::string& dumpPath, const std::string& world
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 
-std::string tooManyStepsMessage(double time, double dt) {
-  char steps[64] = "more steps than a double can count";
-  if (std::isfinite(time / dt)) std::snprintf(steps, sizeof steps, "%g steps", time / dt);
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "--time %g s at --dt %g s would take %s, more than the %g a run may take; choose a "
-                "shorter --time or a larger --dt",
-                time, dt, steps, kMaxSteps);
-  return text;
-}
-
-Outcome loadRun(const RunOptions& options, WorldFile* out) {
-  try {
-    *out = isSceneFile(options.worldPath) ? readSceneFile(options.worldPath)
-                                          : readWorldFile(options.worldPath);
-  } catch (const WorldFileError& e) {
-    struct stat info;
-    if (options.worldDefaulted && ::stat(options.worldPath.c_str(), &info) != 0)
-      return failed(std::string(e.what()) +
-                    " (no WORLD was named, and this default is found only from the project's "
-                    "folder; name one: jello path/to/world.w)");
-    return failed(e.what());
-  }
-  World& world = out->world;
-  if (options.integrator) world.integrator = *options.integrator;
-  if (options.dt) world.dt = *options.dt;
-  if (options.n) world.n = *options.n;
-  return succeeded();
-}
-
 Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   WorldFile file;
   if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
@@ -242,7 +212,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
         !begun.ok())
       return begun;
   }
-  std::printf("%s%s\n", sceneLine(model.scene).c_str(),
+  std::printf("%s%s\n", termsLine(model.forces).c_str(),
               options.kernel == KernelChoice::General
                   ? "; --kernel general computes every term at every point anyway"
                   : "");

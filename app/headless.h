@@ -6,31 +6,13 @@
 
 #include "app/pictures.h"
 #include "core/outcome.h"
-#include "physics.h"
+#include "model/world.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
+#include "solver/run.h"
 #include "solver/simulation.h"
-#include "world.h"
 
 namespace jello {
-
-// What the command line asks of a run; unset values come from the world file.
-struct RunOptions {
-  std::string worldPath;
-  bool worldDefaulted = false;     // no WORLD was named: worldPath is jello's default
-  std::optional<long long> steps;  // --steps N
-  std::optional<double> time;      // --time T, seconds
-  std::optional<Integrator> integrator;
-  std::optional<double> dt;  // s
-  std::optional<int> n;
-  std::optional<std::string> dumpPath;              // --dump FILE
-  Tolerances tolerances;                            // RK45's error control
-  KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
-};
-
-// Exit statuses of the README (Running), chosen by the mains alone (outcome.h).
-constexpr int kExitOk = 0;
-constexpr int kExitDiverged = 1;
-constexpr int kExitBadInput = 2;
 
 // The default length of a run: 300 drawn frames of n steps each, or, when frames are saved by
 // simulated time (--fps), as long as --max-frames of them take.
@@ -65,17 +47,11 @@ class FrameObserver {
 // Why RK45 stopped at step s (a RunOutcome::Kind::ToleranceUnmet), in one line without "jello: ":
 // its tolerances are beyond what double arithmetic resolves.
 std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt);
-// The one line (without "jello: ") that refuses such a --time at such a dt.
-std::string tooManyStepsMessage(double time, double dt);
 
 // --dump FILE's rule (README, "Reliability"): it creates FILE or replaces a regular, writable
 // file of that name, because the option names it; never the world being run, nor anything
 // that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
 std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
-
-// Reads the world of `options` and applies its overrides. Fails, saying why, on bad input; a
-// default world that is missing is said to be the default, with how to name one.
-Outcome loadRun(const RunOptions& options, WorldFile* out);
 
 // Loads the world, runs it (handing its frames to `frames` when given) and prints the summary
 // line on stdout. Fails (or diverges), saying why, without printing it.

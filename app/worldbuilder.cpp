@@ -86,8 +86,8 @@ Recipe coursePreset(const std::string& name) {
     r.state.velocity = Vec3{10, -10, 0};
     return r;
   }
-  throw RecipeError("unknown preset '" + name +
-                    "', expected jello, rotate, moveLeft, skewedCorner or gravity");
+  throw InputError("unknown preset '" + name +
+                   "', expected jello, rotate, moveLeft, skewedCorner or gravity");
 }
 
 State buildState(const StateRecipe& recipe) {

@@ -8,9 +8,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/fieldrecipe.h"
-#include "vec3.h"
-#include "world.h"
+#include "io/fieldrecipe.h"
+#include "io/input.h"
+#include "model/vec3.h"
+#include "model/world.h"
 
 namespace jello {
 
@@ -41,7 +42,7 @@ Recipe defaultRecipe();
 
 // The course world `name` (jello, rotate, moveLeft, skewedCorner, gravity) as a recipe, with
 // exact values (1/512 kg, positions i/7) where the course files hold six decimals.
-// Throws RecipeError for an unknown name.
+// Throws InputError for an unknown name.
 Recipe coursePreset(const std::string& name);
 
 // The initial state of a recipe.

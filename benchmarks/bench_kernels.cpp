@@ -6,10 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "forces/term.h"
-#include "physics.h"
+#include "io/input.h"
+#include "model/term.h"
+#include "model/world.h"
 #include "solver/integrators.h"
-#include "world.h"
+#include "solver/physics.h"
 
 namespace {
 
@@ -44,7 +45,7 @@ void Forces(benchmark::State& bench, int world, KernelChoice choice) {
 void Term(benchmark::State& bench, int world, int index) {
   const WorldFile& f = courseWorld(world);
   Model model = makeModel(f.world, f.state, KernelChoice::Specialised);
-  const ForceTerm& term = *model.scene.terms[static_cast<std::size_t>(index)];
+  const ForceTerm& term = *model.forces.terms[static_cast<std::size_t>(index)];
   std::vector<double> force(kNumCoords);
   for (auto _ : bench) {
     term.addForces(f.state.p(), f.state.v(), nullptr, force.data());
@@ -85,9 +86,9 @@ void registerAll() {
   for (int w = 0; w < static_cast<int>(std::size(kWorlds)); ++w) {
     const WorldFile& f = courseWorld(w);
     const Model model = makeModel(f.world, f.state, KernelChoice::Specialised);
-    for (std::size_t t = 0; t < model.scene.terms.size(); ++t) {
+    for (std::size_t t = 0; t < model.forces.terms.size(); ++t) {
       std::vector<std::string> kept, leftOut;
-      model.scene.terms[t]->summarise(&kept, &leftOut);
+      model.forces.terms[t]->summarise(&kept, &leftOut);
       const std::string name = kept.empty() ? std::to_string(t) : kept.front();
       benchmark::RegisterBenchmark(
           (std::string("Term/") + kWorlds[w] + "/" + std::to_string(t) + " " + name).c_str(), Term,

@@ -14,10 +14,11 @@
 
 #include "app/commandline.h"
 #include "app/worldbuilder.h"
-#include "physics.h"
-#include "scene/reader.h"
-#include "scene/spec.h"
-#include "world.h"
+#include "core/exitstatus.h"
+#include "io/scenereader.h"
+#include "model/scenespec.h"
+#include "model/world.h"
+#include "solver/physics.h"
 
 namespace jello::fuzz {
 
@@ -58,7 +59,7 @@ Outcome outcomeOf(Read read) {
   try {
     o.world = read();
     o.accepted = true;
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     o.error = e.what();
     if (o.error.empty() || o.error.find('\n') != std::string::npos)
       failed("error message", o.error);
@@ -114,7 +115,7 @@ void checkFieldExpression(const std::uint8_t* data, std::size_t size) {
     }
     for (double f : field.forces)
       if (!std::isfinite(f)) failed("a non-finite force was accepted", recipe.expression);
-  } catch (const RecipeError& e) {
+  } catch (const InputError& e) {
     const std::string message = e.what();
     if (message.empty()) failed("empty error message", recipe.expression);
   }
@@ -169,16 +170,19 @@ void checkCommandLine(const std::uint8_t* data, std::size_t size) {
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   JelloCommand command;
-  int status = -2;
+  ParsedCommand parsed;
   try {
-    status = parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), &command);
+    parsed = parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), &command);
   } catch (const std::exception& e) {
     failed("an exception escaped the parse", e.what());
   }
-  if (status == kGoOn)
+  if (parsed.goOn)
     checkCommand(command);
-  else if (status != 0 && status != kExitBadInput)
-    failed("exit status", std::to_string(status));
+  else if (!parsed.outcome.ok() && parsed.outcome.status != Ending::Failed)
+    failed("the parse's outcome", parsed.outcome.message);
+  else if (!parsed.outcome.ok() && (parsed.outcome.message.empty() ||
+                                    parsed.outcome.message.find('\n') != std::string::npos))
+    failed("a refusal in one line", parsed.outcome.message);
 }
 
 // An accepted scene keeps the reader's promises: the world is one formatWorld can write, every

@@ -8,12 +8,12 @@
 
 namespace jello::fuzz {
 
-// A world file's text: the reader either refuses it with a WorldFileError or accepts it, the
+// A world file's text: the reader either refuses it with a InputError or accepts it, the
 // same way from memory and from a file descriptor (whose reading goes a block at a time); an
 // accepted world is written and read back bit for bit. Aborts on any other outcome.
 void checkWorldText(const std::uint8_t* data, std::size_t size);
 
-// A createWorld field expression "fx; fy; fz": refused with a RecipeError or turned into a
+// A createWorld field expression "fx; fy; fz": refused with a InputError or turned into a
 // field of finite forces. Aborts on any other outcome.
 void checkFieldExpression(const std::uint8_t* data, std::size_t size);
 
@@ -24,7 +24,7 @@ void checkFieldExpression(const std::uint8_t* data, std::size_t size);
 void checkCommandLine(const std::uint8_t* data, std::size_t size);
 
 // A scene file's text (parsed from memory, with `world` keys relative to the current folder):
-// refused with a one-line WorldFileError, or accepted as a scene whose every value the reader
+// refused with a one-line InputError, or accepted as a scene whose every value the reader
 // promises (obstacles, pins, a world that can be written) and whose forces are numbers.
 void checkSceneText(const std::uint8_t* data, std::size_t size);
 

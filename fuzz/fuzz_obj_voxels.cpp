@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/voxels.h"
+#include "io/voxels.h"
 
 namespace {
 

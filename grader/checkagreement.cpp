@@ -8,7 +8,7 @@
 #include <random>
 
 #include "grader/checkkit.h"
-#include "physics.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 
 namespace jello::grader {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "grader/checkkit.h"
-#include "physics.h"
+#include "solver/physics.h"
 
 namespace jello::grader {
 namespace {

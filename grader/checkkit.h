@@ -5,10 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "forces/term.h"
 #include "grader/checks.h"
 #include "grader/probe.h"
-#include "world.h"
+#include "io/input.h"
+#include "model/term.h"
+#include "model/world.h"
 
 namespace jello::grader {
 

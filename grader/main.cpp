@@ -20,14 +20,15 @@
 #include <thread>
 
 #include "app/cli.h"
+#include "core/exitstatus.h"
 #include "core/output.h"
-#include "forces/term.h"
 #include "grader/build.h"
 #include "grader/checks.h"
 #include "grader/probe.h"
 #include "grader/report.h"
 #include "grader/sandbox.h"
 #include "grader/submission.h"
+#include "model/term.h"
 
 namespace fs = std::filesystem;
 using namespace jello;
@@ -240,8 +241,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--item", o.item, "(for the CTest file) of this submission")
       ->group("")
       ->transform(wholeNumber(0, 100000));
-  int status = 0;
-  if (!parseCommandLine(app, argc, argv, &status)) return status;  // one line, or --help
+  // One line for an argument refused (printed here: this is grade's main), or --help answered.
+  const Outcome parsed = parseCommandLine(app, argc, argv);
+  if (!parsed.ok()) return exitStatusOf(parsed);
+  if (parsed.message == kAnswered) return kExitOk;
   return std::nullopt;
 }
 

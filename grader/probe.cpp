@@ -9,6 +9,7 @@
 
 #include "core/output.h"
 #include "grader/submission.h"
+#include "io/input.h"
 
 namespace jello::grader {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "grader/sandbox.h"
-#include "world.h"
+#include "model/world.h"
 
 namespace jello::grader {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "core/output.h"
-#include "forces/term.h"
+#include "model/term.h"
 
 namespace jello::grader {
 namespace {

@@ -1,12 +1,12 @@
 // display.cpp: whether a window can be opened. Apart from the viewer, and Xlib included
 // last, because Xlib's macros (Success, None, ...) collide with names in Eigen.
 
-#include <X11/Xlib.h>
-
 #include <cstdlib>
 #include <string>
 
 #include "graphics/graphics.h"
+// Last: its macros would rename what the headers above declare.
+#include <X11/Xlib.h>
 
 namespace jello {
 

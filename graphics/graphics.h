@@ -7,13 +7,15 @@
 #include <memory>
 #include <string>
 
+#include "app/graphicsapi.h"
 #include "app/headless.h"
 #include "app/pictures.h"
 #include "graphics/frames.h"
 
 namespace jello {
 
-// In libjello_graphics.so:
+// In libjello_graphics.so, whose one exported entry point, jelloGraphicsApi (app/graphicsapi.h),
+// hands these to jello:
 // True when a window can be opened; otherwise why not, in a few words.
 bool displayAvailable(std::string* why);
 
@@ -23,20 +25,5 @@ std::unique_ptr<FrameObserver> makeOffscreenFrames(const PictureOptions& picture
 
 // Opens the viewer (README: The viewer) on the world of `run`; says how it went (outcome.h).
 Outcome runViewer(const RunOptions& run, const PictureOptions& pictures);
-
-// The library's functions, as jello finds them after loading it.
-struct GraphicsApi {
-  bool (*displayAvailable)(std::string* why);
-  std::unique_ptr<FrameObserver> (*makeOffscreenFrames)(const PictureOptions& pictures);
-  Outcome (*runViewer)(const RunOptions& run, const PictureOptions& pictures);
-};
-// The library's one exported entry point; its name is kGraphicsEntry.
-extern "C" const GraphicsApi* jelloGraphicsApi();
-constexpr const char* kGraphicsEntry = "jelloGraphicsApi";
-constexpr const char* kGraphicsLibrary = "libjello_graphics.so";
-
-// In jello: loads the library (once) from the executable's folder or the build folder. nullptr,
-// with the reason in a few words in *why, when this build has none or it cannot be loaded.
-const GraphicsApi* loadGraphics(std::string* why);
 
 }  // namespace jello

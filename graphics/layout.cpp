@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "showCube.h"
+#include "graphics/showCube.h"
 
 namespace jello {
 

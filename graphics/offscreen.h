@@ -7,7 +7,7 @@
 
 #include "graphics/graphics.h"
 #include "graphics/image.h"
-#include "showCube.h"
+#include "graphics/showCube.h"
 
 namespace jello {
 

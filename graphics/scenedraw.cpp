@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "forces/plane.h"
-#include "scene/spec.h"
-#include "showCube.h"  // kPi
+#include "graphics/showCube.h"  // kPi
+#include "model/plane.h"
+#include "model/scenespec.h"
 
 namespace jello {
 

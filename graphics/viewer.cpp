@@ -21,13 +21,13 @@
 #include <string>
 #include <thread>
 
+#include "analysis/stability.h"
 #include "app/export.h"
-#include "app/stability.h"
 #include "core/output.h"
-#include "forces/term.h"
 #include "graphics/graphics.h"
 #include "graphics/layout.h"
-#include "showCube.h"
+#include "graphics/showCube.h"
+#include "model/term.h"
 #include "solver/simulation.h"
 
 namespace jello {

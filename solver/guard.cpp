@@ -21,13 +21,13 @@ double mechanicalEnergy(const Model& model, const State& state) {
   const int n = model.points();
   for (int q = 0; q < n; ++q)
     energy += 0.5 * model.world.mass * dot(load(state.v(), q, n), load(state.v(), q, n));
-  for (const auto& term : model.scene.terms) term->addEnergy(state.p(), &energy);
+  for (const auto& term : model.forces.terms) term->addEnergy(state.p(), &energy);
   return energy;
 }
 
 DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
   double largestForce = 0;
-  for (const auto& term : model.scene.terms) largestForce += term->largestExternalForce();
+  for (const auto& term : model.forces.terms) largestForce += term->largestExternalForce();
   energyRate_ = largestForce * std::sqrt(model.points() / (2 * model.world.mass));
   restart(initial, 0);
 }

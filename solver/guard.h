@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "physics.h"
+#include "solver/physics.h"
 
 namespace jello {
 

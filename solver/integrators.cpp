@@ -410,16 +410,15 @@ void stepImplicit(StepWork& w, const OdeSystem& system, std::vector<double>& y, 
 
 // The table. Its order is the enum's (checked below), so that a row is found by indexing.
 constexpr std::array<IntegratorInfo, kIntegratorCount> kTable = {{
-    {Integrator::Euler, "EULER", 1, true, false, "the course starter's explicit Euler", stepEuler},
-    {Integrator::Symplectic, "SYMPLECTIC", 1, true, false,
+    {Integrator::Euler, 1, true, false, "the course starter's explicit Euler", stepEuler},
+    {Integrator::Symplectic, 1, true, false,
      "semi-implicit Euler: the velocities first, then the positions with them", stepSymplectic},
-    {Integrator::Midpoint, "MIDPOINT", 2, true, false, "explicit midpoint (RK2)", stepMidpoint},
-    {Integrator::Verlet, "VERLET", 2, true, false, "velocity Verlet, symplectic without dampers",
-     stepVerlet},
-    {Integrator::RK4, "RK4", 4, true, false, "the classic fourth-order Runge-Kutta", stepRk4},
-    {Integrator::RK45, "RK45", 5, true, false,
+    {Integrator::Midpoint, 2, true, false, "explicit midpoint (RK2)", stepMidpoint},
+    {Integrator::Verlet, 2, true, false, "velocity Verlet, symplectic without dampers", stepVerlet},
+    {Integrator::RK4, 4, true, false, "the classic fourth-order Runge-Kutta", stepRk4},
+    {Integrator::RK45, 5, true, false,
      "Dormand-Prince 5(4): adaptive substeps within each dt to --rtol and --atol", stepRk45},
-    {Integrator::Implicit, "IMPLICIT", 1, false, true,
+    {Integrator::Implicit, 1, false, true,
      "backward Euler, Newton with the exact Jacobian: no stability limit on dt", stepImplicit},
 }};
 
@@ -441,35 +440,7 @@ const IntegratorInfo& integratorInfo(Integrator integrator) {
   return kTable[index];
 }
 
-const char* integratorName(Integrator integrator) { return integratorInfo(integrator).name; }
-
 int orderOf(Integrator integrator) { return integratorInfo(integrator).order; }
-
-std::string integratorNameList() {
-  std::string list;
-  for (const IntegratorInfo& row : kTable) {
-    list += row.integrator == kTable.front().integrator  ? ""
-            : row.integrator == kTable.back().integrator ? " or "
-                                                         : ", ";
-    list += row.name;
-  }
-  return list;
-}
-
-bool parseIntegratorName(std::string_view name, Integrator* out) {
-  for (const IntegratorInfo& row : kTable) {
-    std::string_view candidate = row.name;
-    if (candidate.size() != name.size()) continue;
-    bool same = true;
-    for (std::size_t c = 0; c < name.size() && same; ++c)
-      same = std::toupper(static_cast<unsigned char>(name[c])) == candidate[c];
-    if (same) {
-      *out = row.integrator;
-      return true;
-    }
-  }
-  return false;
-}
 
 std::vector<Integrator> integratorsWithStepLimit() {
   std::vector<Integrator> out;
@@ -482,22 +453,11 @@ std::string integratorHelp() {
   std::string help;
   for (const IntegratorInfo& row : kTable) {
     char line[200];
-    std::snprintf(line, sizeof line, "  %-11s order %d  %s\n", row.name, row.order,
-                  row.description);
+    std::snprintf(line, sizeof line, "  %-11s order %d  %s\n", integratorName(row.integrator),
+                  row.order, row.description);
     help += line;
   }
   return help;
-}
-
-OdeSystem jelloSystem(const JelloInputs& inputs) {
-  OdeSystem system;
-  system.derivative = [&inputs](const double* y, double* dydt) {
-    derivative(*inputs.model, y, dydt, inputs.pull, inputs.team);
-  };
-  system.newtonMatrix = [&inputs](const double* y, double cv, double cp, NewtonBlocks& matrix) {
-    newtonBlocks(*inputs.model, y, y + inputs.model->coords(), inputs.pull, cv, cp, &matrix);
-  };
-  return system;
 }
 
 Stepper::Stepper(Integrator integrator, Tolerances tolerances)
@@ -509,11 +469,6 @@ Stepper::Stepper(Stepper&&) noexcept = default;
 Stepper& Stepper::operator=(Stepper&&) noexcept = default;
 
 const StepStats& Stepper::stats() const { return work_->stats; }
-
-void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
-  const JelloInputs inputs{&model, pull, team};
-  step(jelloSystem(inputs), state.y, dt);
-}
 
 void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
   const std::size_t n = y.size();

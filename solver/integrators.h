@@ -13,11 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "physics.h"
-#include "world.h"
+#include "model/model.h"
+#include "model/world.h"
 
 namespace jello {
 
+class Team;           // core/team.h
 struct NewtonBlocks;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
@@ -27,18 +28,6 @@ struct OdeSystem {
   // only.
   std::function<void(const double* y, double cv, double cp, NewtonBlocks& matrix)> newtonMatrix;
 };
-
-// What the jello's system is made of: the model, the user's pull if any, and the team whose two
-// threads share each derivative (physics.h's derivative) if any.
-struct JelloInputs {
-  const Model* model;
-  const Pull* pull = nullptr;
-  Team* team = nullptr;
-};
-// The jello's system: derivative() and newtonMatrix() of `inputs`, which it references:
-// they must outlive it. (One reference fits std::function's own storage: a step allocates
-// nothing.)
-OdeSystem jelloSystem(const JelloInputs& inputs);
 
 // Error control of RK45: a substep is accepted when its estimated local error, per component,
 // is within atol + rtol * |y| in the root-mean-square sense.
@@ -77,18 +66,19 @@ struct StepWork;
 using StepFunction = void (*)(StepWork& work, const OdeSystem& system, std::vector<double>& y,
                               double dt);
 
-// The integrator table: one row per integrator, the only source of their names, orders, help
-// text and properties. integrators.cpp holds the rows, indexed by the enum (world.h) in its
-// order, which is the order every listing uses (--help, --check, --report, --bench). A new
-// integrator is an enumerator in world.h and a row and a step function in integrators.cpp.
+// The integrator table: one row per integrator, the only source of their orders, help text,
+// properties and steps (their names are model/integrator.h's). integrators.cpp holds the rows,
+// indexed by the enum in its order, which is the order every listing uses (--help, --check,
+// --report, --bench). A new integrator is an enumerator and a name in model/integrator.h and a
+// row and a step function in integrators.cpp.
 struct IntegratorInfo {
   Integrator integrator;
-  const char* name;  // canonical upper-case name, as in world files and on command lines
-  int order;         // theoretical order of convergence in dt (RK45: of the solution it keeps)
+  int order;  // theoretical order of convergence in dt (RK45: of the solution it keeps)
   bool boundedStableStep;   // false when A-stable: no dt makes it diverge (IMPLICIT)
   bool needsJacobian;       // its steps use OdeSystem::jacobian
   const char* description;  // one line for help text, lower case, no final full stop
   StepFunction step;
+  const char* name() const { return integratorName(integrator); }  // model/integrator.h's
 };
 
 // Every row, in enum order. Static storage: references stay valid for the whole program.
@@ -115,7 +105,7 @@ class Stepper {
   // (kSmallestSubstep * dt), the step is abandoned: y becomes NaN, so that no caller takes it
   // for a result, and stats().failed counts it.
   void step(const OdeSystem& system, std::vector<double>& y, double dt);
-  // The jello: one step of the model, with the user's pull if any.
+  // The jello: one step of the model, with the user's pull if any (defined by physics.cpp).
   void step(const Model& model, State& state, double dt, const Pull* pull = nullptr,
             Team* team = nullptr);
 

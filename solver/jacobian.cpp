@@ -30,7 +30,7 @@ namespace {
 // How many blocks the model's pattern has: a matrix whose slots list as many fits it.
 std::size_t patternBlockCount(const Model& model) {
   std::size_t blocks = model.points();
-  for (const auto& term : model.scene.terms) blocks += 4 * term->pairCount();
+  for (const auto& term : model.forces.terms) blocks += 4 * term->pairCount();
   return blocks;
 }
 
@@ -38,7 +38,7 @@ std::size_t patternBlockCount(const Model& model) {
 std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
   std::vector<std::pair<int, int>> blocks;
   blocks.reserve(patternBlockCount(model));
-  for (const auto& term : model.scene.terms)
+  for (const auto& term : model.forces.terms)
     for (auto [a, b] : term->pairs())
       for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
         blocks.push_back({row, column});
@@ -187,7 +187,7 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
   std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
   std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
   Assembly assembly(model.points(), out, 1.0 / model.world.mass);
-  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
+  for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
   if (!model.pinned.empty()) zeroPinnedRows(model.pinned, model.points(), out);
 }
@@ -261,14 +261,14 @@ void newtonBlocks(const Model& model, const double* p, const double* v, const Pu
   if (4 * out->pairs.size() + out->point.size() != patternBlockCount(model) ||
       out->points() != model.points()) {
     out->pairs.clear();
-    for (const auto& term : model.scene.terms)
+    for (const auto& term : model.forces.terms)
       for (auto pair : term->pairs()) out->pairs.push_back(pair);
     out->pair.resize(out->pairs.size());
     out->point.resize(model.points());
   }
   // -cp dA/dp - cv dA/dv, dA = dF / mass.
   BlockAssembly assembly(model.points(), out, -cp / model.world.mass, -cv / model.world.mass);
-  for (const auto& term : model.scene.terms) term->addJacobian(p, v, &assembly);
+  for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
   out->pinned = model.pinned;
 }

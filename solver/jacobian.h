@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "physics.h"
+#include "solver/physics.h"
 
 namespace jello {
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -110,6 +111,17 @@ void Simulation::restore(const State& state, long long step) {
   step_ = step;
   time_ = static_cast<double>(step) * dt_;
   outcome_ = {};
+}
+
+std::string tooManyStepsMessage(double time, double dt) {
+  char steps[64] = "more steps than a double can count";
+  if (std::isfinite(time / dt)) std::snprintf(steps, sizeof steps, "%g steps", time / dt);
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "--time %g s at --dt %g s would take %s, more than the %g a run may take; choose a "
+                "shorter --time or a larger --dt",
+                time, dt, steps, kMaxSteps);
+  return text;
 }
 
 }  // namespace jello

@@ -20,10 +20,10 @@
 #include <optional>
 #include <string>
 
-#include "physics.h"
+#include "model/world.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
-#include "world.h"
+#include "solver/physics.h"
 
 namespace jello {
 
@@ -41,6 +41,9 @@ constexpr double kMaxSteps = 1e12;
 // exceeds kMaxSteps (--time 1e16, or --dt 1e-300): no conversion to an integer is attempted then.
 std::optional<long long> stepsForTime(double time, double dt);
 constexpr double kStepSlack = 1e-9;
+// The one line (without "jello: ") that refuses a --time T that stepsForTime cannot count at such a
+// dt.
+std::string tooManyStepsMessage(double time, double dt);
 
 // How an advance ended.
 struct RunOutcome {

@@ -1,8 +1,8 @@
 // 2000 steps of the course worlds against the independent reference results (docs/physics.md).
 #include <gtest/gtest.h>
 
-#include "physics.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {

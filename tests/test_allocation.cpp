@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <new>
 
-#include "physics.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 

@@ -11,15 +11,15 @@
 #include <string>
 #include <tuple>
 
-#include "app/stability.h"
-#include "body.h"
+#include "analysis/stability.h"
 #include "core/team.h"
-#include "forces/springs.h"
-#include "physics.h"
-#include "scene/reader.h"
-#include "scene/spec.h"
+#include "io/scenereader.h"
+#include "model/body.h"
+#include "model/scenespec.h"
+#include "model/springs.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -273,7 +273,7 @@ TEST(SceneBodies, TheEightByEightLatticeOfASceneIsTheCourseCubeBitForBit) {
                                   "velocity = [0.5, 0, 1]\n");
   ASSERT_TRUE(lattice.world.scene->body && lattice.world.scene->body->courseLattice);
   const Model a = makeModel(given.world, given.state), b = makeModel(lattice.world, lattice.state);
-  EXPECT_TRUE(b.scene.springs->rowKernel());
+  EXPECT_TRUE(b.forces.springs->rowKernel());
   double moved = 0;
   for (int c = 0; c < kNumCoords; ++c)
     moved = std::max(moved, std::fabs(given.state.p()[c] - lattice.state.p()[c]));

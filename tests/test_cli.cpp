@@ -10,8 +10,8 @@
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/pictures.h"
-#include "physics.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {

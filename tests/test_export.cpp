@@ -20,7 +20,7 @@
 
 #include "app/export.h"
 #include "app/pictures.h"
-#include "body.h"
+#include "model/body.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 

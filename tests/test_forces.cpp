@@ -6,9 +6,9 @@
 #include <random>
 #include <set>
 
-#include "physics.h"
 #include "solver/guard.h"
 #include "solver/jacobian.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {
@@ -260,7 +260,7 @@ TEST(Plane, APlaneBeyondTheRangeOfDoublesIsRefusedByTheReader) {
   try {
     parseWorld(formatWorld(w, test::restLattice()), "far.w");
     FAIL() << "a plane 1e310 m away was read";
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "far.w:6: the plane is too far from the origin to simulate: d is more than 1e308 "
               "times the largest of |a|, |b|, |c|, beyond the range of doubles (plane d)");

@@ -10,7 +10,7 @@
 #include "graphics/frames.h"
 #include "graphics/image.h"
 #include "graphics/offscreen.h"
-#include "scene/reader.h"
+#include "io/scenereader.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 

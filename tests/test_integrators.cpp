@@ -9,10 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "app/stability.h"
-#include "physics.h"
+#include "analysis/stability.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {
@@ -560,20 +560,20 @@ TEST(IntegratorTable, HasARowPerEnumeratorInOrderWhoseNameParsesBackInAnyCase) {
     const Integrator integrator = static_cast<Integrator>(i);
     const IntegratorInfo& row = integratorInfo(integrator);
     EXPECT_EQ(row.integrator, integrator) << i;
-    EXPECT_STREQ(integratorName(integrator), row.name);
+    EXPECT_STREQ(integratorName(integrator), row.name());
     EXPECT_EQ(orderOf(integrator), row.order);
-    EXPECT_GE(row.order, 1) << row.name;
-    EXPECT_NE(row.step, nullptr) << row.name;
-    EXPECT_GT(std::string(row.description).size(), 10u) << row.name;
-    EXPECT_TRUE(names.insert(row.name).second) << row.name << " twice";
-    std::string lower = row.name;
+    EXPECT_GE(row.order, 1) << row.name();
+    EXPECT_NE(row.step, nullptr) << row.name();
+    EXPECT_GT(std::string(row.description).size(), 10u) << row.name();
+    EXPECT_TRUE(names.insert(row.name()).second) << row.name() << " twice";
+    std::string lower = row.name();
     for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const std::string& spelling : {std::string(row.name), lower}) {
+    for (const std::string& spelling : {std::string(row.name()), lower}) {
       Integrator parsed = integrator == Integrator::RK4 ? Integrator::Euler : Integrator::RK4;
       EXPECT_TRUE(parseIntegratorName(spelling, &parsed)) << spelling;
       EXPECT_EQ(parsed, integrator) << spelling;
     }
-    EXPECT_NE(integratorNameList().find(row.name), std::string::npos) << row.name;
+    EXPECT_NE(integratorNameList().find(row.name()), std::string::npos) << row.name();
   }
   EXPECT_EQ(integratorTable().size(), static_cast<std::size_t>(kIntegratorCount));
   Integrator unused;
@@ -587,7 +587,7 @@ TEST(IntegratorTable, EveryNameReadsBackFromAWorldFile) {
   for (const IntegratorInfo& row : integratorTable()) {
     f.world.integrator = row.integrator;
     EXPECT_EQ(parseWorld(formatWorld(f.world, f.state), "table.w").world.integrator, row.integrator)
-        << row.name;
+        << row.name();
   }
 }
 
@@ -603,15 +603,15 @@ TEST(IntegratorTable, ItsFactsAreWhatTheIntegratorsDo) {
   std::vector<Integrator> bounded;
   for (const IntegratorInfo& row : integratorTable()) {
     const double limit = criticalStep(row.integrator, stiffMode);
-    EXPECT_EQ(std::isfinite(limit), row.boundedStableStep) << row.name << " limit " << limit;
+    EXPECT_EQ(std::isfinite(limit), row.boundedStableStep) << row.name() << " limit " << limit;
     if (row.boundedStableStep) bounded.push_back(row.integrator);
     std::vector<double> y{1, 0};
     Stepper stepper(row.integrator);
     if (row.needsJacobian) {
-      EXPECT_THROW(stepper.step(withoutJacobian, y, 0.01), std::logic_error) << row.name;
+      EXPECT_THROW(stepper.step(withoutJacobian, y, 0.01), std::logic_error) << row.name();
     } else {
-      EXPECT_NO_THROW(stepper.step(withoutJacobian, y, 0.01)) << row.name;
-      EXPECT_EQ(stepper.stats().jacobians, 0) << row.name;
+      EXPECT_NO_THROW(stepper.step(withoutJacobian, y, 0.01)) << row.name();
+      EXPECT_EQ(stepper.stats().jacobians, 0) << row.name();
     }
   }
   EXPECT_EQ(kExplicitIntegrators, bounded);
@@ -623,8 +623,8 @@ TEST(IntegratorTable, HelpListsEveryIntegratorWithItsOrderAndDescription) {
   test::CommandResult help = test::runJello("--help");
   ASSERT_EQ(help.status, 0) << help.err;
   for (const IntegratorInfo& row : integratorTable()) {
-    const std::size_t at = help.out.find("  " + std::string(row.name) + " ");
-    ASSERT_NE(at, std::string::npos) << row.name << "\n" << help.out;
+    const std::size_t at = help.out.find("  " + std::string(row.name()) + " ");
+    ASSERT_NE(at, std::string::npos) << row.name() << "\n" << help.out;
     const std::string rest = help.out.substr(at, help.out.find('\n', at) - at);
     EXPECT_NE(rest.find("order " + std::to_string(row.order)), std::string::npos) << rest;
     EXPECT_NE(rest.find(row.description), std::string::npos) << rest;

@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "core/team.h"
-#include "physics.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -34,7 +34,7 @@ double kernelsDisagreeBy(const World& world, const State& start,
                          Integrator integrator = Integrator::RK4) {
   Model specialised = makeModel(world, start, KernelChoice::Specialised);
   Model general = makeModel(world, start, KernelChoice::General);
-  EXPECT_TRUE(specialised.scene.culling && !general.scene.culling);
+  EXPECT_TRUE(specialised.forces.culling && !general.forces.culling);
   State a = start, b = start;
   Stepper sa(integrator), sb(integrator);
   double worst = 0;
@@ -188,8 +188,8 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
     State start;
     World w = randomWorld(random, &start);
     double d = kernelsDisagreeBy(w, start);
-    std::printf("random world %d (%s): %.3g\n", world, sceneLine(makeModel(w, start).scene).c_str(),
-                d);
+    std::printf("random world %d (%s): %.3g\n", world,
+                termsLine(makeModel(w, start).forces).c_str(), d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
   }
 }
@@ -212,7 +212,7 @@ TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
       Stepper stepper(Integrator::RK4);
       for (int step = 0; step < 300; ++step) stepper.step(model, s, w.dt);
       const Bounds box = boundsOf(s.p(), kNumPoints);
-      const Bounds* reach = model.scene.culling ? &box : nullptr;
+      const Bounds* reach = model.forces.culling ? &box : nullptr;
       State other = s;
       for (int c = 0; c < kNumCoords; ++c) other.p()[c] += 0.01 * std::sin(c);
       std::vector<double> junk(kNumCoords);
@@ -362,7 +362,7 @@ TEST(Culling, APointJustPastAWallOrThePlaneIsNotMissed) {
 }
 
 // What a specialised scene keeps and what it leaves out, for a world at rest.
-std::string sceneOf(const World& w) { return sceneLine(makeModel(w, test::restLattice()).scene); }
+std::string sceneOf(const World& w) { return termsLine(makeModel(w, test::restLattice()).forces); }
 
 TEST(Scene, FieldAndPlaneAnalysis) {
   World w;

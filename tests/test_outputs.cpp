@@ -17,8 +17,9 @@
 #include <thread>
 #include <vector>
 
+#include "analysis/stability.h"
 #include "app/commandline.h"
-#include "app/stability.h"
+#include "core/exitstatus.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "test_support.h"
@@ -494,13 +495,17 @@ TEST(ReportFiles, AHandEditedScriptOrPictureIsNeverReplacedWithoutOverwrite) {
 
 // ---- Item 12: numbers and names on the command line -----------------------------------------
 
+// kGoOn when the command is to go on, else the exit status its outcome gets.
+constexpr int kGoOn = -1;
 int parse(std::vector<std::string> args, JelloCommand* command) {
   args.insert(args.begin(), "jello");
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
-  int status = parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), command);
+  const ParsedCommand parsed =
+      parseJelloCommandLine(static_cast<int>(argv.size()), argv.data(), command);
+  const int status = parsed.goOn ? kGoOn : exitStatusOf(parsed.outcome);
   ::testing::internal::GetCapturedStdout();
   ::testing::internal::GetCapturedStderr();
   return status;

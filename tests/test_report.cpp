@@ -9,7 +9,7 @@
 #include <regex>
 #include <sstream>
 
-#include "app/report.h"
+#include "analysis/report.h"
 #include "test_support.h"
 
 namespace jello {

@@ -12,8 +12,8 @@
 #include <functional>
 
 #include "core/memory.h"
-#include "physics.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {
@@ -241,7 +241,7 @@ TEST(MemoryLimits, MaxMemoryStandsInForTheMachinesMemory) {
   try {
     readWorldFile(out);
     ADD_FAILURE() << "read under a limit it exceeds";
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(
         std::string(e.what()),
         out +

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/runqueue.h"
+#include "analysis/runqueue.h"
 
 namespace jello {
 namespace {

@@ -9,15 +9,15 @@
 #include <random>
 #include <string>
 
-#include "app/contacts.h"
-#include "app/stability.h"
-#include "forces/field.h"
-#include "forces/obstacle.h"
-#include "physics.h"
-#include "scene/reader.h"
-#include "scene/spec.h"
+#include "analysis/contacts.h"
+#include "analysis/stability.h"
+#include "io/scenereader.h"
+#include "model/field.h"
+#include "model/obstacle.h"
+#include "model/scenespec.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -75,7 +75,7 @@ TEST(SceneFile, AFieldFromExpressionsUniformOrNone) {
   try {
     scene("[field]\nexpression = \"" + longest + "1; 0; 0\"\n");
     ADD_FAILURE() << "an expression of 1001 characters was accepted";
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "test.toml:2: longer than 1000 characters (field.expression)");
   }
   const WorldFile uniform = scene("[field]\nuniform = [0, 0, -0.02]\n");
@@ -188,14 +188,14 @@ TEST(Pins, APinnedPointDoesNotMoveByASingleUlp) {
   for (const IntegratorInfo& row : integratorTable()) {
     const Model model = makeModel(f.world, f.state);
     Simulation run(model, f.state, row.integrator, f.world.dt);
-    ASSERT_TRUE(run.advance(row.needsJacobian ? 20 : 300).ran()) << row.name;
+    ASSERT_TRUE(run.advance(row.needsJacobian ? 20 : 300).ran()) << row.name();
     double moved = 0, free = 0;
     for (int q = 0; q < kNumPoints; ++q) {
       const double d = length(load(run.state().p(), q) - load(f.state.p(), q));
       (std::binary_search(pinned.begin(), pinned.end(), q) ? moved : free) += d;
     }
-    EXPECT_EQ(moved, 0) << row.name;
-    EXPECT_GT(free, 1e-4) << row.name << ": the rest of the jelly falls";
+    EXPECT_EQ(moved, 0) << row.name();
+    EXPECT_GT(free, 1e-4) << row.name() << ": the rest of the jelly falls";
   }
 }
 
@@ -522,7 +522,7 @@ TEST(SceneFile, RefusesEveryMalformedSceneWithItsLineAndKey) {
     try {
       scene(m.text);
       ADD_FAILURE() << "accepted:\n" << m.text;
-    } catch (const WorldFileError& e) {
+    } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(m.message), std::string::npos)
           << "for:\n"
           << m.text << "got: " << e.what() << "\nwanted: " << m.message;

@@ -7,9 +7,10 @@
 #include <random>
 
 #include "app/headless.h"
-#include "physics.h"
+#include "core/exitstatus.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
+#include "solver/physics.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "app/stability.h"
+#include "analysis/stability.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"

@@ -7,7 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "app/stability.h"
+#include "analysis/stability.h"
+#include "io/input.h"
 #include "solver/integrators.h"
 
 namespace jello {

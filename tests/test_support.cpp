@@ -15,10 +15,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "app/stability.h"
+#include "analysis/stability.h"
+#include "model/vec3.h"
 #include "solver/integrators.h"
 #include "solver/simulation.h"
-#include "vec3.h"
 
 namespace jello::test {
 
@@ -61,8 +61,8 @@ State expectEveryIntegratorsOrder(const Model& model, const State& start, double
     const double coarse = rmsDistance(run(row.integrator, dt), reference);
     const double fine = rmsDistance(run(row.integrator, dt / 2), reference);
     const double order = std::log2(coarse / fine);
-    std::printf("%s: errors %.3g, %.3g: order %.2f\n", row.name, coarse, fine, order);
-    EXPECT_NEAR(order, row.order, 0.35) << row.name;
+    std::printf("%s: errors %.3g, %.3g: order %.2f\n", row.name(), coarse, fine, order);
+    EXPECT_NEAR(order, row.order, 0.35) << row.name();
   }
   return reference;
 }

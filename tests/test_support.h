@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "physics.h"
-#include "world.h"
+#include "io/input.h"
+#include "model/world.h"
+#include "solver/physics.h"
 
 namespace jello::test {
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "physics.h"
+#include "solver/physics.h"
 #include "test_support.h"
 
 namespace jello {
@@ -91,10 +91,10 @@ TEST(ForceTerms, EachJacobianMatchesFiniteDifferencesOfItsForce) {
   const World w = everyTermWorld();
   const State s = contactState();
   const Model model = makeModel(w, s, KernelChoice::General);
-  ASSERT_EQ(model.scene.terms.size(), 4u);
+  ASSERT_EQ(model.forces.terms.size(), 4u);
   std::vector<double> p(s.p(), s.p() + kNumCoords), v(s.v(), s.v() + kNumCoords);
   std::mt19937 random(5);
-  for (const auto& term : model.scene.terms) {
+  for (const auto& term : model.forces.terms) {
     for (bool velocity : {false, true}) {
       DenseSink sink(term->pairs(), velocity);
       term->addJacobian(p.data(), v.data(), &sink);
@@ -131,7 +131,7 @@ TEST(ForceTerms, EachStoredEnergyIsThePotentialOfItsForce) {
   std::vector<double> p(s.p(), s.p() + kNumCoords), v(kNumCoords, 0.0);
   std::mt19937 random(3);
   int checked = 0;
-  for (const auto& term : model.scene.terms) {
+  for (const auto& term : model.forces.terms) {
     if (term->largestExternalForce() > 0) continue;
     const std::vector<double> force = termForce(*term, p, v);
     // The 30 coordinates the term pushes hardest, and 30 at random.
@@ -167,7 +167,7 @@ TEST(ForceTerms, AReachTestThatSaysNoMeansNoForce) {
   const World w = everyTermWorld();
   const State touching = contactState(), rest = test::restLattice();
   const Model model = makeModel(w, touching, KernelChoice::General);
-  for (const auto& term : model.scene.terms) {
+  for (const auto& term : model.forces.terms) {
     for (const State* s : {&touching, &rest}) {
       std::vector<double> p(s->p(), s->p() + kNumCoords), v(s->v(), s->v() + kNumCoords);
       const std::vector<double> f = termForce(*term, p, v);
@@ -197,7 +197,7 @@ TEST(ForceTerms, ContactsCountThePointsTheyPushAndTheSmoothTermsNone) {
   const Model model = makeModel(w, touching, KernelChoice::General);
   const int acrossPlane = pointsAcrossPlane(model, touching);
   ASSERT_GT(acrossPlane, 0);
-  for (const auto& term : model.scene.terms) {
+  for (const auto& term : model.forces.terms) {
     const std::string label = term->describe(touching.p())[0].label;
     const int expected = label == "walls" ? beyondWall : label == "plane" ? acrossPlane : 0;
     EXPECT_EQ(term->pointsInContact(touching.p()), expected) << label;
@@ -205,7 +205,7 @@ TEST(ForceTerms, ContactsCountThePointsTheyPushAndTheSmoothTermsNone) {
   }
   w.kCollision = w.dCollision = 0;
   const Model without = makeModel(w, touching, KernelChoice::General);
-  for (const auto& term : without.scene.terms)
+  for (const auto& term : without.forces.terms)
     EXPECT_EQ(term->pointsInContact(touching.p()), 0) << term->describe(touching.p())[0].label;
 }
 

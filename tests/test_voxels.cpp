@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/voxels.h"
+#include "io/voxels.h"
 #include "test_support.h"
 
 namespace jello {

@@ -9,9 +9,10 @@
 #include <iterator>
 #include <random>
 
+#include "io/input.h"
+#include "model/vec3.h"
+#include "model/world.h"
 #include "test_support.h"
-#include "vec3.h"
-#include "world.h"
 
 namespace jello {
 namespace {
@@ -164,12 +165,12 @@ std::string readerMessage(const std::string& text, const std::string& path) {
   std::string fromMemory, fromFile;
   try {
     parseWorld(text, path);
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     fromMemory = e.what();
   }
   try {
     readWorldFile(path);
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     fromFile = e.what();
   }
   EXPECT_EQ(fromMemory, fromFile);
@@ -309,7 +310,7 @@ TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
     EXPECT_EQ(problem->part, c.part) << c.what;
     EXPECT_EQ(problem->index, c.index) << c.what;
     EXPECT_EQ(problem->what, c.what);
-    EXPECT_THROW(parseWorld(formatWorld(f.world, f.state), "spoilt.w"), WorldFileError) << c.what;
+    EXPECT_THROW(parseWorld(formatWorld(f.world, f.state), "spoilt.w"), InputError) << c.what;
   }
 }
 
@@ -339,7 +340,7 @@ TEST_P(MalformedWorld, IsRejectedNamingFileLineAndField) {
   try {
     parseWorld(c.text, "bad.w");
     FAIL() << "accepted";
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     std::string message = e.what();
     std::string prefix = "bad.w:" + std::to_string(c.line) + ": ";
     EXPECT_EQ(message.rfind(prefix, 0), 0u) << message;
@@ -353,11 +354,11 @@ INSTANTIATE_TEST_SUITE_P(Cases, MalformedWorld, ::testing::ValuesIn(test::malfor
                          [](const auto& testInfo) { return testInfo.param.name; });
 
 TEST(WorldReader, UnreadablePathsGiveOneLineErrors) {
-  EXPECT_THROW(readWorldFile("/no/such/file.w"), WorldFileError);
+  EXPECT_THROW(readWorldFile("/no/such/file.w"), InputError);
   try {
     readWorldFile(JELLO_TEST_DATA);
     FAIL() << "a directory was read";
-  } catch (const WorldFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("directory"), std::string::npos) << e.what();
   }
 }

@@ -1,0 +1,214 @@
+// bench.cpp: timings of the force kernels and the integrators. Medians of repeated runs, as
+// the machines are shared and noisy; never used as a pass/fail threshold.
+
+#include "analysis/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/team.h"
+#include "solver/integrators.h"
+#include "solver/physics.h"
+#include "solver/simulation.h"
+
+namespace jello {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+using Work = std::function<void(long long)>;
+
+// A kernel timed: a model's, on this thread alone or with a team.
+struct Kernel {
+  const Model* model;
+  Team* team;  // null: one thread
+};
+
+// Seconds per call of each work(count), the medians over `repeats` runs of each. The works
+// take turns, so that a change in the machine's load falls on both alike and their ratio
+// holds. Without a fixed count, the first work's first calls size it to about kBenchSeconds.
+std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long long fixedCount,
+                                         int repeats) {
+  long long count = fixedCount;
+  if (count <= 0) {
+    count = 1;
+    for (;;) {
+      Clock::time_point start = Clock::now();
+      works.front()(count);
+      double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if (seconds >= kBenchSeconds / 4 || count >= (1LL << 30)) {
+        count =
+            std::max(1LL, static_cast<long long>(count * kBenchSeconds / std::max(seconds, 1e-9)));
+        break;
+      }
+      count *= 4;
+    }
+  }
+  std::vector<std::vector<double>> perCall(works.size());
+  for (int r = 0; r < repeats; ++r) {
+    for (std::size_t w = 0; w < works.size(); ++w) {
+      Clock::time_point start = Clock::now();
+      works[w](count);
+      perCall[w].push_back(std::chrono::duration<double>(Clock::now() - start).count() / count);
+    }
+  }
+  std::vector<double> medians;
+  for (std::vector<double>& times : perCall) {
+    std::sort(times.begin(), times.end());
+    medians.push_back(times[times.size() / 2]);
+  }
+  return medians;
+}
+
+struct StepTiming {
+  double seconds = 0;
+  double evaluationsPerStep = 0;
+  bool diverged = false;
+};
+
+// Steps of each model as a run takes them (Simulation: the stepper and the checks), from the
+// initial state every time, so that each run does the same work.
+std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const State& initial,
+                                  Integrator integrator, double dt, const RunOptions& run,
+                                  long long fixedSteps, int repeats) {
+  std::vector<StepTiming> timings(kernels.size());
+  std::vector<long long> steps(kernels.size()), evaluations(kernels.size());
+  // Made once, outside the timing: making one passes over the field's nodes (the guard's bound).
+  std::vector<std::unique_ptr<Simulation>> simulations;
+  for (const Kernel& kernel : kernels) {
+    simulations.push_back(
+        std::make_unique<Simulation>(*kernel.model, initial, integrator, dt, run.tolerances));
+    simulations.back()->setTeam(kernel.team);
+  }
+  std::vector<Work> works;
+  for (std::size_t m = 0; m < kernels.size(); ++m) {
+    works.push_back([&, m](long long count) {
+      Simulation& simulation = *simulations[m];
+      simulation.restart(initial);
+      timings[m].diverged = !simulation.advance(count).ran() || timings[m].diverged;
+      steps[m] += simulation.step();
+      evaluations[m] += simulation.stats().evaluations + simulation.stats().jacobians;
+    });
+  }
+  std::vector<double> seconds = medianSecondsPerCall(works, fixedSteps, repeats);
+  for (std::size_t m = 0; m < kernels.size(); ++m) {
+    timings[m].seconds = seconds[m];
+    timings[m].evaluationsPerStep = static_cast<double>(evaluations[m]) / steps[m];
+  }
+  return timings;
+}
+
+std::vector<double> timeForces(const std::vector<Kernel>& kernels, const State& state,
+                               long long fixedCount, int repeats) {
+  std::vector<double> force(state.coords());
+  std::vector<Work> works;
+  for (const Kernel& kernel : kernels) {
+    works.push_back([&, kernel](long long count) {
+      for (long long i = 0; i < count; ++i)
+        computeForces(*kernel.model, state.p(), state.v(), force.data(), nullptr, kernel.team);
+    });
+  }
+  return medianSecondsPerCall(works, fixedCount, repeats);
+}
+
+}  // namespace
+
+std::string machineDescription() {
+  std::string cpu = "unknown processor";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  std::string compiler =
+#if defined(__clang__)
+      "clang++ " __clang_version__;
+#elif defined(__GNUC__)
+      "g++ " __VERSION__;
+#else
+      "unknown compiler";
+#endif
+  return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores, " + compiler;
+}
+
+Outcome runBench(const RunOptions& run) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
+  const World& world = file.world;
+  const Model specialised = makeModel(world, file.state, KernelChoice::Specialised);
+  const Model general = makeModel(world, file.state, KernelChoice::General);
+  const long long fixed = run.steps ? std::max(1LL, *run.steps) : 0;
+  const int repeats = run.steps ? 3 : kBenchRepeats;
+
+  std::printf("%s\n", termsLine(specialised.forces).c_str());
+  std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
+  std::printf(
+      "medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
+      "general = every term at every point\n\n",
+      repeats, world.dt);
+  std::fflush(stdout);
+
+  Team team;
+  const std::vector<Kernel> kernels = {
+      {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
+  const std::vector<double> forces = timeForces(kernels, file.state, fixed, repeats);
+  const double forcesS = forces[0], forcesG = forces[1], forcesT = forces[2];
+  // The world's text is parsed from memory: the file itself may be a pipe, read once already.
+  const std::string text = formatWorld(world, file.state);
+  double loading = medianSecondsPerCall({[&](long long count) {
+                                          for (long long i = 0; i < count; ++i)
+                                            parseWorld(text, run.worldPath);
+                                        }},
+                                        run.steps ? 1 : 0, repeats)[0];
+  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", loading * 1e3,
+              world.field.resolution > 0
+                  ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
+                  : "no field");
+  std::printf("%-22s %14s %14s %9s %14s %9s\n", "", "specialised", "general", "speed-up",
+              "two threads", "speed-up");
+  std::printf("%-22s %11.2f us %11.2f us %8.2fx %11.2f us %8.2fx\n", "force evaluation",
+              forcesS * 1e6, forcesG * 1e6, forcesG / forcesS, forcesT * 1e6, forcesS / forcesT);
+  std::printf("%-22s %14.0f %14.0f %9s %14.0f\n", "evaluations per second", 1 / forcesS,
+              1 / forcesG, "", 1 / forcesT);
+  std::printf("\n%-22s %14s %14s %9s %14s %9s  %s\n", "us per step", "specialised", "general",
+              "speed-up", "two threads", "speed-up", "evaluations/step");
+  for (const IntegratorInfo& row : integratorTable()) {
+    const Integrator integrator = row.integrator;
+    // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
+    // steps tell.
+    long long steps = fixed ? fixed : row.needsJacobian ? 3 : 0;
+    // A diverging run would time arithmetic on huge numbers: an integrator that diverges at the
+    // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
+    constexpr int kHalvings = 12;
+    double dt = world.dt;
+    std::vector<StepTiming> timings =
+        timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
+    for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
+      dt /= 2;
+      timings = timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
+    }
+    const StepTiming &s = timings[0], &g = timings[1], &t = timings[2];
+    char note[96] = "";
+    if (s.diverged || g.diverged)
+      std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
+    else if (dt != world.dt)
+      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
+    std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(integrator),
+                s.seconds * 1e6, g.seconds * 1e6, g.seconds / s.seconds, t.seconds * 1e6,
+                s.seconds / t.seconds, s.evaluationsPerStep, note);
+    std::fflush(stdout);
+  }
+  return succeeded();
+}
+
+}  // namespace jello

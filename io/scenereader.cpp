@@ -1,0 +1,626 @@
+// scene/reader.cpp: the scene file reader (reader.h; the keys are documented in docs/scenes.md).
+
+#include "io/scenereader.h"
+
+#include <toml++/toml.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+#include <iterator>
+#include <memory>
+
+#include "core/readfile.h"
+#include "io/fieldrecipe.h"
+#include "io/voxels.h"
+#include "model/scenespec.h"
+
+namespace jello {
+
+namespace {
+
+// `text` in one line: a control character (a quoted TOML key may hold one, and toml++ quotes
+// the character it stopped at) is named instead, as <newline>, <tab> or <U+00NN>. Not through
+// printable(): printError escapes the whole message again, which would double its backslashes.
+std::string oneLine(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u != 0x7f)
+      out += c;
+    else if (c == '\n')
+      out += "<newline>";
+    else if (c == '\t')
+      out += "<tab>";
+    else {
+      static const char kHex[] = "0123456789ABCDEF";
+      out += "<U+00";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+      out += '>';
+    }
+  }
+  return out;
+}
+
+// Reads the scene's keys, refusing any it does not know and any value it cannot use.
+class Reader {
+ public:
+  Reader(std::string name, std::string folder)
+      : name_(std::move(name)), folder_(std::move(folder)) {}
+
+  [[noreturn]] void fail(const toml::node& at, const std::string& key,
+                         const std::string& what) const {
+    throw InputError(name_ + ":" + std::to_string(at.source().begin.line) + ": " + oneLine(what) +
+                     " (" + oneLine(key) + ")");
+  }
+
+  // Every key of `table` is one of `known`.
+  void onlyKeys(const toml::table& table, const std::string& path,
+                std::initializer_list<const char*> known) const {
+    for (auto&& [key, node] : table) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || key.str() == k;
+      if (!ok) fail(node, path + std::string(key.str()), "unknown key");
+    }
+  }
+
+  // A finite number, at least `lowest` (or above it when `strictly`).
+  std::optional<double> number(const toml::table& table, const std::string& path, const char* key,
+                               double lowest = -INFINITY, bool strictly = false) const {
+    const toml::node* node = table.get(key);
+    if (!node) return std::nullopt;
+    const std::string full = path + key;
+    std::optional<double> value = node->is_number() ? node->value<double>() : std::nullopt;
+    if (!value) fail(*node, full, "expected a number");
+    if (!std::isfinite(*value)) fail(*node, full, "is not finite");
+    checkMagnitude(*node, full, *value);
+    if (strictly ? !(*value > lowest) : !(*value >= lowest))
+      fail(*node, full,
+           std::string("must be ") + (strictly ? "above " : "at least ") + textOf(lowest));
+    return value;
+  }
+
+  void checkMagnitude(const toml::node& at, const std::string& key, double value) const {
+    if (std::fabs(value) > kLargestSceneNumber)
+      fail(at, key, "is beyond " + textOf(kLargestSceneNumber) + " in magnitude");
+  }
+
+  std::optional<Vec3> vector(const toml::table& table, const std::string& path,
+                             const char* key) const {
+    const toml::node* node = table.get(key);
+    if (!node) return std::nullopt;
+    const toml::array* array = node->as_array();
+    if (!array || array->size() != 3) fail(*node, path + key, "expected 3 numbers [x, y, z]");
+    double xyz[3];
+    for (int i = 0; i < 3; ++i) {
+      const toml::node& item = *array->get(i);
+      std::optional<double> value = item.is_number() ? item.value<double>() : std::nullopt;
+      if (!value) fail(item, path + key, "expected 3 numbers [x, y, z]");
+      if (!std::isfinite(*value)) fail(item, path + key, "is not finite");
+      checkMagnitude(item, path + key, *value);
+      xyz[i] = *value;
+    }
+    return Vec3{xyz[0], xyz[1], xyz[2]};
+  }
+
+  const toml::table* table(const toml::table& parent, const std::string& path,
+                           const char* key) const {
+    const toml::node* node = parent.get(key);
+    if (!node) return nullptr;
+    if (!node->is_table()) fail(*node, path + key, "expected a table");
+    return node->as_table();
+  }
+
+  // An array of tables ([[sphere]]), each handed to `each` with its path ("sphere[2].").
+  template <class Each>
+  void tables(const toml::table& parent, const char* key, Each each) const {
+    const toml::node* node = parent.get(key);
+    if (!node) return;
+    const toml::array* array = node->as_array();
+    if (!array || !array->is_array_of_tables())
+      fail(*node, key, "expected [[" + std::string(key) + "]] tables");
+    for (std::size_t i = 0; i < array->size(); ++i)
+      each(*array->get(i)->as_table(), std::string(key) + "[" + std::to_string(i + 1) + "].");
+  }
+
+  const std::string& name() const { return name_; }
+  const std::string& folder() const { return folder_; }
+
+ public:
+  static std::string textOf(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+  }
+
+ private:
+  std::string name_, folder_;
+};
+
+}  // namespace
+
+namespace {
+
+// A scene without `world`: the course's usual parameters (world/rotate.w's), the cube's rest
+// lattice centred on the origin, at rest.
+WorldFile defaultWorld() {
+  WorldFile file;
+  World& w = file.world;
+  w.integrator = Integrator::RK4;
+  w.dt = 0.0005;
+  w.n = 10;
+  w.kElastic = 500;
+  w.dElastic = 0.25;
+  w.kCollision = 1000;
+  w.dCollision = 0.25;
+  w.mass = 1.0 / kNumPoints;
+  for (int i = 0; i < kLatticeSize; ++i)
+    for (int j = 0; j < kLatticeSize; ++j)
+      for (int k = 0; k < kLatticeSize; ++k)
+        store(file.state.p(), pointIndex(i, j, k),
+              kRestSpacing * Vec3{double(i), double(j), double(k)} - Vec3{0.5, 0.5, 0.5});
+  return file;
+}
+
+// The course world a scene starts from, its path relative to the scene's folder.
+WorldFile baseWorld(const Reader& r, const toml::table& root) {
+  const toml::node* node = root.get("world");
+  if (!node) return defaultWorld();
+  const std::optional<std::string> path = node->value<std::string>();
+  if (!path || path->empty()) r.fail(*node, "world", "expected the path of a course world (.w)");
+  const std::string full =
+      (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+  try {
+    return readWorldFile(full);
+  } catch (const InputError& e) {
+    r.fail(*node, "world", e.what());
+  }
+}
+
+void readRun(const Reader& r, const toml::table& root, World* w) {
+  if (const toml::node* node = root.get("integrator")) {
+    const std::optional<std::string> text = node->value<std::string>();
+    if (!text || !parseIntegratorName(*text, &w->integrator))
+      r.fail(*node, "integrator", "expected one of " + integratorNameList());
+  }
+  if (auto dt = r.number(root, "", "dt", 0, true)) w->dt = *dt;
+  if (const toml::node* node = root.get("n")) {
+    const std::optional<std::int64_t> n =
+        node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+    if (!n || *n < 1 || *n > 1000000)
+      r.fail(*node, "n", "expected a whole number from 1 to 1000000");
+    w->n = static_cast<int>(*n);
+  }
+}
+
+// [field]: the force field (N on each point), replacing the course world's: "fx; fy; fz"
+// expressions or one uniform force, at a resolution; or none (present = false).
+void readField(const Reader& r, const toml::table& root, ForceField* field) {
+  const toml::table* t = r.table(root, "", "field");
+  if (!t) return;
+  r.onlyKeys(*t, "field.", {"present", "expression", "uniform", "resolution"});
+  const int given =
+      (t->get("present") ? 1 : 0) + (t->get("expression") ? 1 : 0) + (t->get("uniform") ? 1 : 0);
+  if (given != 1) r.fail(*t, "field", "give one of expression, uniform or present = false");
+  if (const toml::node* present = t->get("present")) {
+    if (present->value<bool>() != std::optional<bool>(false))
+      r.fail(*present, "field.present",
+             "expected false (no field; a field gives expression or uniform)");
+    if (const toml::node* resolution = t->get("resolution"))
+      r.fail(*resolution, "field.resolution", "a field that is not present has no resolution");
+    *field = ForceField{};
+    return;
+  }
+  FieldRecipe recipe;
+  recipe.label = "";
+  if (const toml::node* node = t->get("resolution")) {
+    const std::optional<std::int64_t> n =
+        node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+    if (!n || *n < 2 || *n > kMostSceneFieldResolution)
+      r.fail(*node, "field.resolution",
+             "expected a whole number from 2 to " + std::to_string(kMostSceneFieldResolution));
+    recipe.resolution = static_cast<int>(*n);
+  }
+  const char* key = t->get("expression") ? "expression" : "uniform";
+  const toml::node& node = *t->get(key);
+  if (key[0] == 'u') {
+    recipe.source = FieldRecipe::Source::Uniform;
+    recipe.uniform = *r.vector(*t, "field.", "uniform");
+  } else {
+    const std::optional<std::string> text = node.value<std::string>();
+    if (!text) r.fail(node, "field.expression", "expected a string \"fx; fy; fz\"");
+    if (text->size() > kMostFieldExpressionBytes)
+      r.fail(node, "field.expression",
+             "longer than " + std::to_string(kMostFieldExpressionBytes) + " characters");
+    recipe.source = FieldRecipe::Source::Expression;
+    recipe.expression = *text;
+  }
+  try {
+    *field = buildField(recipe);
+  } catch (const InputError& e) {
+    r.fail(node, std::string("field.") + key, e.what());
+  }
+}
+
+// A whole number in [lowest, highest].
+int wholeNumber(const Reader& r, const toml::node& node, const std::string& key, int lowest,
+                int highest) {
+  const std::optional<std::int64_t> value = node.value<std::int64_t>();
+  if (!node.is_integer() || !value || *value < lowest || *value > highest)
+    r.fail(node, key,
+           "expected a whole number from " + std::to_string(lowest) + " to " +
+               std::to_string(highest));
+  return static_cast<int>(*value);
+}
+
+// The body of [jelly]'s shape: a lattice (the course's cube when it is 8x8x8 at 1/7 m), or the
+// voxels of a ball or of a mesh (scene/voxels.h).
+Body readShape(const Reader& r, const toml::table& t, const std::string& shape, double spacing) {
+  const toml::node& at = *t.get("shape");
+  if (shape == "lattice") {
+    const toml::node* size = t.get("size");
+    if (!size) r.fail(at, "jelly.size", "a lattice needs its size = [nx, ny, nz]");
+    const toml::array* array = size->as_array();
+    if (!array || array->size() != 3) r.fail(*size, "jelly.size", "expected [nx, ny, nz]");
+    int n[3];
+    for (int i = 0; i < 3; ++i)
+      n[i] = wholeNumber(r, *array->get(i), "jelly.size", 2, kMostBodyPoints);
+    return latticeBody(n[0], n[1], n[2], spacing);
+  }
+  VoxelGrid grid;
+  std::string why, what;
+  if (shape == "sphere") {
+    const std::optional<double> radius = r.number(t, "jelly.", "radius", 0, true);
+    if (!radius) r.fail(at, "jelly.radius", "a sphere needs its radius (m)");
+    if (!voxeliseSphere(*radius, spacing, &grid, &why))
+      r.fail(*t.get("radius"), "jelly.radius", why);
+    what = "a ball of radius " + Reader::textOf(*radius) + " m";
+  } else if (shape == "mesh") {
+    const toml::node* node = t.get("mesh");
+    const std::optional<std::string> path = node ? node->value<std::string>() : std::nullopt;
+    if (!node) r.fail(at, "jelly.mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
+    if (!path || path->empty()) r.fail(*node, "jelly.mesh", "expected the path of an OBJ file");
+    const std::string full =
+        (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+    TriangleMesh mesh;
+    if (!readObjMesh(full, &mesh, &why) || !voxeliseMesh(mesh, spacing, &grid, &why))
+      r.fail(*node, "jelly.mesh", why);
+    keepLargestPiece(&grid);
+    what = "the voxels of " + *path;
+  } else {
+    r.fail(at, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  }
+  return voxelBody(grid, spacing, what);  // where the voxels lie is the body's placement's
+}
+
+// The jelly's body when [jelly] gives a shape, or null (the course cube). Its spacing is the
+// voxels' edge: 1/7 m, the course's, unless given.
+std::shared_ptr<const Body> readBody(const Reader& r, const toml::table& t) {
+  const toml::node* node = t.get("shape");
+  for (const char* key : {"size", "spacing", "radius", "mesh"})
+    if (!node && t.get(key))
+      r.fail(*t.get(key), std::string("jelly.") + key,
+             "give the jelly's shape (\"lattice\", \"sphere\" or \"mesh\") with it");
+  if (!node) return nullptr;
+  const std::optional<std::string> shape = node->value<std::string>();
+  if (!shape) r.fail(*node, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  for (const auto& [key, owner] :
+       {std::pair{"size", "lattice"}, {"radius", "sphere"}, {"mesh", "mesh"}})
+    if (t.get(key) && *shape != owner)
+      r.fail(*t.get(key), std::string("jelly.") + key,
+             "belongs to shape = \"" + std::string(owner) + "\", not \"" + *shape + "\"");
+  const double spacing =
+      r.number(t, "jelly.", "spacing", kSmallestSpacing, false).value_or(kRestSpacing);
+  if (spacing > kLargestSpacing)
+    r.fail(*t.get("spacing"), "jelly.spacing",
+           "must be at most " + Reader::textOf(kLargestSpacing));
+  return std::make_shared<Body>(readShape(r, t, *shape, spacing));
+}
+
+// A stiffness or damping: one number for every kind of spring, or a table by kind
+// ({structural = ..., shear = ..., bend = ...}; a kind left out keeps *all, the world's).
+void readByKind(const Reader& r, const toml::table& t, const char* key, double* all,
+                std::array<double, kSpringKinds>* byKind, bool* perKind) {
+  const toml::node* node = t.get(key);
+  if (!node) return;
+  const std::string path = std::string("jelly.") + key;
+  if (const toml::table* kinds = node->as_table()) {
+    r.onlyKeys(*kinds, path + ".", {"structural", "shear", "bend"});
+    for (int kind = 0; kind < kSpringKinds; ++kind)
+      if (auto v = r.number(*kinds, path + ".", springKindName(SpringKind(kind)), 0))
+        (*byKind)[kind] = *v;
+    *perKind = true;
+    return;
+  }
+  *all = *r.number(t, "jelly.", key, 0);
+  byKind->fill(*all);
+}
+
+// The jelly's rest placement: a shaped body centred on the origin (the middle of its grid).
+State placedBody(const Body& body) {
+  const int n = body.count();
+  State state(n);
+  const Vec3 middle =
+      0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
+  for (int q = 0; q < n; ++q) store(state.p(), q, n, body.restPosition(q) - middle);
+  return state;
+}
+
+void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneSpec* spec) {
+  const toml::table* t = r.table(root, "", "jelly");
+  if (!t) return;
+  r.onlyKeys(*t, "jelly.",
+             {"mass", "total_mass", "stiffness", "damping", "offset", "velocity", "shape", "size",
+              "spacing", "radius", "mesh"});
+  World& w = file->world;
+  spec->body = readBody(r, *t);
+  if (spec->body) file->state = placedBody(*spec->body);
+  const int n = file->state.points();
+  if (t->get("mass") && t->get("total_mass"))
+    r.fail(*t->get("total_mass"), "jelly.total_mass",
+           "give mass (per point) or total_mass, not both");
+  if (auto m = r.number(*t, "jelly.", "mass", 0, true)) w.mass = *m;
+  if (auto m = r.number(*t, "jelly.", "total_mass", 0, true)) w.mass = *m / n;
+  SpringConstants springs = SpringConstants::same(w.kElastic, w.dElastic);
+  bool perKind = false;
+  readByKind(r, *t, "stiffness", &w.kElastic, &springs.k, &perKind);
+  readByKind(r, *t, "damping", &w.dElastic, &springs.d, &perKind);
+  if (perKind) spec->springs = springs;
+  const Vec3 offset = r.vector(*t, "jelly.", "offset").value_or(Vec3{});
+  const std::optional<Vec3> velocity = r.vector(*t, "jelly.", "velocity");
+  for (int q = 0; q < n; ++q) {
+    store(file->state.p(), q, n, load(file->state.p(), q, n) + offset);
+    if (velocity) store(file->state.v(), q, n, *velocity);
+  }
+}
+
+ContactSpring readSpring(const Reader& r, const toml::table& t, const std::string& path,
+                         ContactSpring spring) {
+  if (auto k = r.number(t, path, "stiffness", 0)) spring.k = *k;
+  if (auto d = r.number(t, path, "damping", 0)) spring.d = *d;
+  return spring;
+}
+
+Friction readFriction(const Reader& r, const toml::table& t, const std::string& path) {
+  Friction f;
+  f.muStatic = r.number(t, path, "friction_static", 0).value_or(0);
+  f.muDynamic = r.number(t, path, "friction_dynamic", 0).value_or(f.muStatic);
+  f.speed = r.number(t, path, "friction_speed", 0, true).value_or(kDefaultFrictionSpeed);
+  if (f.muStatic > kMostFriction)
+    r.fail(*t.get("friction_static"), path + "friction_static",
+           "must be at most " + std::to_string(static_cast<int>(kMostFriction)));
+  if (f.muDynamic > f.muStatic)
+    r.fail(*t.get("friction_dynamic"), path + "friction_dynamic",
+           "must be at most friction_static (dynamic friction is the weaker)");
+  return f;
+}
+
+// lower < upper on every axis.
+void checkBox(const Reader& r, const toml::table& t, const std::string& path, Vec3 lower,
+              Vec3 upper) {
+  if (lower.x < upper.x && lower.y < upper.y && lower.z < upper.z) return;
+  // The bounds may give one corner alone, the other being the course's.
+  const char* key = t.get("upper") ? "upper" : "lower";
+  r.fail(*t.get(key), path + key,
+         key[0] == 'u' ? "must be above lower on every axis" : "must be below upper on every axis");
+}
+
+Obstacle readObstacle(const Reader& r, const toml::table& t, const std::string& path,
+                      ObstacleShape shape, ContactSpring spring) {
+  static const char* const kCommon[] = {"stiffness", "damping", "friction_static",
+                                        "friction_dynamic", "friction_speed"};
+  Obstacle o;
+  o.shape = shape;
+  std::vector<const char*> known(std::begin(kCommon), std::end(kCommon));
+  if (shape == ObstacleShape::Sphere) known.insert(known.end(), {"centre", "radius"});
+  if (shape == ObstacleShape::Box) known.insert(known.end(), {"lower", "upper"});
+  if (shape == ObstacleShape::HalfSpace) known.insert(known.end(), {"point", "normal"});
+  for (auto&& [key, node] : t) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || key.str() == k;
+    if (!ok) r.fail(node, path + std::string(key.str()), "unknown key");
+  }
+  auto need = [&](const char* key) {
+    if (!t.get(key)) r.fail(t, path + key, "missing");
+  };
+  if (shape == ObstacleShape::Sphere) {
+    need("centre");
+    o.centre = *r.vector(t, path, "centre");
+    need("radius");
+    o.radius = *r.number(t, path, "radius", 0, true);
+  } else if (shape == ObstacleShape::Box) {
+    need("lower");
+    need("upper");
+    o.lower = *r.vector(t, path, "lower");
+    o.upper = *r.vector(t, path, "upper");
+    checkBox(r, t, path, o.lower, o.upper);
+  } else {
+    need("point");
+    o.point = *r.vector(t, path, "point");
+    need("normal");
+    const Vec3 normal = *r.vector(t, path, "normal");
+    const double size = length(normal);
+    if (!(size > 0) || !std::isfinite(size))
+      r.fail(*t.get("normal"), path + "normal", "must not be zero");
+    o.normal = (1 / size) * normal;
+  }
+  o.spring = readSpring(r, t, path, spring);
+  o.friction = readFriction(r, t, path);
+  return o;
+}
+
+void readBounds(const Reader& r, const toml::table& root, ContactSpring spring, SceneSpec* spec) {
+  const toml::table* t = r.table(root, "", "bounds");
+  if (!t) return;
+  r.onlyKeys(*t, "bounds.",
+             {"present", "lower", "upper", "stiffness", "damping", "friction_static",
+              "friction_dynamic", "friction_speed"});
+  if (const toml::node* present = t->get("present")) {
+    if (!present->is_boolean()) r.fail(*present, "bounds.present", "expected true or false");
+    spec->boundsPresent = present->value<bool>().value_or(true);
+  }
+  const bool sized = t->get("lower") || t->get("upper");
+  const bool changed = t->size() > (t->get("present") ? 1u : 0u);  // any key but present
+  if (!spec->boundsPresent && changed)
+    for (auto&& [key, node] : *t)
+      if (key.str() != "present")
+        r.fail(node, "bounds." + std::string(key.str()),
+               "a bounding box that is not present takes no other key");
+  if (!spec->boundsPresent || !changed) return;
+  Obstacle o;
+  o.shape = ObstacleShape::Container;
+  o.lower =
+      r.vector(*t, "bounds.", "lower").value_or(Vec3{-kBoxHalfSize, -kBoxHalfSize, -kBoxHalfSize});
+  o.upper =
+      r.vector(*t, "bounds.", "upper").value_or(Vec3{kBoxHalfSize, kBoxHalfSize, kBoxHalfSize});
+  if (sized) checkBox(r, *t, "bounds.", o.lower, o.upper);
+  o.spring = readSpring(r, *t, "bounds.", spring);
+  o.friction = readFriction(r, *t, "bounds.");
+  spec->bounds = o;
+}
+
+// An inclusive range [first, last] of grid indices below `size`, all of them by default.
+std::pair<int, int> indexRange(const Reader& r, const toml::table& t, const std::string& path,
+                               const char* key, int size) {
+  const toml::node* node = t.get(key);
+  if (!node) return {0, size - 1};
+  const toml::array* array = node->as_array();
+  std::optional<std::int64_t> a, b;
+  if (array && array->size() == 2)
+    a = array->get(0)->value<std::int64_t>(), b = array->get(1)->value<std::int64_t>();
+  if (!a || !b || !(*array->get(0)).is_integer() || !(*array->get(1)).is_integer() || *a < 0 ||
+      *b >= size || *a > *b)
+    r.fail(*node, path + key,
+           "expected [first, last], whole numbers with 0 <= first <= last <= " +
+               std::to_string(size - 1));
+  return {static_cast<int>(*a), static_cast<int>(*b)};
+}
+
+void readPins(const Reader& r, const toml::table& root, const Body& body, const State& state,
+              SceneSpec* spec) {
+  const int n = body.count();
+  std::vector<char> pinned(n, 0);
+  r.tables(root, "pin", [&](const toml::table& t, const std::string& path) {
+    r.onlyKeys(t, path, {"i", "j", "k", "lower", "upper"});
+    const bool region = t.get("lower") || t.get("upper");
+    if (region && (t.get("i") || t.get("j") || t.get("k")))
+      r.fail(t, path + "lower",
+             "give lattice ranges (i, j, k) or a region (lower, upper), not both");
+    int count = 0;
+    if (region) {
+      const Vec3 lower = r.vector(t, path, "lower").value_or(Vec3{-INFINITY, -INFINITY, -INFINITY});
+      const Vec3 upper = r.vector(t, path, "upper").value_or(Vec3{INFINITY, INFINITY, INFINITY});
+      for (int q = 0; q < n; ++q) {
+        const Vec3 p = load(state.p(), q, n);
+        const bool inside = p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
+                            p.z >= lower.z && p.z <= upper.z;
+        if (inside) pinned[q] = 1, ++count;
+      }
+    } else {
+      const auto is = indexRange(r, t, path, "i", body.nx),
+                 js = indexRange(r, t, path, "j", body.ny),
+                 ks = indexRange(r, t, path, "k", body.nz);
+      for (int i = is.first; i <= is.second; ++i)
+        for (int j = js.first; j <= js.second; ++j)
+          for (int k = ks.first; k <= ks.second; ++k)
+            if (const int q = body.pointAtIndex(i, j, k); q >= 0) pinned[q] = 1, ++count;
+    }
+    if (count == 0) r.fail(t, path.substr(0, path.size() - 1), "pins no point");
+  });
+  for (int q = 0; q < n; ++q)
+    if (pinned[q]) spec->pinned.push_back(q);
+}
+
+void readObstacles(const Reader& r, const toml::table& root, ContactSpring spring,
+                   SceneSpec* spec) {
+  const std::pair<const char*, ObstacleShape> kinds[] = {{"sphere", ObstacleShape::Sphere},
+                                                         {"box", ObstacleShape::Box},
+                                                         {"plane", ObstacleShape::HalfSpace}};
+  for (const auto& kind : kinds) {
+    const ObstacleShape shape = kind.second;  // (a structured binding cannot be captured in C++17)
+    r.tables(root, kind.first, [&](const toml::table& t, const std::string& path) {
+      if (spec->obstacles.size() >= static_cast<std::size_t>(kMostObstacles))
+        r.fail(t, path.substr(0, path.size() - 1),
+               "more than " + std::to_string(kMostObstacles) + " obstacles");
+      spec->obstacles.push_back(readObstacle(r, t, path, shape, spring));
+    });
+  }
+}
+
+// The character at (line, column) of `text`, both from 1, as oneLine shows it; "the end" past it.
+std::string characterAt(std::string_view text, std::size_t line, std::size_t column) {
+  std::size_t at = 0;
+  for (std::size_t l = 1; l < line && at < text.size(); ++l) {
+    const std::size_t end = text.find('\n', at);
+    at = end == std::string_view::npos ? text.size() : end + 1;
+  }
+  at += column > 0 ? column - 1 : 0;
+  if (at >= text.size()) return "the end of the file";
+  return "'" + oneLine(text.substr(at, 1)) + "'";
+}
+
+// A file that is not TOML: said in this program's words where the TOML reader stopped (its own
+// text, from a library, is not shown).
+toml::table parseToml(std::string_view text, const std::string& name) {
+  try {
+    return toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    throw InputError(
+        name + ":" + std::to_string(where.line) + ": not TOML: it cannot be read on from column " +
+        std::to_string(where.column) + ", at " + characterAt(text, where.line, where.column) +
+        " (each line is key = value, [table] or [[list]]: docs/scenes.md)");
+  }
+}
+
+}  // namespace
+
+WorldFile parseScene(std::string_view text, const std::string& name, const std::string& folder) {
+  const toml::table root = parseToml(text, name);
+  const Reader r(name, folder);
+  r.onlyKeys(root, "",
+             {"world", "integrator", "dt", "n", "gravity", "field", "jelly", "contact", "bounds",
+              "sphere", "box", "plane", "pin"});
+  WorldFile file = baseWorld(r, root);
+  World& w = file.world;
+  auto spec = std::make_shared<SceneSpec>();
+  readRun(r, root, &w);
+  readJelly(r, root, &file, spec.get());
+  readField(r, root, &w.field);
+  if (const toml::table* contact = r.table(root, "", "contact")) {
+    r.onlyKeys(*contact, "contact.", {"stiffness", "damping"});
+    const ContactSpring spring = readSpring(r, *contact, "contact.", {w.kCollision, w.dCollision});
+    w.kCollision = spring.k;
+    w.dCollision = spring.d;
+  }
+  spec->gravity = r.vector(root, "", "gravity").value_or(Vec3{});
+  const ContactSpring spring{w.kCollision, w.dCollision};
+  readBounds(r, root, spring, spec.get());
+  readObstacles(r, root, spring, spec.get());
+  const Body& body = spec->body ? *spec->body : courseBody();
+  readPins(r, root, body, file.state, spec.get());
+  for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
+  w.scene = std::move(spec);  // before the check: it names points by the scene's body
+  if (std::optional<WorldProblem> problem = findWorldProblem(w, file.state))
+    throw InputError(name + ": " + problem->what);
+  return file;
+}
+
+WorldFile readSceneFile(const std::string& path) {
+  std::string text, why;
+  if (!readRegularFile(path, kMostSceneBytes, "a scene file",
+                       std::to_string(kMostSceneBytes) + " bytes", &text, &why))
+    throw InputError(why);
+  const std::size_t slash = path.rfind('/');
+  return parseScene(text, path, slash == std::string::npos ? "" : path.substr(0, slash));
+}
+
+bool isSceneFile(const std::string& path) {
+  constexpr std::string_view kSuffix = ".toml";
+  return path.size() > kSuffix.size() &&
+         path.compare(path.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0;
+}
+
+}  // namespace jello

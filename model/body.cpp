@@ -1,0 +1,206 @@
+// body.cpp: building a body's points, springs and surface from its voxels.
+
+#include "model/body.h"
+
+#include <cmath>
+
+#include "core/assert.h"
+
+namespace jello {
+
+const char* springKindName(SpringKind kind) {
+  switch (kind) {
+    case SpringKind::Structural:
+      return "structural";
+    case SpringKind::Shear:
+      return "shear";
+    case SpringKind::Bend:
+      break;
+  }
+  return "bend";
+}
+
+double restLength(const SpringOffset& o, double spacing) {
+  return spacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
+}
+
+std::array<int, 3> Body::index(int q) const {
+  const int node = nodeOf[q];
+  return {node / (ny * nz), (node / nz) % ny, node % nz};
+}
+
+Vec3 Body::restPosition(int q) const {
+  const std::array<int, 3> i = index(q);
+  return spacing * Vec3{double(i[0]), double(i[1]), double(i[2])};
+}
+
+std::string Body::label(int q) const {
+  const std::array<int, 3> i = index(q);
+  return "[" + std::to_string(i[0]) + "][" + std::to_string(i[1]) + "][" + std::to_string(i[2]) +
+         "]";
+}
+
+int Body::pointAtIndex(int i, int j, int k) const {
+  if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
+  return pointAt[node(i, j, k)];
+}
+
+namespace {
+
+// Whether grid node (i, j, k) is a corner of a filled voxel.
+bool isCorner(const VoxelMask& mask, int i, int j, int k) {
+  for (int c = 0; c < 8; ++c)
+    if (mask.at(i - (c >> 2 & 1), j - (c >> 1 & 1), k - (c & 1))) return true;
+  return false;
+}
+
+void numberPoints(const VoxelMask& mask, Body* body) {
+  body->pointAt.assign(std::size_t(body->nx) * body->ny * body->nz, -1);
+  for (int i = 0; i < body->nx; ++i)
+    for (int j = 0; j < body->ny; ++j)
+      for (int k = 0; k < body->nz; ++k)
+        if (isCorner(mask, i, j, k)) {
+          const int node = body->node(i, j, k);
+          body->pointAt[node] = body->count();
+          body->nodeOf.push_back(node);
+        }
+}
+
+// The springs by offset in table order, each offset's in the order of their end a.
+void addSprings(Body* body) {
+  for (const SpringOffset& o : kSpringOffsets) {
+    const double rest = restLength(o, body->spacing);
+    for (int a = 0; a < body->count(); ++a) {
+      const std::array<int, 3> i = body->index(a);
+      const int b = body->pointAtIndex(i[0] + o.di, i[1] + o.dj, i[2] + o.dk);
+      if (b >= 0) body->springs.push_back({a, b, rest, o.kind});
+    }
+  }
+}
+
+// The face of the voxel grid normal to `axis` at node plane s, quad (u, v): whether it is on the
+// surface, and on which side the body lies. cell(axis, s) is the voxel on the plane's + side.
+struct FaceGrid {
+  const VoxelMask& mask;
+  const Body& body;
+  int nodes(int axis) const { return axis == 0 ? body.nx : axis == 1 ? body.ny : body.nz; }
+  // (i, j, k) with s along `axis`, u and v along the next two (cyclically).
+  static std::array<int, 3> at(int axis, int s, int u, int v) {
+    std::array<int, 3> c;
+    c[axis] = s;
+    c[(axis + 1) % 3] = u;
+    c[(axis + 2) % 3] = v;
+    return c;
+  }
+  bool cell(int axis, int s, int u, int v) const {
+    const std::array<int, 3> c = at(axis, s, u, v);
+    return mask.at(c[0], c[1], c[2]);
+  }
+  int point(int axis, int s, int u, int v) const {
+    const std::array<int, 3> c = at(axis, s, u, v);
+    return body.pointAtIndex(c[0], c[1], c[2]);
+  }
+};
+
+// The two triangles of quad (u, v) on node plane s normal to `axis`, facing -axis (outwardIsPlus
+// false) or +axis. The quad's corners a, b, c, d run counter-clockwise seen from +axis; facing
+// -axis they are taken in the opposite order, so that every triangle winds counter-clockwise seen
+// from outside. Quads whose centre lies on the (1, 1) diagonal's side of the grid's face centre
+// are split along a-c, the others along b-d, so that on a box's face the diagonal at each of the
+// face's corners passes through the corner (a corner's normal is then the diagonal's, as area
+// weighting gives it, seen from every corner alike).
+void addQuad(const FaceGrid& g, int axis, int s, int u, int v, bool outwardIsPlus,
+             std::vector<Triangle>* out) {
+  const int a = g.point(axis, s, u, v), b = g.point(axis, s, u + 1, v);
+  const int c = g.point(axis, s, u + 1, v + 1), d = g.point(axis, s, u, v + 1);
+  JELLO_ASSERT(a >= 0 && b >= 0 && c >= 0 && d >= 0);
+  const int du = 2 * u + 1 - (g.nodes((axis + 1) % 3) - 1);
+  const int dv = 2 * v + 1 - (g.nodes((axis + 2) % 3) - 1);
+  const bool alongAC = du * dv >= 0;
+  Triangle first = alongAC ? Triangle{a, b, c} : Triangle{a, b, d};
+  Triangle second = alongAC ? Triangle{a, c, d} : Triangle{b, c, d};
+  if (!outwardIsPlus) {
+    std::swap(first[1], first[2]);
+    std::swap(second[1], second[2]);
+  }
+  out->push_back(first);
+  out->push_back(second);
+}
+
+// Every voxel face with a filled voxel on one side and none on the other, by axis, then facing
+// -axis before +axis, then by node plane and quad: for a box, the course's order (the faces
+// x = 0, x = 7, y = 0, ... in turn).
+void addSurface(const VoxelMask& mask, Body* body) {
+  const FaceGrid g{mask, *body};
+  for (int axis = 0; axis < 3; ++axis)
+    for (bool plus : {false, true})
+      for (int s = 0; s < g.nodes(axis); ++s)
+        for (int u = 0; u + 1 < g.nodes((axis + 1) % 3); ++u)
+          for (int v = 0; v + 1 < g.nodes((axis + 2) % 3); ++v) {
+            const bool above = g.cell(axis, s, u, v), below = g.cell(axis, s - 1, u, v);
+            if (plus ? (below && !above) : (above && !below))
+              addQuad(g, axis, s, u, v, plus, &body->surface);
+          }
+  std::vector<char> onSurface(body->count(), 0);
+  for (const Triangle& t : body->surface)
+    for (int q : t) onSurface[q] = 1;
+  body->surfaceVertexOf.assign(body->count(), -1);
+  for (int q = 0; q < body->count(); ++q)
+    if (onSurface[q]) {
+      body->surfaceVertexOf[q] = static_cast<int>(body->surfacePoints.size());
+      body->surfacePoints.push_back(q);
+    }
+}
+
+}  // namespace
+
+Body voxelBody(const VoxelMask& mask, double spacing, std::string what) {
+  JELLO_ASSERT(mask.nx >= 1 && mask.ny >= 1 && mask.nz >= 1);
+  JELLO_ASSERT(mask.nx < kMostBodyPoints && mask.ny < kMostBodyPoints && mask.nz < kMostBodyPoints);
+  JELLO_ASSERT(spacing > 0 && std::isfinite(spacing));
+  Body body;
+  body.what = std::move(what);
+  body.nx = mask.nx + 1;
+  body.ny = mask.ny + 1;
+  body.nz = mask.nz + 1;
+  body.spacing = spacing;
+  numberPoints(mask, &body);
+  JELLO_ASSERT(body.count() > 0);
+  addSprings(&body);
+  addSurface(mask, &body);
+  return body;
+}
+
+Body latticeBody(int nx, int ny, int nz, double spacing) {
+  VoxelMask mask{nx - 1, ny - 1, nz - 1, {}};
+  mask.filled.assign(std::size_t(mask.nx) * mask.ny * mask.nz, 1);
+  Body body = voxelBody(mask, spacing,
+                        "the " + std::to_string(nx) + "x" + std::to_string(ny) + "x" +
+                            std::to_string(nz) + " lattice");
+  body.courseLattice =
+      nx == kLatticeSize && ny == kLatticeSize && nz == kLatticeSize && spacing == kRestSpacing;
+  return body;
+}
+
+const Body& courseBody() {
+  static const Body body = latticeBody(kLatticeSize, kLatticeSize, kLatticeSize, kRestSpacing);
+  return body;
+}
+
+std::vector<Vec3> surfaceNormals(const Body& body, const double* positions) {
+  const int n = body.count();
+  std::vector<Vec3> normal(n);
+  for (const Triangle& t : body.surface) {
+    const Vec3 a = load(positions, t[0], n), b = load(positions, t[1], n),
+               c = load(positions, t[2], n);
+    const Vec3 normalSum = cross(b - a, c - a);  // its length is twice the area: area-weighted
+    for (int q : t) normal[q] += normalSum;
+  }
+  for (Vec3& v : normal) {
+    double unused;
+    v = direction(v, &unused);
+  }
+  return normal;
+}
+
+}  // namespace jello

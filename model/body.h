@@ -1,0 +1,127 @@
+// body.h: the jelly's points and springs: which points there are, which springs join them, and
+// the triangles of its surface. The course cube is the 8x8x8 lattice; a scene (docs/scenes.md)
+// may give a lattice of any size, or a body voxelised from a mesh or a sphere.
+//
+// A body is made of cubic voxels of edge `spacing` (m) on a grid: its points are the voxels'
+// corners (shared between neighbouring voxels), numbered in the order of their grid node
+// (i, j, k) ascending, i slowest. The springs are those of the course's 16 offsets (structural,
+// shear, bend) wherever both ends are points, grouped by offset in the table's order and each
+// group in the order of its end a: for the full 8x8x8 lattice this is the course's numbering
+// and spring list exactly (world.h pointIndex, docs/physics.md).
+//
+// Per-point arrays of a body of n points hold 3n doubles, all x, then all y, then all z (world.h).
+// A body is built once and shared (never changed) by every model of its scene.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/vec3.h"
+#include "model/world.h"
+
+namespace jello {
+
+enum class SpringKind : std::uint8_t { Structural, Shear, Bend };
+constexpr int kSpringKinds = 3;
+const char* springKindName(SpringKind kind);  // "structural", "shear", "bend"
+
+// One row of the table the spring list is built from: every point at grid node (i,j,k) whose
+// neighbour (i+di, j+dj, k+dk) is a point too is joined to it by a spring of rest length
+// spacing * |offset|.
+struct SpringOffset {
+  int di, dj, dk;
+  SpringKind kind;
+};
+// 16 rows (6220 springs in the course cube); the order in which the kernel adds them.
+inline constexpr std::array<SpringOffset, 16> kSpringOffsets = {{
+    // structural
+    {1, 0, 0, SpringKind::Structural},
+    {0, 1, 0, SpringKind::Structural},
+    {0, 0, 1, SpringKind::Structural},
+    // face shear
+    {1, 1, 0, SpringKind::Shear},
+    {1, -1, 0, SpringKind::Shear},
+    {1, 0, 1, SpringKind::Shear},
+    {1, 0, -1, SpringKind::Shear},
+    {0, 1, 1, SpringKind::Shear},
+    {0, 1, -1, SpringKind::Shear},
+    // body shear
+    {1, 1, 1, SpringKind::Shear},
+    {1, 1, -1, SpringKind::Shear},
+    {1, -1, 1, SpringKind::Shear},
+    {1, -1, -1, SpringKind::Shear},
+    // bend
+    {2, 0, 0, SpringKind::Bend},
+    {0, 2, 0, SpringKind::Bend},
+    {0, 0, 2, SpringKind::Bend},
+}};
+
+// The rest length of an offset's springs in a grid of `spacing` (m): spacing * |offset|, computed
+// as docs/physics.md gives it for the course (spacing * sqrt(di^2 + dj^2 + dk^2)); the row kernel
+// and every body's spring list take it from here, so that they agree to the bit.
+double restLength(const SpringOffset& o, double spacing = kRestSpacing);
+
+struct Spring {
+  int a, b;     // point numbers
+  double rest;  // m, from the ideal lattice
+  SpringKind kind;
+};
+
+using Triangle = std::array<int, 3>;  // three point numbers, counter-clockwise from outside
+
+// The most points along an edge of a body's grid (the 2..48).
+constexpr int kMostBodyPoints = 48;
+
+// Which voxels of an nx x ny x nz grid are filled: filled[cell(i, j, k)].
+struct VoxelMask {
+  int nx = 0, ny = 0, nz = 0;
+  std::vector<char> filled;
+  std::size_t cell(int i, int j, int k) const { return (std::size_t(i) * ny + j) * nz + k; }
+  bool at(int i, int j, int k) const {
+    return i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz && filled[cell(i, j, k)];
+  }
+};
+
+struct Body {
+  std::string what;            // "the 8x8x8 lattice", "a 16x4x4 lattice", "voxels of duck.obj", ...
+  int nx = 0, ny = 0, nz = 0;  // grid nodes along x, y, z (voxels + 1)
+  double spacing = 0;          // m, between neighbouring nodes
+  std::vector<int> nodeOf;     // point -> grid node (node(i, j, k))
+  std::vector<int> pointAt;    // grid node -> point, or -1
+  std::vector<Spring> springs;
+  std::vector<Triangle> surface;     // counter-clockwise seen from outside
+  std::vector<int> surfacePoints;    // the points on the surface, ascending
+  std::vector<int> surfaceVertexOf;  // point -> its place in surfacePoints, or -1
+  bool courseLattice = false;        // the 8x8x8 lattice of spacing 1/7: the course's cube
+
+  int count() const { return static_cast<int>(nodeOf.size()); }
+  int coords() const { return 3 * count(); }
+  // Grid node (i, j, k)'s number: (i * ny + j) * nz + k.
+  int node(int i, int j, int k) const { return (i * ny + j) * nz + k; }
+  // The grid index of point q.
+  std::array<int, 3> index(int q) const;
+  // Point q at rest, m: spacing * its grid index (node (0, 0, 0) at the origin).
+  Vec3 restPosition(int q) const;
+  // "[i][j][k]" for point q.
+  std::string label(int q) const;
+  // The point at grid node (i, j, k), or -1 (also outside the grid).
+  int pointAtIndex(int i, int j, int k) const;
+};
+
+// A body of every corner of the filled voxels of `mask`, spacing metres apart. The mask must hold
+// at least one filled voxel and at most kMostBodyPoints - 1 voxels along each axis.
+Body voxelBody(const VoxelMask& mask, double spacing, std::string what);
+// The nx x ny x nz lattice (each 2..kMostBodyPoints) of points spacing metres apart.
+Body latticeBody(int nx, int ny, int nz, double spacing);
+// The course's cube, built once (the 8x8x8 lattice of spacing kRestSpacing).
+const Body& courseBody();
+
+// Unit normals of the body's surface at `positions` (a per-point array of the body's), one per
+// point: each surface point's is the sum of its triangles' cross(b - a, c - a) (twice the
+// triangle's area times its unit normal: an area-weighted average), normalised. Zero for interior
+// points, and where the sum is zero (a collapsed surface).
+std::vector<Vec3> surfaceNormals(const Body& body, const double* positions);
+
+}  // namespace jello

@@ -1,0 +1,44 @@
+// scene/spec.h: what a scene file (docs/scenes.md) adds to a course world: gravity, obstacles
+// with friction, pinned points and the bounding box's size. A course world has none of it, and
+// its .w format is unchanged; a scene is read once and shared by the world's copies.
+//
+// Units: metres, seconds, kilograms; gravity in m/s^2.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "model/body.h"
+#include "model/obstacle.h"
+#include "model/springs.h"
+#include "model/vec3.h"
+
+namespace jello {
+
+// The most obstacles a scene may have (each is a term the kernel goes through).
+constexpr int kMostObstacles = 64;
+
+struct SceneSpec {
+  // The jelly, when the scene gives its shape ([jelly] shape); null: the course cube.
+  std::shared_ptr<const Body> body;
+  // The springs' constants by kind, when the scene gives them; none: the world's kElastic and
+  // dElastic for every kind.
+  std::optional<SpringConstants> springs;
+  Vec3 gravity;                     // m/s^2, on every point, everywhere
+  std::vector<Obstacle> obstacles;  // in the order of the file
+  // Points that do not move (the body's point numbers), sorted, each once. Their velocities are 0.
+  std::vector<int> pinned;
+  // The box that holds the jelly: the course's walls of [-2,2]^3 with the world's kCollision and
+  // dCollision (nullopt), or a container obstacle of any size, with friction; or none at all.
+  bool boundsPresent = true;
+  std::optional<Obstacle> bounds;
+};
+
+// Whether the course's walls of [-2,2]^3 hold the jelly: a course world (no scene), or a scene
+// that neither removes its bounding box nor gives one of its own.
+inline bool hasCourseWalls(const SceneSpec* spec) {
+  return !spec || (spec->boundsPresent && !spec->bounds);
+}
+
+}  // namespace jello
