@@ -141,39 +141,79 @@ std::string machineDescription() {
   return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores, " + compiler;
 }
 
-Outcome runBench(const RunOptions& run) {
-  WorldFile file;
-  if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
-  const World& world = file.world;
-  const Model specialised = makeModel(world, file.state, KernelChoice::Specialised);
-  const Model general = makeModel(world, file.state, KernelChoice::General);
-  const long long fixed = run.steps ? std::max(1LL, *run.steps) : 0;
-  const int repeats = run.steps ? 3 : kBenchRepeats;
+namespace {
 
+// One integrator's row: the step it was timed at (the world's, or the largest of dt/2, dt/4, ...
+// at which it does not diverge) and its timings with the specialised kernel, the general one and
+// the specialised one on two threads.
+struct BenchRow {
+  Integrator integrator = Integrator::RK4;
+  double dt = 0;
+  StepTiming specialised, general, team;
+};
+
+// What --bench measured.
+struct BenchFigures {
+  int repeats = 0;
+  double forces[3] = {0, 0, 0};  // s per evaluation: specialised, general, two threads
+  double loading = 0;            // s to parse the world's text
+  std::vector<BenchRow> rows;
+};
+
+// Each integrator's steps, timed (a diverging run would time arithmetic on huge numbers).
+BenchRow timeIntegrator(const std::vector<Kernel>& kernels, const State& initial,
+                        const IntegratorInfo& row, double worldDt, const RunOptions& run,
+                        long long fixed, int repeats) {
+  // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
+  // steps tell.
+  const long long steps = fixed ? fixed : row.needsJacobian ? 3 : 0;
+  constexpr int kHalvings = 12;
+  double dt = worldDt;
+  std::vector<StepTiming> timings =
+      timeSteps(kernels, initial, row.integrator, dt, run, steps, repeats);
+  for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
+    dt /= 2;
+    timings = timeSteps(kernels, initial, row.integrator, dt, run, steps, repeats);
+  }
+  return {row.integrator, dt, timings[0], timings[1], timings[2]};
+}
+
+BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Model& specialised,
+                          const Model& general) {
+  BenchFigures figures;
+  const long long fixed = run.steps ? std::max(1LL, *run.steps) : 0;
+  figures.repeats = run.steps ? 3 : kBenchRepeats;
+  Team team;
+  const std::vector<Kernel> kernels = {
+      {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
+  const std::vector<double> forces = timeForces(kernels, file.state, fixed, figures.repeats);
+  std::copy(forces.begin(), forces.end(), figures.forces);
+  // The world's text is parsed from memory: the file itself may be a pipe, read once already.
+  const std::string text = formatWorld(file.world, file.state);
+  figures.loading = medianSecondsPerCall({[&](long long count) {
+                                           for (long long i = 0; i < count; ++i)
+                                             parseWorld(text, run.worldPath);
+                                         }},
+                                         run.steps ? 1 : 0, figures.repeats)[0];
+  for (const IntegratorInfo& row : integratorTable())
+    figures.rows.push_back(
+        timeIntegrator(kernels, file.state, row, file.world.dt, run, fixed, figures.repeats));
+  return figures;
+}
+
+void printBench(const RunOptions& run, const World& world, const Model& specialised,
+                const BenchFigures& f) {
   std::printf("%s\n", termsLine(specialised.forces).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
   std::printf(
       "medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
       "general = every term at every point\n\n",
-      repeats, world.dt);
-  std::fflush(stdout);
-
-  Team team;
-  const std::vector<Kernel> kernels = {
-      {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
-  const std::vector<double> forces = timeForces(kernels, file.state, fixed, repeats);
-  const double forcesS = forces[0], forcesG = forces[1], forcesT = forces[2];
-  // The world's text is parsed from memory: the file itself may be a pipe, read once already.
-  const std::string text = formatWorld(world, file.state);
-  double loading = medianSecondsPerCall({[&](long long count) {
-                                          for (long long i = 0; i < count; ++i)
-                                            parseWorld(text, run.worldPath);
-                                        }},
-                                        run.steps ? 1 : 0, repeats)[0];
-  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", loading * 1e3,
+      f.repeats, world.dt);
+  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", f.loading * 1e3,
               world.field.resolution > 0
                   ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
                   : "no field");
+  const double forcesS = f.forces[0], forcesG = f.forces[1], forcesT = f.forces[2];
   std::printf("%-22s %14s %14s %9s %14s %9s\n", "", "specialised", "general", "speed-up",
               "two threads", "speed-up");
   std::printf("%-22s %11.2f us %11.2f us %8.2fx %11.2f us %8.2fx\n", "force evaluation",
@@ -182,32 +222,28 @@ Outcome runBench(const RunOptions& run) {
               1 / forcesG, "", 1 / forcesT);
   std::printf("\n%-22s %14s %14s %9s %14s %9s  %s\n", "us per step", "specialised", "general",
               "speed-up", "two threads", "speed-up", "evaluations/step");
-  for (const IntegratorInfo& row : integratorTable()) {
-    const Integrator integrator = row.integrator;
-    // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
-    // steps tell.
-    long long steps = fixed ? fixed : row.needsJacobian ? 3 : 0;
-    // A diverging run would time arithmetic on huge numbers: an integrator that diverges at the
-    // world's dt is timed at the largest of dt/2, dt/4, ... at which it does not.
-    constexpr int kHalvings = 12;
-    double dt = world.dt;
-    std::vector<StepTiming> timings =
-        timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
-    for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
-      dt /= 2;
-      timings = timeSteps(kernels, file.state, integrator, dt, run, steps, repeats);
-    }
-    const StepTiming &s = timings[0], &g = timings[1], &t = timings[2];
+  for (const BenchRow& r : f.rows) {
+    const StepTiming &s = r.specialised, &g = r.general, &t = r.team;
     char note[96] = "";
     if (s.diverged || g.diverged)
-      std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", dt);
-    else if (dt != world.dt)
-      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, dt);
-    std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(integrator),
+      std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", r.dt);
+    else if (r.dt != world.dt)
+      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, r.dt);
+    std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(r.integrator),
                 s.seconds * 1e6, g.seconds * 1e6, g.seconds / s.seconds, t.seconds * 1e6,
                 s.seconds / t.seconds, s.evaluationsPerStep, note);
-    std::fflush(stdout);
   }
+}
+
+}  // namespace
+
+Outcome runBench(const RunOptions& run) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
+  const Model specialised = makeModel(file.world, file.state, KernelChoice::Specialised);
+  const Model general = makeModel(file.world, file.state, KernelChoice::General);
+  const BenchFigures figures = measureBench(run, file, specialised, general);
+  printBench(run, file.world, specialised, figures);
   return succeeded();
 }
 

@@ -181,21 +181,47 @@ std::string whyNotDumpable(const std::string& dumpPath, const std::string& world
   return whyNotWritable(dumpPath, Existing::Replace);
 }
 
+namespace {
+
+// Whether --dump may write its file (whyNotDumpable) and the world is one a world file holds.
+Outcome checkDump(const RunOptions& options, const World& world) {
+  if (!options.dumpPath) return succeeded();
+  // A course world file holds the 8x8x8 cube and nothing else.
+  if (!bodyOf(world).courseLattice)
+    return failed("--dump " + *options.dumpPath + ": a world file holds only the course's " +
+                  "8x8x8 cube, and this scene's jelly is " + bodyOf(world).what +
+                  "; use --export for its meshes");
+  std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
+  if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
+  return succeeded();
+}
+
+// --dump FILE: the run's last state in a world file.
+Outcome writeDump(const std::string& path, const World& world, const State& state) {
+  try {
+    writeWorldFile(path, world, state, true);
+  } catch (const std::exception& e) {
+    return failed(e.what());
+  }
+  // A course world holds no gravity, obstacles, pins or bounds: said, so that nobody runs the
+  // dump alone and wonders why the jelly floats.
+  if (world.scene)
+    printError("note: " + path +
+               " holds the state and the course parameters, not the scene's gravity, "
+               "obstacles, pins or bounds; a scene with world = \"" +
+               path + "\" and those keys continues from it");
+  return succeeded();
+}
+
+}  // namespace
+
 Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   WorldFile file;
   if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   long long steps = 0;
   if (Outcome counted = stepsOfRun(options, world, frames, &steps); !counted.ok()) return counted;
-  if (options.dumpPath) {
-    // A course world file holds the 8x8x8 cube and nothing else.
-    if (!bodyOf(world).courseLattice)
-      return failed("--dump " + *options.dumpPath + ": a world file holds only the course's " +
-                    "8x8x8 cube, and this scene's jelly is " + bodyOf(world).what +
-                    "; use --export for its meshes");
-    std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
-    if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
-  }
+  if (Outcome dumpable = checkDump(options, world); !dumpable.ok()) return dumpable;
 
   const Model model = makeModel(world, file.state, options.kernel);
   Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
@@ -239,21 +265,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (frames && !frames->wantsMore() && lastFrame < steps)
     printError(frameLimitNote(*frames, lastFrame * world.dt, steps * world.dt));
 
-  if (options.dumpPath) {
-    try {
-      writeWorldFile(*options.dumpPath, world, simulation.state(), true);
-    } catch (const std::exception& e) {
-      return failed(e.what());
-    }
-    // A course world holds no gravity, obstacles, pins or bounds: said, so that nobody runs the
-    // dump alone and wonders why the jelly floats.
-    if (world.scene)
-      printError("note: " + *options.dumpPath +
-                 " holds the state and the course parameters, not the scene's gravity, "
-                 "obstacles, pins or bounds; a scene with world = \"" +
-                 *options.dumpPath + "\" and those keys continues from it");
-  }
-  return succeeded();
+  return options.dumpPath ? writeDump(*options.dumpPath, world, simulation.state()) : succeeded();
 }
 
 }  // namespace jello

@@ -13,6 +13,7 @@
 #include "analysis/bench.h"
 #include "analysis/report.h"
 #include "analysis/stability.h"
+#include "analysis/stabilitymap.h"
 #include "app/export.h"
 #include "app/graphicsapi.h"
 #include "app/headless.h"

@@ -106,13 +106,6 @@ std::string readWhole(const fs::path& path) {
   return text.str();
 }
 
-void writeText(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
-}
-
 // Whether `text` calls or defines a function `word`: the word, then blanks, then '('. A plain
 // scan: a pattern would recurse once per blank, and a file of blanks would crash the grader.
 bool callsWord(const std::string& text, const std::string& word) {

@@ -170,6 +170,32 @@ std::size_t countEnds(const std::string& text, std::size_t from, bool& atLineSta
 
 // Feeds the input and the requests (one at a time: the next once the last reply has ended) and
 // collects the output, the errors and the replies until they all close, or a limit is hit.
+// Reads what the program wrote on stdout (which 0), stderr (1) or the replies' pipe (2) into
+// `result`, up to each one's cap: a descriptor at its end is closed, and output beyond its cap
+// closes all three (result.outputCut).
+void readOutput(int which, const SandboxJob& job, int& out, int& err, int& replies,
+                bool& atLineStart, SandboxResult& result) {
+  int& fd = which == 0 ? out : which == 1 ? err : replies;
+  if (fd < 0) return;
+  char buffer[1 << 16];
+  ssize_t n = read(fd, buffer, sizeof buffer);
+  if (n <= 0) {
+    if (n == 0 || errno != EAGAIN) closeFd(fd);
+    return;
+  }
+  std::string& kept = which == 0 ? result.output : which == 1 ? result.errors : result.replies;
+  std::size_t cap = which == 1 ? kErrorsKept : static_cast<std::size_t>(job.limits.outputBytes);
+  std::size_t before = kept.size();
+  kept.append(buffer, std::min(static_cast<std::size_t>(n), cap - std::min(cap, kept.size())));
+  if (which == 2) result.repliesEnded += countEnds(kept, before, atLineStart);
+  if (which != 1 && kept.size() >= cap) {
+    result.outputCut = true;
+    closeFd(out);
+    closeFd(err);
+    closeFd(replies);
+  }
+}
+
 void exchange(pid_t child, const SandboxJob& job, int in, int out, int err, int requests,
               int replies, SandboxResult& result) {
   using Clock = std::chrono::steady_clock;
@@ -178,7 +204,6 @@ void exchange(pid_t child, const SandboxJob& job, int in, int out, int err, int 
   std::size_t sent = 0;  // requests begun
   bool atLineStart = true;
   if (job.input.empty()) closeFd(input.fd);
-  char buffer[1 << 16];
   while (out >= 0 || err >= 0 || replies >= 0) {
     // The next request, once the greeting and every earlier request are answered; the pipe
     // closes after the last.
@@ -204,26 +229,9 @@ void exchange(pid_t child, const SandboxJob& job, int in, int out, int err, int 
       closeFd(input.fd);
     if (request.data && (fds[4].revents & (POLLOUT | POLLERR | POLLHUP)) && request.write())
       request.data = nullptr;
-    for (int which = 0; which < 3; ++which) {
-      int& fd = which == 0 ? out : which == 1 ? err : replies;
-      if (fd < 0 || !(fds[which].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      ssize_t n = read(fd, buffer, sizeof buffer);
-      if (n <= 0) {
-        if (n == 0 || errno != EAGAIN) closeFd(fd);
-        continue;
-      }
-      std::string& kept = which == 0 ? result.output : which == 1 ? result.errors : result.replies;
-      std::size_t cap = which == 1 ? kErrorsKept : static_cast<std::size_t>(job.limits.outputBytes);
-      std::size_t before = kept.size();
-      kept.append(buffer, std::min(static_cast<std::size_t>(n), cap - std::min(cap, kept.size())));
-      if (which == 2) result.repliesEnded += countEnds(kept, before, atLineStart);
-      if (which != 1 && kept.size() >= cap) {
-        result.outputCut = true;
-        closeFd(out);
-        closeFd(err);
-        closeFd(replies);
-      }
-    }
+    for (int which = 0; which < 3; ++which)
+      if (fds[which].revents & (POLLIN | POLLHUP | POLLERR))
+        readOutput(which, job, out, err, replies, atLineStart, result);
   }
   if (result.timedOut || result.outputCut) kill(-child, SIGKILL);
   closeFd(input.fd);

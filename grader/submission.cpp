@@ -92,12 +92,6 @@ bool readAll(int fd, std::uintmax_t most, std::string& text) {
   return true;
 }
 
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
-}
-
 // Copies the source files of the folder open at `dir` into `to` / `relative`, keeping the
 // layout. Every step is an openat without following a link, and what is read is what was
 // opened (fstat of the descriptor): no name is looked up twice.
@@ -296,6 +290,13 @@ std::string copySubmission(const Submission& submission, const Scratch& scratch,
                            const std::string& into, std::vector<std::string>& notes) {
   if (isArchive(submission.path)) return unpack(submission, scratch, into, notes);
   return copyTree(submission.path, into, true, notes);
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error(path + ": cannot write");
 }
 
 }  // namespace jello::grader

@@ -40,4 +40,8 @@ std::string copySubmission(const Submission& submission, const Scratch& scratch,
 
 constexpr unsigned long long kMostArchiveBytes = 64ull << 20;
 
+// Writes `text` to the file `path` (its folders made first), whole or with an exception: the
+// grader's own files in a scratch folder, and the copies of a student's.
+void writeText(const std::string& path, const std::string& text);
+
 }  // namespace jello::grader

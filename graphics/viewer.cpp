@@ -27,126 +27,13 @@
 #include "graphics/graphics.h"
 #include "graphics/layout.h"
 #include "graphics/showCube.h"
+#include "graphics/viewerstate.h"
 #include "model/term.h"
 #include "solver/simulation.h"
 
 namespace jello {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-constexpr double kZoomStep = 0.2;  // m per z/x key press
-// The push keys' (arrows) and the jump key's (j) velocity, m/s, added to every free point: a
-// push moves the jelly visibly (a tenth of its size in 0.1 s), a jump lifts it about
-// v^2 / 2g = 0.46 m under the Earth's gravity.
-constexpr double kPushSpeed = 1.0, kJumpSpeed = 3.0;
-constexpr double kMinRadius = kMinCameraDistance;  // m
-constexpr double kMaxElevation = kPi / 2 - 0.01;
-constexpr int kGrabPixels = 40;            // how near the cursor a grabbed point must be
-constexpr double kMinPullStiffness = 100;  // N/m
-constexpr double kMessageSeconds = 4;
-constexpr double kMaxCatchUpSeconds = 0.1;  // real-time pacing never steps more than this at once
-constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
-constexpr int kStepsBetweenClockReads = 16;       // how often real-time pacing looks at that budget
-constexpr double kRateSeconds = 0.5;              // steps per second are counted over this long
-// While nothing runs, the idle callback naps this long: the CPU goes to a diagnosis under way
-// (and to other programs), and keys are still answered well within a frame.
-constexpr auto kStillNap = std::chrono::milliseconds(10);
-constexpr int kEscape = 27;
-constexpr float kPanelAlpha = 0.6f;  // of the panels behind the help and the messages
-constexpr const char* kScreenshotPattern = "jello-window-%03d.jpg";  // in the current folder
-constexpr int kMostScreenshots = 999;
-
-double seconds(Clock::time_point from, Clock::time_point to) {
-  return std::chrono::duration<double>(to - from).count();
-}
-
-struct Viewer {
-  Model model;
-  State initial;
-  Simulation simulation;  // of `model`, declared after it
-  Tolerances tolerances;  // RK45's, for the message when they cannot be met
-  State lastGood;         // the state before the current frame's steps, shown if they diverge
-  int n;
-
-  // The run's length (--steps, --time), where the window pauses once; none: it runs on.
-  std::optional<long long> endStep;
-  std::string endName;  // how the command line said it: "--time 0.5 s"
-  bool paused = false, diverged = false, ended = false, realTime = false;
-  std::future<std::string> diagnosis;  // of the divergence, while it is under way
-  std::string divergedAt;              // "diverged at step N (t=T s): reason"
-
-  // Recording (space, --frames, --export): frames at the steps of `clock`, as a headless run
-  // saves them, and with --export each frame's surface mesh, numbered as the frame.
-  PictureOptions pictures;
-  std::string worldPath;                  // names the world in the meshes' headers
-  std::string stem;                       // names new folders of recordings
-  std::unique_ptr<FrameSequence> frames;  // the latest recording's
-  std::unique_ptr<MeshSequence> meshes;   // its meshes, with --export
-  int recordings = 0;
-  FrameClock clock;
-  bool saving = false;
-  long long nextFrame = 0;   // the step of the next frame to save while saving
-  long long savedStep = -1;  // the step of the last saved frame
-  bool screenshotAsked = false;
-
-  Camera camera;
-  DrawOptions draw;
-  int width, height;
-  bool help = false;
-
-  // Mouse: right-drag turns the camera, left-drag pulls the nearest surface point.
-  int lastX = 0, lastY = 0;
-  bool rotating = false;
-  Pull pull;
-  double grabDepth = 0;  // window depth of the grabbed point, for unprojecting the cursor
-  GLdouble modelview[16], projection[16];
-  GLint viewport[4];
-
-  // Pacing and the overlay.
-  Clock::time_point realTimeStart;
-  double realTimeStartSim = 0;
-  Clock::time_point rateStart = Clock::now();
-  long long rateSteps = 0;
-  double stepsPerSecond = 0;
-  std::string message;   // passing: shown kMessageSeconds
-  std::string standing;  // the run's state while it lasts: diverged, reached its end
-  Clock::time_point messageTime;
-
-  Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
-      : model(makeModel(file.world, file.state)),
-        initial(file.state),
-        simulation(model, file.state, file.world.integrator, file.world.dt, run.tolerances),
-        tolerances(run.tolerances),
-        lastGood(file.state),
-        n(file.world.n),
-        pictures(pictures),
-        worldPath(run.worldPath),
-        stem(worldStem(run.worldPath)),
-        clock(pictures.fps, file.world.n, file.world.dt),
-        camera(cameraFor(model, pictures.camera)),
-        width(pictures.width),
-        height(pictures.height) {
-    draw.coloring = static_cast<Coloring>(pictures.colouring);
-  }
-
-  double time() const { return simulation.time(); }
-  const State& state() const { return simulation.state(); }
-
-  // Every message the window shows is echoed on stderr, whole.
-  void say(const std::string& text) {
-    message = text;
-    messageTime = Clock::now();
-    printError(text);
-  }
-  void setStanding(const std::string& text) {
-    standing = text;
-    printError(text);
-  }
-};
-
-Viewer& viewer() { return *static_cast<Viewer*>(glutGetWindowData()); }
 
 Image readWindow(int width, int height) {
   Image image;
@@ -267,20 +154,6 @@ void startRecording(Viewer& v) {
   const long long step = v.simulation.step();
   v.nextFrame = step == v.savedStep ? v.clock.nextAfter(step) : step;
   v.say("saving " + recordingFolders(v) + " (space stops)");
-}
-
-void toggleSaving(Viewer& v) {
-  if (v.saving) {
-    v.saving = false;
-    v.say(textf("stopped saving: %d frames in %s/ (space saves on into it)", v.frames->written(),
-                v.frames->dir().c_str()));
-    return;
-  }
-  try {
-    startRecording(v);
-  } catch (const std::exception& e) {
-    v.say(e.what());
-  }
 }
 
 // The drawn frame, read before the overlay is drawn, so that it is the picture an off-screen run
@@ -453,203 +326,6 @@ void idle() {
   glutPostRedisplay();
 }
 
-// ---------------------------------------------------------------------------------------------
-// Keys and the mouse.
-
-void togglePause(Viewer& v) {
-  if (v.diverged) {
-    v.say("a diverged run stays paused: ESC quits");
-    return;
-  }
-  if (v.ended) {  // p after the end runs on without one
-    v.ended = false;
-    v.endStep.reset();
-    v.standing.clear();
-  }
-  v.paused = !v.paused;
-  v.realTimeStart = Clock::now();
-  v.realTimeStartSim = v.time();
-  v.rateSteps = 0;
-  v.rateStart = Clock::now();
-}
-
-void toggleColourHold(Viewer& v) {
-  if (v.draw.coloring == Coloring::Plain) {
-    v.say("f holds the scale of a coloured surface: c colours it first");
-  } else if (v.draw.coloring == Coloring::Friction) {
-    v.say("the friction colouring has no scale to hold: its colours are states");
-  } else if (v.draw.colourScale > 0) {
-    v.draw.colourScale = 0;
-    v.say("the colour scale fits each frame again");
-  } else {
-    v.draw.colourScale = fittedColourScale(v.model, v.state(), v.draw.coloring);
-    v.say(textf("colour scale held at %g: a colour means the same value in every frame",
-                v.draw.colourScale));
-  }
-}
-
-void nextColouring(Viewer& v) {
-  v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
-  v.draw.colourScale = 0;  // a held scale belongs to the colouring it was held for
-}
-
-// Adds `dv` to every free point's velocity (Simulation::addVelocity: pinned points stay).
-void kick(Viewer& v, Vec3 dv, const char* what) {
-  if (v.diverged) {
-    v.say("a diverged run stays paused: ESC quits");
-    return;
-  }
-  v.simulation.addVelocity(dv);
-  v.say(textf("%s: %g m/s added to every free point%s", what, length(dv),
-              v.paused ? " (paused: p runs on)" : ""));
-}
-
-// The arrow keys push the jelly horizontally as the camera sees it: up away from the camera,
-// down toward it, left and right to the window's left and right.
-void special(int key, int, int) {
-  Viewer& v = viewer();
-  const Camera& c = v.camera;
-  switch (key) {
-    case GLUT_KEY_UP:
-      kick(v, kPushSpeed * c.away(), "push away");
-      break;
-    case GLUT_KEY_DOWN:
-      kick(v, (-kPushSpeed) * c.away(), "push toward the camera");
-      break;
-    case GLUT_KEY_LEFT:
-      kick(v, (-kPushSpeed) * c.right(), "push left");
-      break;
-    case GLUT_KEY_RIGHT:
-      kick(v, kPushSpeed * c.right(), "push right");
-      break;
-    default:
-      break;
-  }
-  glutPostRedisplay();
-}
-
-void keyboard(unsigned char key, int, int) {
-  Viewer& v = viewer();
-  switch (key) {
-    case kEscape:
-      glutLeaveMainLoop();
-      break;
-    case 'z':
-      v.camera.radius = std::max(kMinRadius, v.camera.radius - kZoomStep);
-      break;
-    case 'x':
-      v.camera.radius += kZoomStep;
-      break;
-    case 'e':
-      v.camera = cameraFor(v.model, v.pictures.camera);
-      break;
-    case 'v':
-      v.draw.wireframe = !v.draw.wireframe;
-      break;
-    case 's':
-      v.draw.structural = !v.draw.structural;
-      break;
-    case 'h':
-      v.draw.shear = !v.draw.shear;
-      break;
-    case 'b':
-      v.draw.bend = !v.draw.bend;
-      break;
-    case 'p':
-      togglePause(v);
-      break;
-    case ' ':
-      toggleSaving(v);
-      break;
-    case 'c':
-      nextColouring(v);
-      break;
-    case 'f':
-      toggleColourHold(v);
-      break;
-    case 'r':
-      v.realTime = !v.realTime;
-      v.realTimeStart = Clock::now();
-      v.realTimeStartSim = v.time();
-      break;
-    case '?':
-    case 'k':
-      v.help = !v.help;
-      break;
-    case 'w':
-      v.screenshotAsked = true;
-      break;
-    case 'j':
-      kick(v, kJumpSpeed * v.camera.up, "jump");  // against gravity (cameraFor), or +z
-      break;
-    default:
-      break;
-  }
-  glutPostRedisplay();
-}
-
-// The cursor at window depth `depth`, in world coordinates.
-Vec3 unproject(const Viewer& v, int x, int y, double depth) {
-  GLdouble wx, wy, wz;
-  gluUnProject(x, v.height - y, depth, v.modelview, v.projection, v.viewport, &wx, &wy, &wz);
-  return {wx, wy, wz};
-}
-
-void grab(Viewer& v, int x, int y) {
-  int best = -1;
-  double bestDistance = kGrabPixels, bestDepth = 0;
-  const int n = v.model.points();
-  for (int q : v.model.body().surfacePoints) {
-    Vec3 p = load(v.state().p(), q, n);
-    GLdouble sx, sy, sz;
-    if (!gluProject(p.x, p.y, p.z, v.modelview, v.projection, v.viewport, &sx, &sy, &sz)) continue;
-    double d = std::hypot(sx - x, sy - (v.height - y));
-    // Of points equally near the cursor, the one nearest the camera.
-    if (d < bestDistance - 1e-9 ||
-        (best >= 0 && std::fabs(d - bestDistance) < 2 && sz < bestDepth)) {
-      best = q;
-      bestDistance = d;
-      bestDepth = sz;
-    }
-  }
-  if (best < 0) {
-    v.say("no point of the jelly near the cursor: left-drag from the jelly's surface to pull it");
-    return;
-  }
-  v.grabDepth = bestDepth;
-  v.pull.point = best;
-  v.pull.stiffness = std::max(kMinPullStiffness, v.model.world.kElastic);
-  v.pull.target = unproject(v, x, y, v.grabDepth);
-}
-
-void mouse(int button, int buttonState, int x, int y) {
-  Viewer& v = viewer();
-  v.lastX = x;
-  v.lastY = y;
-  if (button == GLUT_RIGHT_BUTTON) v.rotating = buttonState == GLUT_DOWN;
-  if (button == GLUT_LEFT_BUTTON) {
-    if (buttonState == GLUT_DOWN) {
-      grab(v, x, y);
-    } else if (v.pull.point >= 0) {
-      v.pull.point = -1;  // the simulation's next step, without a pull, restarts the energy bound
-    }
-  }
-}
-
-void motion(int x, int y) {
-  Viewer& v = viewer();
-  if (v.rotating) {
-    const double perPixel = radiansPerPixel(v.width, v.height);
-    v.camera.phi += (x - v.lastX) * perPixel;
-    v.camera.theta =
-        std::clamp(v.camera.theta + (y - v.lastY) * perPixel, -kMaxElevation, kMaxElevation);
-  }
-  if (v.pull.point >= 0) v.pull.target = unproject(v, x, y, v.grabDepth);
-  v.lastX = x;
-  v.lastY = y;
-  glutPostRedisplay();
-}
-
 // After the window has closed: a diagnosis still under way is waited for, so that its advice is
 // printed and no thread outlives the run.
 Outcome finish(Viewer& v) {
@@ -661,6 +337,20 @@ Outcome finish(Viewer& v) {
 }
 
 }  // namespace
+
+void toggleSaving(Viewer& v) {
+  if (v.saving) {
+    v.saving = false;
+    v.say(textf("stopped saving: %d frames in %s/ (space saves on into it)", v.frames->written(),
+                v.frames->dir().c_str()));
+    return;
+  }
+  try {
+    startRecording(v);
+  } catch (const std::exception& e) {
+    v.say(e.what());
+  }
+}
 
 Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   WorldFile file;
