@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/assert.h"
 #include "core/team.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
@@ -23,6 +24,10 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
                      const Bounds* reach, double* force, const Pull* pull,
                      const double* springForce) {
   const int n = model.points();
+  // A range begins on a multiple of kRangeAlignment (model/term.h) and lies within the body.
+  JELLO_ASSERT(points.begin % kRangeAlignment == 0);
+  JELLO_ASSERT(0 <= points.begin && points.begin <= points.end && points.end <= n);
+  JELLO_ASSERT(!pull || pull->point < n);
   for (int a = 0; a < 3; ++a)
     std::fill(force + a * n + points.begin, force + a * n + points.end, 0.0);
   const ForceTerm* inReach[kMaxTerms];
@@ -159,6 +164,7 @@ OdeSystem jelloSystem(const JelloInputs& inputs) {
 }
 
 void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
+  JELLO_ASSERT(state.points() == model.points());
   const JelloInputs inputs{&model, pull, team};
   step(jelloSystem(inputs), state.y, dt);
 }

@@ -35,12 +35,13 @@ namespace {
 
 // The end of a divergence message for a body too large to analyse while the user waits.
 constexpr double kUsefulRowSumBound = 0.01;  // of 1 / fastest; RK4's undamped limit is 2.8
-std::string largeBodyAdvice(const World& world, const State& initial, int points) {
-  const char* name = integratorName(world.integrator);
-  const std::string head = "dt=" + figureText(world.dt) + " with " + name + " on a body of " +
+std::string largeBodyAdvice(const World& world, const State& initial, Integrator integrator,
+                            double dt, int points) {
+  const char* name = integratorName(integrator);
+  const std::string head = "dt=" + figureText(dt) + " with " + name + " on a body of " +
                            std::to_string(points) + " points";
   const std::string check = " (jello --check finds the limit itself, slowly for a body this large)";
-  const auto [bound, fastest] = rowSumBound(makeModel(world, initial), initial, world.integrator);
+  const auto [bound, fastest] = rowSumBound(makeModel(world, initial), initial, integrator);
   if (std::isnan(bound)) {
     return head +
            ": the forces' derivatives at the initial state are not finite numbers; no step "
@@ -54,24 +55,24 @@ std::string largeBodyAdvice(const World& world, const State& initial, int points
     return head + ": " + name + " is stable only as far as damping holds the modes, which row " +
            "sums cannot bound" + check + "; try --integrator RK4 or --integrator IMPLICIT";
   }
-  if (world.dt > bound) {
+  if (dt > bound) {
     return head + ": the initial state's modes are stable below " + limitText(bound) +
            " (a bound from its row sums)" + check + "; " + stepAdvice(bound);
   }
   return head + " is below " + limitText(bound) +
          ", where the initial state's modes are stable (a bound from its row sums), but the "
          "motion left it (a harder contact?)" +
-         check + "; " + stepAdvice(world.dt);
+         check + "; " + stepAdvice(dt);
 }
 
 }  // namespace
 
-std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
-                              const std::string& reason) {
+std::string divergenceMessage(const World& world, const State& initial, Integrator integrator,
+                              double dt, long long step, double time, const std::string& reason) {
   char head[160];
   std::snprintf(head, sizeof head, "diverged at step %lld (t=%.6g s): ", step, time);
   std::string out = head + reason + "; ";
-  const char* name = integratorName(world.integrator);
+  const char* name = integratorName(integrator);
   // Checks of microseconds first: an eigen-analysis of such a world would say nothing, slowly.
   if (findDivergedPoint(initial) >= 0) {
     return out +
@@ -87,36 +88,34 @@ std::string divergenceMessage(const World& world, const State& initial, long lon
   // which take seconds at 10^3 points and minutes at 48^3: the message gives the step its row
   // sums guarantee instead, at once. (An integrator without a limit needs no analysis: below.)
   const int points = bodyOf(world).count();
-  if (points > kNumPoints && integratorInfo(world.integrator).boundedStableStep)
-    return out + largeBodyAdvice(world, initial, points);
+  if (points > kNumPoints && integratorInfo(integrator).boundedStableStep)
+    return out + largeBodyAdvice(world, initial, integrator, dt, points);
   // The rest lattice's limit takes milliseconds; when it is already below what the analysis
   // resolves, the springs alone rule every step out and the eigensolves are spared.
-  if (integratorInfo(world.integrator).boundedStableStep &&
-      criticalStep(world.integrator, lineariseAtRest(world).modes) == 0)
-    return out + "dt=" + figureText(world.dt) + " with " + name + ": " + stepAdvice(0);
-  double limit = predictedLimit(world, initial, world.integrator);
-  if (limit == 0)
-    return out + "dt=" + figureText(world.dt) + " with " + name + ": " + stepAdvice(0);
+  if (integratorInfo(integrator).boundedStableStep &&
+      criticalStep(integrator, lineariseAtRest(world).modes) == 0)
+    return out + "dt=" + figureText(dt) + " with " + name + ": " + stepAdvice(0);
+  double limit = predictedLimit(world, initial, integrator);
+  if (limit == 0) return out + "dt=" + figureText(dt) + " with " + name + ": " + stepAdvice(0);
   if (std::isnan(limit)) {
     return out +
            "the forces' derivatives at the initial state are not finite numbers: the world's "
            "numbers are beyond what double arithmetic can simulate, and no step will do";
   }
   if (!std::isfinite(limit)) {
-    return out + "dt=" + figureText(world.dt) + " with " + name +
-           ", which has no stability limit; " +
-           (world.dt / 2 >= std::numeric_limits<double>::min()
+    return out + "dt=" + figureText(dt) + " with " + name + ", which has no stability limit; " +
+           (dt / 2 >= std::numeric_limits<double>::min()
                 ? "try a smaller --dt"
                 : "no step will do (dt is the smallest a double holds)");
   }
-  if (world.dt > limit) {
-    return out + "dt=" + figureText(world.dt) + " exceeds " + name + "'s stable limit " +
+  if (dt > limit) {
+    return out + "dt=" + figureText(dt) + " exceeds " + name + "'s stable limit " +
            limitText(limit) + " for this world; " + stepAdvice(limit);
   }
-  return out + "dt=" + figureText(world.dt) + " is within " + name + "'s predicted limit " +
+  return out + "dt=" + figureText(dt) + " is within " + name + "'s predicted limit " +
          figureText(limit) +
          " for this world, but the motion left it (a harder contact than a face on a wall?); " +
-         stepAdvice(world.dt);
+         stepAdvice(dt);
 }
 
 }  // namespace jello

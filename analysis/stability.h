@@ -71,8 +71,9 @@ std::string stabilityJson(const std::string& worldPath, const World& world,
 // stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT". A body of more
 // points than the course cube is not analysed (that takes seconds to minutes): its advice comes
 // from a step bounded by the row sums of its stiffness and damping, in a second at 48^3.
-std::string divergenceMessage(const World& world, const State& initial, long long step, double time,
-                              const std::string& reason);
+// The run's integrator and dt are its own (the world file's, or the command line's overrides).
+std::string divergenceMessage(const World& world, const State& initial, Integrator integrator,
+                              double dt, long long step, double time, const std::string& reason);
 
 // A predicted limit in words, "%.3g" of it: criticalStep's 0 is "below 8.67e-19" (not zero),
 // NaN "none (not finite)".

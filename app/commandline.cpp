@@ -124,7 +124,7 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
   g->dtOption = app.add_option("--dt", g->dt, "time step in seconds (overrides the world file)")
                     ->transform(kPositive);
   g->nOption = app.add_option("--n", g->n, "steps per drawn frame (overrides the world file)")
-                   ->transform(wholeNumber(1, std::numeric_limits<int>::max()));
+                   ->transform(wholeNumber(1, kMostStepsPerFrame));
   g->dumpOption =
       app.add_option(
              "--dump", g->dump,

@@ -154,10 +154,11 @@ jello::Outcome applyParameters(const CreateWorldOptions& o, jello::World& w) {
   if (*o.noPlaneOption) w.hasPlane = false;
   if (*o.planeOption) {
     const std::vector<double>& plane = o.plane;
-    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
+    const jello::Plane asked{plane[0], plane[1], plane[2], plane[3]};
+    if (!jello::hasNormal(asked))
       return jello::failed("--plane: the normal (a, b, c) must not be zero");
     w.hasPlane = true;
-    w.plane = {plane[0], plane[1], plane[2], plane[3]};
+    w.plane = asked;
     if (std::string why = jello::planeProblem(w.plane); !why.empty())
       return jello::failed("--plane: " + why);
   }
@@ -171,8 +172,8 @@ jello::Outcome applyField(const CreateWorldOptions& o, double mass, jello::Field
   bool newSource = false;
   for (CLI::Option* option : o.fieldSources) newSource = newSource || option->count() > 0;
   if (newSource && field.source == Source::Given) {
-    field.resolution = 30;  // a --from world's field is replaced,
-    field.given = {};       // and let go before another is read or built
+    field.resolution = kCourseResolution;  // a --from world's field is replaced,
+    field.given = {};                      // and let go before another is read or built
   }
   if (*o.resolutionOption) {
     if (field.source == Source::Given && !newSource) {

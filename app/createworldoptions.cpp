@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/worldbuilder.h"
 #include "model/integrator.h"
 #include "model/world.h"
 
@@ -14,6 +15,13 @@ namespace jello {
 namespace {
 
 constexpr const char* kVersion = "createWorld 0.1.0";
+
+// --preset's choices: the preset table's names.
+std::vector<std::string> presetNames() {
+  std::vector<std::string> names;
+  for (const Preset& preset : coursePresets()) names.push_back(preset.name);
+  return names;
+}
 
 void addGeneralOptions(CLI::App& app, CreateWorldOptions& o) {
   app.set_version_flag("--version", kVersion);
@@ -27,10 +35,9 @@ void addGeneralOptions(CLI::App& app, CreateWorldOptions& o) {
              "memory the world may take, GB (default: what the machine and its limits allow)")
           ->type_name("GB")
           ->check(kPositive);
-  o.presetOption =
-      app.add_option("--preset", o.preset, "start from a course world")
-          ->type_name("NAME")
-          ->check(CLI::IsMember({"jello", "rotate", "moveLeft", "skewedCorner", "gravity"}));
+  o.presetOption = app.add_option("--preset", o.preset, "start from a course world")
+                       ->type_name("NAME")
+                       ->check(CLI::IsMember(presetNames()));
   o.fromOption =
       app.add_option("--from", o.from, "start from WORLD: its state, and every parameter not given")
           ->type_name("WORLD");
@@ -48,7 +55,7 @@ void addParameterOptions(CLI::App& app, CreateWorldOptions& o) {
                    ->group("Parameters");
   o.nOption = app.add_option("--n", o.n, "steps per drawn frame")
                   ->type_name("N")
-                  ->transform(jello::wholeNumber(1, std::numeric_limits<int>::max()))
+                  ->transform(jello::wholeNumber(1, kMostStepsPerFrame))
                   ->group("Parameters");
   o.kElasticOption = app.add_option("--k-elastic", o.kElastic, "spring stiffness, N/m")
                          ->type_name("K")

@@ -132,13 +132,14 @@ Outcome observed(Call call) {
 }
 
 // Why a run stopped: RK45's unmet tolerances are bad input, anything else a divergence.
-Outcome runFailure(const RunOptions& options, const World& world, const State& initial,
+Outcome runFailure(const RunOptions& options, const Simulation& run, const State& initial,
                    const RunOutcome& outcome) {
   if (outcome.kind == RunOutcome::Kind::ToleranceUnmet)
     return failed(options.worldPath + ": " +
-                  toleranceFailure(options.tolerances, outcome.step, world.dt));
+                  toleranceFailure(options.tolerances, outcome.step, run.dt()));
   return diverged(options.worldPath + ": " +
-                  divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason));
+                  divergenceMessage(run.model().world, initial, run.integrator(), run.dt(),
+                                    outcome.step, outcome.time, outcome.reason));
 }
 
 // The summary line on stdout.
@@ -250,7 +251,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
     const long long done = simulation.step();
     const long long stop = std::min({steps, nextMultiple(done, kProgressEvery), nextFrame});
     const RunOutcome outcome = simulation.advance(stop - done);
-    if (!outcome.ran()) return runFailure(options, world, file.state, outcome);
+    if (!outcome.ran()) return runFailure(options, simulation, file.state, outcome);
     if (frames && simulation.step() == nextFrame) {
       nextFrame = clock.nextAfter(nextFrame);
       if (frames->wantsMore()) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/pictures.h"
+#include "core/limits.h"
 #include "core/outcome.h"
 #include "model/world.h"
 #include "solver/integrators.h"
@@ -13,13 +14,6 @@
 #include "solver/simulation.h"
 
 namespace jello {
-
-// The default length of a run: 300 drawn frames of n steps each, or, when frames are saved by
-// simulated time (--fps), as long as --max-frames of them take.
-constexpr long long kDefaultFrames = 300;
-// A default run longer than this (n above 100,000) is refused rather than started: at about
-// 100 us an RK4 step it would take most of an hour, which nobody asks for without saying so.
-constexpr long long kMostDefaultSteps = 30'000'000;
 
 // Receives the frames to save (pictures, meshes): the state at step 0 and at the steps of a
 // FrameClock (pictures.h) made from the observer's options.

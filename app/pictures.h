@@ -8,15 +8,9 @@
 #include <optional>
 #include <string>
 
-namespace jello {
+#include "core/limits.h"
 
-constexpr int kMinPictureSize = 16;  // pixels a side
-constexpr int kMaxPictureSize = 8192;
-constexpr int kDefaultMaxFrames = 300;
-constexpr int kFrameDigits = 4;
-constexpr int kMaxFrames = 10000;   // what four digits can number
-constexpr double kDefaultFps = 30;  // saved frames per simulated second
-constexpr double kMaxFps = 1e6;
+namespace jello {
 
 // The colourings of the cube's surface by name, in the order the window's `c` cycles them
 // (showCube.h's Coloring): --colouring starts a run's pictures in one of them.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 
 #include "app/describe.h"
 
@@ -12,7 +13,6 @@ namespace jello {
 
 namespace {
 
-constexpr int kCourseResolution = 30;
 constexpr double kCourseMass = 1.0 / kNumPoints;
 
 Recipe courseBase(double dt, double kElastic, double kCollision) {
@@ -50,44 +50,74 @@ Recipe defaultRecipe() {
   return r;
 }
 
+namespace {
+
+constexpr double kSeventh = 1.0 / 7;
+
+Recipe jelloPreset() {
+  Recipe r = courseBase(0.0005, 200, 400);
+  r.world.hasPlane = true;
+  r.world.plane = {-1, 1, 1, 2};
+  r.state.skewCorner = {kSeventh, kSeventh, kSeventh};
+  r.state.velocity = Vec3{10, -10, 20};
+  return r;
+}
+
+Recipe rotatePreset() {
+  Recipe r = courseBase(0.001, 500, 1000);
+  r.world.hasPlane = true;
+  r.world.plane = {1, -1, -1, 4};
+  r.field.source = FieldRecipe::Source::Swirl;
+  r.field.strength = 5.0 / 512;
+  return r;
+}
+
+Recipe moveLeftPreset() {
+  Recipe r = courseBase(0.0005, 500, 1000);
+  r.state.velocity = Vec3{-50, 0, 0};
+  return r;
+}
+
+Recipe skewedCornerPreset() {
+  Recipe r = courseBase(0.00001, 500, 1000);
+  r.state.skewCorner = {kSeventh, kSeventh, kSeventh};
+  return r;
+}
+
+Recipe gravityPreset() {
+  Recipe r = courseBase(0.0001, 500, 1000);
+  r.world.hasPlane = true;
+  r.world.plane = {-1, 1, 2, 6};
+  r.field.uniform = {0, 0, -0.06};
+  r.state.velocity = Vec3{10, -10, 0};
+  return r;
+}
+
+// The course's five worlds, in the course's order.
+constexpr Preset kPresets[] = {{"jello", jelloPreset},
+                               {"rotate", rotatePreset},
+                               {"moveLeft", moveLeftPreset},
+                               {"skewedCorner", skewedCornerPreset},
+                               {"gravity", gravityPreset}};
+
+}  // namespace
+
+std::vector<Preset> coursePresets() { return {std::begin(kPresets), std::end(kPresets)}; }
+
+std::string presetNameList() {
+  std::string list;
+  for (std::size_t i = 0; i < std::size(kPresets); ++i)
+    list += std::string(i == 0                         ? ""
+                        : i + 1 == std::size(kPresets) ? " or "
+                                                       : ", ") +
+            kPresets[i].name;
+  return list;
+}
+
 Recipe coursePreset(const std::string& name) {
-  const double seventh = 1.0 / 7;
-  if (name == "jello") {
-    Recipe r = courseBase(0.0005, 200, 400);
-    r.world.hasPlane = true;
-    r.world.plane = {-1, 1, 1, 2};
-    r.state.skewCorner = {seventh, seventh, seventh};
-    r.state.velocity = Vec3{10, -10, 20};
-    return r;
-  }
-  if (name == "rotate") {
-    Recipe r = courseBase(0.001, 500, 1000);
-    r.world.hasPlane = true;
-    r.world.plane = {1, -1, -1, 4};
-    r.field.source = FieldRecipe::Source::Swirl;
-    r.field.strength = 5.0 / 512;
-    return r;
-  }
-  if (name == "moveLeft") {
-    Recipe r = courseBase(0.0005, 500, 1000);
-    r.state.velocity = Vec3{-50, 0, 0};
-    return r;
-  }
-  if (name == "skewedCorner") {
-    Recipe r = courseBase(0.00001, 500, 1000);
-    r.state.skewCorner = {seventh, seventh, seventh};
-    return r;
-  }
-  if (name == "gravity") {
-    Recipe r = courseBase(0.0001, 500, 1000);
-    r.world.hasPlane = true;
-    r.world.plane = {-1, 1, 2, 6};
-    r.field.uniform = {0, 0, -0.06};
-    r.state.velocity = Vec3{10, -10, 0};
-    return r;
-  }
-  throw InputError("unknown preset '" + name +
-                   "', expected jello, rotate, moveLeft, skewedCorner or gravity");
+  for (const Preset& preset : kPresets)
+    if (name == preset.name) return preset.make();
+  throw InputError("unknown preset '" + name + "', expected " + presetNameList());
 }
 
 State buildState(const StateRecipe& recipe) {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "io/fieldrecipe.h"
 #include "io/input.h"
@@ -40,9 +41,16 @@ struct Recipe {
 // [0,1]^3 at rest, no plane, no field.
 Recipe defaultRecipe();
 
-// The course world `name` (jello, rotate, moveLeft, skewedCorner, gravity) as a recipe, with
-// exact values (1/512 kg, positions i/7) where the course files hold six decimals.
-// Throws InputError for an unknown name.
+// The course's worlds as recipes (createWorld --preset NAME), with exact values (1/512 kg,
+// positions i/7) where the course files hold six decimals: the table of their names and makers.
+struct Preset {
+  const char* name;  // jello, rotate, moveLeft, skewedCorner, gravity
+  Recipe (*make)();
+};
+std::vector<Preset> coursePresets();
+// "jello, rotate, moveLeft, skewedCorner or gravity".
+std::string presetNameList();
+// The preset `name`. Throws InputError for an unknown name.
 Recipe coursePreset(const std::string& name);
 
 // The initial state of a recipe.

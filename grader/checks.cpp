@@ -72,7 +72,7 @@ World probeWorld() {
   world.kCollision = 1100;
   world.dCollision = 1.3;
   world.mass = kProbeMass;
-  world.field.resolution = 30;
+  world.field.resolution = kCourseResolution;
   world.field.forces.assign(3 * 30 * 30 * 30, 0.0);
   return world;
 }

@@ -234,21 +234,22 @@ std::string takeDiagnosis(Viewer& v) {
 
 // Pauses on the last sane state and starts the diagnosis on its own thread.
 void diverge(Viewer& v, const RunOutcome& outcome, long long stepBefore) {
-  World world = v.model.world;
-  world.dt = v.simulation.dt();
-  world.integrator = v.simulation.integrator();
+  const Integrator integrator = v.simulation.integrator();
+  const double dt = v.simulation.dt();
   v.simulation.restore(v.lastGood, stepBefore);
   v.diverged = v.paused = true;
   if (outcome.kind == RunOutcome::Kind::ToleranceUnmet) {
-    v.setStanding(toleranceFailure(v.tolerances, outcome.step, world.dt) + " (paused; ESC quits)");
+    v.setStanding(toleranceFailure(v.tolerances, outcome.step, dt) + " (paused; ESC quits)");
     return;
   }
   v.divergedAt = textf("diverged at step %lld (t=%.6g s): %s", outcome.step, outcome.time,
                        outcome.reason.c_str());
   v.setStanding(v.divergedAt + "; diagnosing (finding the stable dt)...");
-  v.diagnosis = std::async(std::launch::async, [world, initial = v.initial, outcome] {
-    return divergenceMessage(world, initial, outcome.step, outcome.time, outcome.reason);
-  });
+  v.diagnosis = std::async(std::launch::async,
+                           [world = v.model.world, initial = v.initial, integrator, dt, outcome] {
+                             return divergenceMessage(world, initial, integrator, dt, outcome.step,
+                                                      outcome.time, outcome.reason);
+                           });
 }
 
 void pollDiagnosis(Viewer& v) {

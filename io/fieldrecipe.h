@@ -16,7 +16,7 @@ namespace jello {
 struct FieldRecipe {
   enum class Source { None, Uniform, Swirl, Radial, Expression, Given };
   Source source = Source::None;
-  int resolution = 30;                 // the course's
+  int resolution = kCourseResolution;  // the course's
   Vec3 uniform;                        // N, Uniform
   double strength = 0;                 // N/m: Swirl F = s (-y, x, 0), Radial F = s (x, y, z)
   std::string expression;              // Expression: "fx; fy; fz" in x, y, z (muparser syntax)

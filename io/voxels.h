@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/limits.h"
 #include "model/body.h"
 #include "model/vec3.h"
 
@@ -27,15 +28,6 @@ struct VoxelGrid : VoxelMask {
   // The centre of voxel (i,j,k), m.
   Vec3 centre(int i, int j, int k) const;
 };
-
-// A mesh's limits. A coordinate beyond kLargestMeshCoordinate (m) is a mistake (a unit or a
-// corrupt file), never a model. The file and triangle caps (and 3 million lines each of `v`,
-// `vn` and `vt`) bound the memory a read takes: a sphere of a million triangles (30 MB) is read
-// in under 2 s in 150 MB, and the dearest file within the caps (measured: 3 million vertices
-// and normals, a million triangles) in 5 s in 380 MB.
-constexpr double kLargestMeshCoordinate = 1e6;
-constexpr std::size_t kMostMeshTriangles = 1000000;
-constexpr std::size_t kMostObjBytes = std::size_t(64) << 20;
 
 // A triangle mesh: vertices (m) and triangles as three indices into them.
 struct TriangleMesh {

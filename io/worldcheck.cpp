@@ -50,8 +50,7 @@ std::optional<WorldProblem> findParameterProblem(const World& w) {
     const double plane[4] = {w.plane.a, w.plane.b, w.plane.c, w.plane.d};
     if (!finite3(plane) || !std::isfinite(plane[3]))
       return problem(Part::Plane, "the plane's coefficients must be finite");
-    if (plane[0] == 0 && plane[1] == 0 && plane[2] == 0)
-      return problem(Part::Plane, "the plane's normal (a,b,c) is zero");
+    if (!hasNormal(w.plane)) return problem(Part::Plane, "the plane's normal (a,b,c) is zero");
   }
   return std::nullopt;
 }

@@ -261,7 +261,7 @@ void readPlane(Parser& in, World& w) {
     in.record(4, "plane a b c d");
     w.plane = {in.number(0, "plane a"), in.number(1, "plane b"), in.number(2, "plane c"),
                in.number(3, "plane d")};
-    if (w.plane.a == 0 && w.plane.b == 0 && w.plane.c == 0) {
+    if (!hasNormal(w.plane)) {
       in.fail(in.line(), "the plane's normal (a,b,c) is zero", "plane a b c");
     }
     // A normal of any size is simulated (normalised by a power of two); an offset too large for it

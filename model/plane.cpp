@@ -19,7 +19,7 @@ Plane normalisedPlane(const Plane& plane) {
 }
 
 std::string planeProblem(const Plane& plane) {
-  if (plane.a == 0 && plane.b == 0 && plane.c == 0) return "the plane's normal (a,b,c) is zero";
+  if (!hasNormal(plane)) return "the plane's normal (a,b,c) is zero";
   if (!std::isfinite(normalisedPlane(plane).d)) {
     return "the plane is too far from the origin to simulate: d is more than 1e308 times the "
            "largest of |a|, |b|, |c|, beyond the range of doubles";

@@ -9,15 +9,13 @@
 #include <optional>
 #include <vector>
 
+#include "core/limits.h"
 #include "model/body.h"
 #include "model/obstacle.h"
 #include "model/springs.h"
 #include "model/vec3.h"
 
 namespace jello {
-
-// The most obstacles a scene may have (each is a term the kernel goes through).
-constexpr int kMostObstacles = 64;
 
 struct SceneSpec {
   // The jelly, when the scene gives its shape ([jelly] shape); null: the course cube.

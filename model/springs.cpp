@@ -8,6 +8,7 @@
 #include <cstring>
 #include <utility>
 
+#include "core/assert.h"
 #include "model/pack.h"
 
 namespace jello {
@@ -364,6 +365,9 @@ void SpringTerm::addListedForces(PointRange points, const double* springForce,
 void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                              double* force) const {
   if (!rowKernel_) return addListForces(points, p, v, force);
+  // The row kernel is the course cube's: 512 points, ranges of whole lattice rows.
+  JELLO_ASSERT(pointCount() == kNumPoints);
+  JELLO_ASSERT(points.begin % kLatticeSize == 0 && points.end % kLatticeSize == 0);
   const Inputs in{p, v, -c_.k[0], -c_.d[0], rests_.data()};
   if (dampers_)
     addSpringForces<true>(in, points, force);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/limits.h"
 #include "model/integrator.h"
 #include "model/vec3.h"
 
@@ -20,11 +21,6 @@ constexpr int kNumPoints = kLatticeSize * kLatticeSize * kLatticeSize;  // 512
 constexpr int kNumCoords = 3 * kNumPoints;                              // 1536 doubles per array
 constexpr double kRestSpacing = 1.0 / (kLatticeSize - 1);               // 1/7 m between neighbours
 constexpr double kBoxHalfSize = 2.0;                                    // bounding box [-2,2]^3
-// The largest field resolution. What a field of R^3 nodes costs is memory (memory.h; a world that
-// does not fit is refused before anything is allocated): 24 bytes a node held once by createWorld,
-// 80 by a run (the World read, the Model's copy of it and its 32-byte padded nodes). Peak RSS at
-// R = 512 (134M nodes; /usr/bin/time -v): createWorld 3.27 GB, a run with --dump 10.7 GB.
-constexpr int kMaxResolution = 512;
 
 constexpr int pointIndex(int i, int j, int k) { return (i * kLatticeSize + j) * kLatticeSize + k; }
 
@@ -52,6 +48,9 @@ std::string latticeLabel(int q);
 struct Plane {
   double a = 0, b = 0, c = 0, d = 0;
 };
+// Whether (a,b,c) != 0: the one rule every plane keeps (the world reader, createWorld --plane, the
+// checks of a world in memory, the plane term).
+inline bool hasNormal(const Plane& plane) { return plane.a != 0 || plane.b != 0 || plane.c != 0; }
 
 // Forces (newtons) on an R^3 grid spanning the box. Node (i,j,k) sits at
 // (-2 + 4i/(R-1), -2 + 4j/(R-1), -2 + 4k/(R-1)); its force is forces[3*(i*R*R + j*R + k) + axis].

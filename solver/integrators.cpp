@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/assert.h"
 #include "solver/jacobian.h"
 
 namespace jello {
@@ -472,6 +473,7 @@ const StepStats& Stepper::stats() const { return work_->stats; }
 
 void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
   const std::size_t n = y.size();
+  JELLO_ASSERT(n % 2 == 0);  // y = [p; v]: the integrators that split it take halves
   for (auto& k : work_->k) sized(k, n);
   sized(work_->temp, n);
   sized(work_->next, n);

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/assert.h"
+
 namespace jello {
 
 std::optional<long long> stepsForTime(double time, double dt) {
@@ -44,7 +46,11 @@ Simulation::Simulation(const Model& model, const State& start, Integrator integr
       energyEvery_(std::max<long long>(model.world.n, kEnergyEvery)),
       tolerances_(tolerances),
       stepper_(integrator, tolerances),
-      guard_(model, start) {}
+      guard_(model, start) {
+  // The start holds the model's body's points; a step is a positive, finite time.
+  JELLO_ASSERT(start.points() == model.points());
+  JELLO_ASSERT(dt > 0 && std::isfinite(dt));
+}
 
 bool Simulation::stepAndCheck(double h, double timeAfter, const Pull* pull) {
   // The pull's work is the world's energy once the user lets go: the bound starts afresh.

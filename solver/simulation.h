@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 
+#include "core/limits.h"
 #include "model/world.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
@@ -29,11 +30,6 @@ namespace jello {
 
 // The energy bound is checked at most this often (steps); see the rule above.
 constexpr long long kEnergyEvery = 8;
-
-// The most steps a run may take. 1e12 steps are months of computing at the kernel's microseconds
-// a step, so no run meant to finish asks for more; and up to it a step count, and the time
-// s * dt of step s, are exact in a double (2^53 ~ 9e15) and far from long long's limit.
-constexpr double kMaxSteps = 1e12;
 
 // Number of steps of dt that fit in T seconds, for every caller (--time, --report, the observed
 // stability limits): the fewest that reach T, with a relative slack of kStepSlack that keeps

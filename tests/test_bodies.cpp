@@ -380,7 +380,8 @@ TEST(SceneBodies, ALargeBodysDivergenceSuggestsAStepBelowTheAnalysedLimitWithout
                                   Integrator::RK4, Integrator::RK45}) {
       SCOPED_TRACE(integratorName(integrator));
       f.world.integrator = integrator;
-      const std::string message = divergenceMessage(f.world, f.state, 3, 0.03, "a test");
+      const std::string message =
+          divergenceMessage(f.world, f.state, f.world.integrator, f.world.dt, 3, 0.03, "a test");
       const std::size_t at = message.find("stable below ");
       ASSERT_NE(at, std::string::npos) << message;
       const double bound = std::stod(message.substr(at + 13));
@@ -389,7 +390,8 @@ TEST(SceneBodies, ALargeBodysDivergenceSuggestsAStepBelowTheAnalysedLimitWithout
       EXPECT_GT(bound, limit / 25) << message;
     }
     f.world.integrator = Integrator::Euler;
-    EXPECT_NE(divergenceMessage(f.world, f.state, 3, 0.03, "a test").find("row sums cannot bound"),
+    EXPECT_NE(divergenceMessage(f.world, f.state, f.world.integrator, f.world.dt, 3, 0.03, "a test")
+                  .find("row sums cannot bound"),
               std::string::npos);
   }
 }

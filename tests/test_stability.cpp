@@ -166,8 +166,8 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
   for (const auto& c : cases) {
     const auto start = std::chrono::steady_clock::now();
     EXPECT_EQ(beyondDoubles(c.world, c.state), c.says);
-    const std::string message =
-        divergenceMessage(c.world, c.state, 1, 0.001, "point p[0][0][0] is no longer finite");
+    const std::string message = divergenceMessage(c.world, c.state, c.world.integrator, c.world.dt,
+                                                  1, 0.001, "point p[0][0][0] is no longer finite");
     EXPECT_NE(message.find("beyond what double arithmetic can simulate (" + std::string(c.says) +
                            "): no step will do"),
               std::string::npos)
@@ -189,8 +189,8 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
   EXPECT_EQ(beyondDoubles(stiff, f.state), "");
   lineariseAtRest(stiff);  // the unit lattice's eigensolve, once per process
   const auto start = std::chrono::steady_clock::now();
-  const std::string message =
-      divergenceMessage(stiff, f.state, 1, 0.001, "point p[0][0][0] is no longer finite");
+  const std::string message = divergenceMessage(stiff, f.state, stiff.integrator, stiff.dt, 1,
+                                                0.001, "point p[0][0][0] is no longer finite");
   EXPECT_LT(secondsSince(start), 0.1);
   EXPECT_NE(
       message.find("dt=0.001 with RK4: no step will do: the stable limit is below 8.67e-19 s"),
