@@ -85,7 +85,7 @@ WorldFile readWorldFile(const std::string& path) {
   }
 }
 
-void formatWorldInBlocks(const World& w, const State& state,
+void formatWorldInBlocks(const World& w, const RunSettings& run, const State& state,
                          const std::function<void(std::string_view)>& write) {
   std::string out;
   out.reserve(kFormatBlock + 256);
@@ -94,10 +94,10 @@ void formatWorldInBlocks(const World& w, const State& state,
     write(out);
     out.clear();
   };
-  out += integratorName(w.integrator);
+  out += integratorName(run.integrator);
   out += '\n';
-  appendNumber(out, w.dt);
-  out += ' ' + std::to_string(w.n) + '\n';
+  appendNumber(out, run.dt);
+  out += ' ' + std::to_string(run.n) + '\n';
   appendLine(out, {w.kElastic, w.dElastic, w.kCollision, w.dCollision});
   appendLine(out, {w.mass});
   out += w.hasPlane ? "1\n" : "0\n";
@@ -118,19 +118,19 @@ void formatWorldInBlocks(const World& w, const State& state,
   if (!out.empty()) write(out);
 }
 
-std::string formatWorld(const World& w, const State& state) {
+std::string formatWorld(const World& w, const RunSettings& run, const State& state) {
   std::string out;
-  formatWorldInBlocks(w, state, [&](std::string_view block) { out += block; });
+  formatWorldInBlocks(w, run, state, [&](std::string_view block) { out += block; });
   return out;
 }
 
-void writeWorldFile(const std::string& path, const World& world, const State& state,
-                    bool overwrite) {
+void writeWorldFile(const std::string& path, const World& world, const RunSettings& run,
+                    const State& state, bool overwrite) {
   // The text goes out a block at a time: a large field's text is never held whole.
   writeFileWhole(
       path,
       [&](std::FILE* file) {
-        formatWorldInBlocks(world, state, [file](std::string_view block) {
+        formatWorldInBlocks(world, run, state, [file](std::string_view block) {
           if (std::fwrite(block.data(), 1, block.size(), file) != block.size())
             throw std::runtime_error(std::string("cannot write: ") + std::strerror(errno));
         });

@@ -77,7 +77,7 @@ struct StepTiming {
 // Steps of each model as a run takes them (Simulation: the stepper and the checks), from the
 // initial state every time, so that each run does the same work.
 std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const State& initial,
-                                  Integrator integrator, double dt, const RunOptions& run,
+                                  const RunSettings& settings, const RunOptions& run,
                                   long long fixedSteps, int repeats) {
   std::vector<StepTiming> timings(kernels.size());
   std::vector<long long> steps(kernels.size()), evaluations(kernels.size());
@@ -85,7 +85,7 @@ std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const Stat
   std::vector<std::unique_ptr<Simulation>> simulations;
   for (const Kernel& kernel : kernels) {
     simulations.push_back(
-        std::make_unique<Simulation>(*kernel.model, initial, integrator, dt, run.tolerances));
+        std::make_unique<Simulation>(*kernel.model, initial, settings, run.tolerances));
     simulations.back()->setTeam(kernel.team);
   }
   std::vector<Work> works;
@@ -162,20 +162,19 @@ struct BenchFigures {
 
 // Each integrator's steps, timed (a diverging run would time arithmetic on huge numbers).
 BenchRow timeIntegrator(const std::vector<Kernel>& kernels, const State& initial,
-                        const IntegratorInfo& row, double worldDt, const RunOptions& run,
+                        const IntegratorInfo& row, const RunSettings& world, const RunOptions& run,
                         long long fixed, int repeats) {
   // A step that assembles and solves with the Jacobian (IMPLICIT) takes milliseconds: a few
   // steps tell.
   const long long steps = fixed ? fixed : row.needsJacobian ? 3 : 0;
   constexpr int kHalvings = 12;
-  double dt = worldDt;
-  std::vector<StepTiming> timings =
-      timeSteps(kernels, initial, row.integrator, dt, run, steps, repeats);
+  RunSettings settings{row.integrator, world.dt, world.n};
+  std::vector<StepTiming> timings = timeSteps(kernels, initial, settings, run, steps, repeats);
   for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
-    dt /= 2;
-    timings = timeSteps(kernels, initial, row.integrator, dt, run, steps, repeats);
+    settings.dt /= 2;
+    timings = timeSteps(kernels, initial, settings, run, steps, repeats);
   }
-  return {row.integrator, dt, timings[0], timings[1], timings[2]};
+  return {row.integrator, settings.dt, timings[0], timings[1], timings[2]};
 }
 
 BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Model& specialised,
@@ -189,7 +188,7 @@ BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Mo
   const std::vector<double> forces = timeForces(kernels, file.state, fixed, figures.repeats);
   std::copy(forces.begin(), forces.end(), figures.forces);
   // The world's text is parsed from memory: the file itself may be a pipe, read once already.
-  const std::string text = formatWorld(file.world, file.state);
+  const std::string text = formatWorld(file);
   figures.loading = medianSecondsPerCall({[&](long long count) {
                                            for (long long i = 0; i < count; ++i)
                                              parseWorld(text, run.worldPath);
@@ -197,18 +196,19 @@ BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Mo
                                          run.steps ? 1 : 0, figures.repeats)[0];
   for (const IntegratorInfo& row : integratorTable())
     figures.rows.push_back(
-        timeIntegrator(kernels, file.state, row, file.world.dt, run, fixed, figures.repeats));
+        timeIntegrator(kernels, file.state, row, file.run, run, fixed, figures.repeats));
   return figures;
 }
 
-void printBench(const RunOptions& run, const World& world, const Model& specialised,
+void printBench(const RunOptions& run, const WorldFile& file, const Model& specialised,
                 const BenchFigures& f) {
   std::printf("%s\n", termsLine(specialised.forces).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
   std::printf(
       "medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
       "general = every term at every point\n\n",
-      f.repeats, world.dt);
+      f.repeats, file.run.dt);
+  const World& world = file.world;
   std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", f.loading * 1e3,
               world.field.resolution > 0
                   ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
@@ -227,8 +227,9 @@ void printBench(const RunOptions& run, const World& world, const Model& speciali
     char note[96] = "";
     if (s.diverged || g.diverged)
       std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", r.dt);
-    else if (r.dt != world.dt)
-      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", world.dt, r.dt);
+    else if (r.dt != file.run.dt)
+      std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", file.run.dt,
+                    r.dt);
     std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(r.integrator),
                 s.seconds * 1e6, g.seconds * 1e6, g.seconds / s.seconds, t.seconds * 1e6,
                 s.seconds / t.seconds, s.evaluationsPerStep, note);
@@ -243,7 +244,7 @@ Outcome runBench(const RunOptions& run) {
   const Model specialised = makeModel(file.world, file.state, KernelChoice::Specialised);
   const Model general = makeModel(file.world, file.state, KernelChoice::General);
   const BenchFigures figures = measureBench(run, file, specialised, general);
-  printBench(run, file.world, specialised, figures);
+  printBench(run, file, specialised, figures);
   return succeeded();
 }
 

@@ -111,10 +111,11 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   WorldFile file;
   if (Outcome loaded = loadRun(runOptions, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
+  const RunSettings& own = file.run;
   const Model model = makeModel(world, file.state);
   const double T = options.time;
   // The world's own setting runs to T at the world's dt (the sweeps' steps are T / 2^k).
-  if (!stepsForTime(T, world.dt)) return failed("--report: " + tooManyStepsMessage(T, world.dt));
+  if (!stepsForTime(T, own.dt)) return failed("--report: " + tooManyStepsMessage(T, own.dt));
   std::vector<Integrator> integrators = options.integrators;
   if (integrators.empty())
     for (const IntegratorInfo& row : integratorTable()) integrators.push_back(row.integrator);
@@ -133,7 +134,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   ReportProgress progress(reportItemCount(integrators));
   const Study study{model, file.state, T, progress};
   Measured measured;
-  measureAll(study, integrators, world, runOptions.tolerances, &measured);
+  measureAll(study, integrators, own, runOptions.tolerances, &measured);
   const Reference& reference = measured.reference;
   if (reference.diverged) {
     if (made) ::rmdir(options.dir.c_str());  // only when empty: the folder this run made

@@ -317,8 +317,8 @@ std::string reportNumber(double x) {
 // Every sweep, the world's own setting and the reference, on every core. The world's own is a
 // row of its own unless a sweep runs the same setting, which is then marked as the world's and
 // run once.
-void measureAll(const Study& s, const std::vector<Integrator>& integrators, const World& world,
-                const Tolerances& tolerances, Measured* m) {
+void measureAll(const Study& s, const std::vector<Integrator>& integrators,
+                const RunSettings& world, const Tolerances& tolerances, Measured* m) {
   const std::size_t sweeps = integrators.size() * kSweepLength;
   m->rows.resize(sweeps + 1);
   m->ends.resize(sweeps + 1);

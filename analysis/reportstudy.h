@@ -142,8 +142,8 @@ std::string reportNumber(double x);
 // Every sweep, the world's own setting and the reference, on every core. The world's own is a
 // row of its own unless a sweep runs the same setting, which is then marked as the world's and
 // run once.
-void measureAll(const Study& s, const std::vector<Integrator>& integrators, const World& world,
-                const Tolerances& tolerances, Measured* m);
+void measureAll(const Study& s, const std::vector<Integrator>& integrators,
+                const RunSettings& world, const Tolerances& tolerances, Measured* m);
 
 // The recommendations of a study's rows (recommend.cpp): the cheapest setting as accurate as the
 // world's own and the cheapest within the visual tolerance, each one --check calls stable.

@@ -61,9 +61,11 @@ Verdict verdictFor(double dt, double critical, double stableFraction = kStableFr
 const char* verdictName(Verdict verdict);
 
 // The human report of jello --check, and its JSON.
-std::string stabilityText(const std::string& worldPath, const World& world,
+// `run`: the run's integrator and dt, which the verdict judges (the world file's, or the command
+// line's overrides).
+std::string stabilityText(const std::string& worldPath, const RunSettings& run,
                           const StabilityReport& report);
-std::string stabilityJson(const std::string& worldPath, const World& world,
+std::string stabilityJson(const std::string& worldPath, const RunSettings& run,
                           const StabilityReport& report);
 
 // The one-line diagnosis of a diverged run, without the "jello: " prefix: where, why, and

@@ -83,8 +83,8 @@ StiffnessSweep sweepStiffness(const World& world, const State& initial, double t
 }
 
 // stability-map.gp: the data inline, so that the script alone draws the picture again.
-std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath,
-                      const World& world) {
+std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath, const World& world,
+                      double dt) {
   std::ostringstream gp;
   gp << "# Made by jello --check --map; `gnuplot stability-map.gp` here draws stability-map.png "
         "again.\n";
@@ -109,14 +109,15 @@ std::string mapScript(const StiffnessSweep& sweep, const std::string& worldPath,
      << "set logscale xy\nset xlabel 'kElastic (N/m)'\nset ylabel 'dt (s)'\nset grid\nset key "
         "outside right top\n"
      << "plot " << plots << ", '-' with points pt 6 ps 3 lc 'black' title \"the world's own\"\n"
-     << world.kElastic << " " << world.dt << "\ne\n";
+     << world.kElastic << " " << dt << "\ne\n";
   return gp.str();
 }
 
 }  // namespace
 
-Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, const World& world,
-                          const State& initial, double time, bool overwrite) {
+Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath,
+                          const WorldFile& file, double time, bool overwrite) {
+  const World& world = file.world;
   FolderClaim claim;
   const Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
   try {
@@ -125,10 +126,11 @@ Outcome writeStabilityMap(const std::string& dir, const std::string& worldPath, 
   } catch (const OutputError& e) {
     return failed(std::string("--map: ") + e.what());
   }
-  const StiffnessSweep sweep = sweepStiffness(world, initial, time);
+  const StiffnessSweep sweep = sweepStiffness(world, file.state, time);
   try {
     writeFileWhole(dir + "/stability-map.csv", sweep.csv, existing);
-    writeFileWhole(dir + "/stability-map.gp", mapScript(sweep, worldPath, world), existing);
+    writeFileWhole(dir + "/stability-map.gp", mapScript(sweep, worldPath, world, file.run.dt),
+                   existing);
   } catch (const OutputError& e) {
     return failed(e.what());
   }

@@ -109,7 +109,7 @@ std::string modesText(const StabilityReport& r) {
 }
 
 // --check's verdict on the world's own dt, with the note and the advice it calls for.
-std::string verdictText(const World& world, const StabilityReport& r) {
+std::string verdictText(const RunSettings& world, const StabilityReport& r) {
   const double critical = r.verdictLimit(world.integrator);
   // Named when it differs in print from the headline one (the two eigensolves differ in the last
   // bits).
@@ -135,7 +135,7 @@ std::string verdictText(const World& world, const StabilityReport& r) {
 }
 
 // --check's warnings when the world's dt is above the limit at the start or against a wall.
-std::string otherLimitsText(const World& world, const StabilityReport& r) {
+std::string otherLimitsText(const RunSettings& world, const StabilityReport& r) {
   std::string out;
   auto at = std::find(kExplicitIntegrators.begin(), kExplicitIntegrators.end(), world.integrator);
   if (at != kExplicitIntegrators.end()) {
@@ -155,7 +155,7 @@ std::string otherLimitsText(const World& world, const StabilityReport& r) {
 
 }  // namespace
 
-std::string stabilityText(const std::string& worldPath, const World& world,
+std::string stabilityText(const std::string& worldPath, const RunSettings& world,
                           const StabilityReport& r) {
   if (!r.beyond.empty()) {
     return worldPath +
@@ -172,7 +172,7 @@ std::string stabilityText(const std::string& worldPath, const World& world,
   return out;
 }
 
-std::string stabilityJson(const std::string& worldPath, const World& world,
+std::string stabilityJson(const std::string& worldPath, const RunSettings& world,
                           const StabilityReport& r) {
   nlohmann::json j;
   j["world"] = worldPath;

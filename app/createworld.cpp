@@ -36,21 +36,21 @@ Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 void warn(const std::string& message) { jello::printError("warning: " + message); }
 
 // Warnings for a world that will run, but perhaps not as its maker meant.
-void warnAbout(jello::World& world, const jello::State& state) {
+void warnAbout(jello::World& world, const jello::RunSettings& run, const jello::State& state) {
   // Nothing here looks at the field: it is set aside, so that the Model below copies none of it
   // (for R = 512, 7.5 GB).
   jello::ForceField field = std::move(world.field);
   world.field = {};
   const std::string beyond = jello::beyondDoubles(world, state);
-  const double limit = jello::criticalStep(world.integrator, jello::lineariseAtRest(world).modes);
+  const double limit = jello::criticalStep(run.integrator, jello::lineariseAtRest(world).modes);
   if (!beyond.empty()) {
     warn("the world's numbers are beyond what double arithmetic can simulate (" + beyond +
          "): it will diverge at once");
-  } else if (world.dt > limit) {
+  } else if (run.dt > limit) {
     char text[200];
-    std::snprintf(
-        text, sizeof text, "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; ",
-        world.dt, jello::integratorName(world.integrator), jello::limitText(limit).c_str());
+    std::snprintf(text, sizeof text,
+                  "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; ", run.dt,
+                  jello::integratorName(run.integrator), jello::limitText(limit).c_str());
     warn(text + jello::stepAdvice(limit));
   }
   int outside = 0;
@@ -118,7 +118,7 @@ jello::Outcome printDescription(const CreateWorldOptions& o) {
   jello::setWorldUse(jello::WorldUse::Run);  // describing makes a Model, as a run does
   if (!o.output.empty()) return jello::failed("--describe reads a world; it does not go with -o");
   jello::WorldFile file = readCourseWorld(o.describe);
-  std::printf("%s\n%s", o.describe.c_str(), jello::describeWorld(file.world, file.state).c_str());
+  std::printf("%s\n%s", o.describe.c_str(), jello::describeWorld(file).c_str());
   return jello::succeeded();
 }
 
@@ -133,19 +133,21 @@ jello::Recipe startingRecipe(const CreateWorldOptions& o) {
     recipe.field.given = std::move(base.world.field);
     base.world.field = {};
     recipe.world = std::move(base.world);
+    recipe.run = base.run;
     recipe.state.from = base.state;
   }
   return recipe;
 }
 
 // The Parameters options, applied to `w`.
-jello::Outcome applyParameters(const CreateWorldOptions& o, jello::World& w) {
-  if (*o.integratorOption && !jello::parseIntegratorName(o.integrator, &w.integrator)) {
+jello::Outcome applyParameters(const CreateWorldOptions& o, jello::World& w,
+                               jello::RunSettings& run) {
+  if (*o.integratorOption && !jello::parseIntegratorName(o.integrator, &run.integrator)) {
     return jello::failed("--integrator: unknown integrator '" + o.integrator + "', expected " +
                          jello::integratorNameList());
   }
-  if (*o.dtOption) w.dt = o.dt;
-  if (*o.nOption) w.n = o.n;
+  if (*o.dtOption) run.dt = o.dt;
+  if (*o.nOption) run.n = o.n;
   if (*o.kElasticOption) w.kElastic = o.kElastic;
   if (*o.dElasticOption) w.dElastic = o.dElastic;
   if (*o.kCollisionOption) w.kCollision = o.kCollision;
@@ -251,14 +253,14 @@ void warnAboutForceAsAcceleration(const CreateWorldOptions& o, double mass) {
 
 // Checks, writes and announces the world made.
 jello::Outcome writeWorld(const CreateWorldOptions& o, const CLI::App& app, jello::World& w,
-                          const jello::State& initial) {
+                          const jello::RunSettings& run, const jello::State& initial) {
   // What is written must read back: the reader's rules, applied to the values themselves.
-  if (auto problem = jello::findWorldProblem(w, initial))
+  if (auto problem = jello::findWorldProblem(w, run, initial))
     return jello::failed(describeProblem(*problem, app));
-  warnAbout(w, initial);
+  warnAbout(w, run, initial);
   warnAboutForceAsAcceleration(o, w.mass);
   try {
-    jello::writeWorldFile(o.output, w, initial, o.force);
+    jello::writeWorldFile(o.output, w, run, initial, o.force);
   } catch (const std::runtime_error& e) {
     return jello::failed(e.what());  // e.g. the file appeared since checkWritable looked
   }
@@ -267,8 +269,9 @@ jello::Outcome writeWorld(const CreateWorldOptions& o, const CLI::App& app, jell
     fieldSummary = std::string(jello::fieldKindName(jello::classifyField(w.field).kind)) +
                    " field (R=" + std::to_string(w.field.resolution) + ")";
   }
-  std::printf("wrote %s: %s dt=%g, %s, %s\n", o.output.c_str(), jello::integratorName(w.integrator),
-              w.dt, fieldSummary.c_str(), w.hasPlane ? "inclined plane" : "no plane");
+  std::printf("wrote %s: %s dt=%g, %s, %s\n", o.output.c_str(),
+              jello::integratorName(run.integrator), run.dt, fieldSummary.c_str(),
+              w.hasPlane ? "inclined plane" : "no plane");
   return jello::succeeded();
 }
 
@@ -285,13 +288,14 @@ jello::Outcome createWorld(const CreateWorldOptions& o, const CLI::App& app) {
 
   jello::setWorldUse(jello::WorldUse::Create);
   jello::Recipe recipe = startingRecipe(o);
-  if (jello::Outcome applied = applyParameters(o, recipe.world); !applied.ok()) return applied;
+  if (jello::Outcome applied = applyParameters(o, recipe.world, recipe.run); !applied.ok())
+    return applied;
   if (jello::Outcome applied = applyField(o, recipe.world.mass, recipe.field); !applied.ok())
     return applied;
   applyState(o, recipe.state);
   recipe.world.field = takeField(recipe.field);
   const jello::State initial = jello::buildState(recipe.state);
-  return writeWorld(o, app, recipe.world, initial);
+  return writeWorld(o, app, recipe.world, recipe.run, initial);
 }
 
 // What the command line asks, its errors as outcomes (exceptions included).

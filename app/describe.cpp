@@ -46,10 +46,13 @@ std::string termLines(const World& w, const State& state) {
 }
 }  // namespace
 
-std::string describeWorld(const World& w, const State& state) {
+std::string describeWorld(const WorldFile& file) {
+  const World& w = file.world;
+  const RunSettings& run = file.run;
+  const State& state = file.state;
   std::string out;
   out += textf("integrator  %s, dt %.9g s, n %d (a drawn frame every %.9g s)\n",
-               integratorName(w.integrator), w.dt, w.n, w.dt * w.n);
+               integratorName(run.integrator), run.dt, run.n, run.dt * run.n);
   out += textf("mass        %.9g kg a point, %.9g kg in all\n", w.mass, w.mass * state.points());
   out += termLines(w, state);
   Extent e = extentOf(state);
@@ -66,17 +69,17 @@ std::string describeWorld(const World& w, const State& state) {
   meanVelocity = (1.0 / n) * meanVelocity;
   out += "velocity    mean " + vec(meanVelocity) + textf(" m/s, fastest point %.6g m/s\n", fastest);
   const Linearisation rest = lineariseAtRest(w);
-  const double limit = criticalStep(w.integrator, rest.modes);
+  const double limit = criticalStep(run.integrator, rest.modes);
   if (std::string beyond = beyondDoubles(w, state); !beyond.empty()) {
     out += "stability   beyond what double arithmetic can simulate: " + beyond + "\n";
   } else if (std::isfinite(limit)) {
     out += textf(
         "stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
-        integratorName(w.integrator), w.dt,
-        verdictName(verdictFor(w.dt, limit, stableFraction(w, state, &rest))), 100 * w.dt / limit,
-        limit);
+        integratorName(run.integrator), run.dt,
+        verdictName(verdictFor(run.dt, limit, stableFraction(w, state, &rest))),
+        100 * run.dt / limit, limit);
   } else {
-    out += textf("stability   %s: no step limit\n", integratorName(w.integrator));
+    out += textf("stability   %s: no step limit\n", integratorName(run.integrator));
   }
   return out;
 }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "io/input.h"
 #include "model/field.h"
 #include "model/vec3.h"
 #include "model/world.h"
@@ -19,6 +20,6 @@ Extent extentOf(const State& state);
 // Several lines: the integrator and mass, a line or more from each force term of the world (its
 // parameters; the field's kind and magnitude range; the plane and which side of it the cube is
 // on), what the kernel leaves out, the cube's bounding box and velocities, and its stability.
-std::string describeWorld(const World& world, const State& state);
+std::string describeWorld(const WorldFile& file);
 
 }  // namespace jello

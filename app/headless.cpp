@@ -96,7 +96,7 @@ long long nextMultiple(long long done, long long every) {
 // How many steps the run takes: --steps, --time, or by default 300 frames of n steps, or, when
 // frames are saved by simulated time, --max-frames of them. Fails, saying why, when the run is
 // refused.
-Outcome stepsOfRun(const RunOptions& options, const World& world, const FrameObserver* frames,
+Outcome stepsOfRun(const RunOptions& options, const RunSettings& world, const FrameObserver* frames,
                    long long* steps) {
   const bool byTime = frames && frames->options().fps > 0;
   std::string length = "300 frames of n steps";
@@ -143,7 +143,7 @@ Outcome runFailure(const RunOptions& options, const Simulation& run, const State
 }
 
 // The summary line on stdout.
-void printSummary(const RunOptions& options, const World& world, long long steps, double wall,
+void printSummary(const RunOptions& options, const RunSettings& world, long long steps, double wall,
                   const StepStats& stats, const FrameObserver* frames) {
   std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step",
               options.worldPath.c_str(), integratorName(world.integrator), world.dt, steps,
@@ -198,9 +198,10 @@ Outcome checkDump(const RunOptions& options, const World& world) {
 }
 
 // --dump FILE: the run's last state in a world file.
-Outcome writeDump(const std::string& path, const World& world, const State& state) {
+Outcome writeDump(const std::string& path, const World& world, const RunSettings& run,
+                  const State& state) {
   try {
-    writeWorldFile(path, world, state, true);
+    writeWorldFile(path, world, run, state, true);
   } catch (const std::exception& e) {
     return failed(e.what());
   }
@@ -221,11 +222,12 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
   const World& world = file.world;
   long long steps = 0;
-  if (Outcome counted = stepsOfRun(options, world, frames, &steps); !counted.ok()) return counted;
+  if (Outcome counted = stepsOfRun(options, file.run, frames, &steps); !counted.ok())
+    return counted;
   if (Outcome dumpable = checkDump(options, world); !dumpable.ok()) return dumpable;
 
   const Model model = makeModel(world, file.state, options.kernel);
-  Simulation simulation(model, file.state, world.integrator, world.dt, options.tolerances);
+  Simulation simulation(model, file.state, file.run, options.tolerances);
   RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] {
@@ -244,7 +246,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
                   ? "; --kernel general computes every term at every point anyway"
                   : "");
   // In stretches that end where a frame is due or the progress line may be redrawn.
-  const FrameClock clock(frames ? frames->options().fps : 0, world.n, world.dt);
+  const FrameClock clock(frames ? frames->options().fps : 0, file.run.n, simulation.dt());
   long long nextFrame = frames ? clock.nextAfter(0) : steps;
   long long lastFrame = 0;  // the step of the last frame saved
   while (simulation.step() < steps) {
@@ -262,11 +264,12 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
     progress.update(simulation.step());
   }
   progress.finish(steps);
-  printSummary(options, world, steps, secondsSince(start), simulation.stats(), frames);
+  printSummary(options, file.run, steps, secondsSince(start), simulation.stats(), frames);
   if (frames && !frames->wantsMore() && lastFrame < steps)
-    printError(frameLimitNote(*frames, lastFrame * world.dt, steps * world.dt));
+    printError(frameLimitNote(*frames, lastFrame * simulation.dt(), steps * simulation.dt()));
 
-  return options.dumpPath ? writeDump(*options.dumpPath, world, simulation.state()) : succeeded();
+  return options.dumpPath ? writeDump(*options.dumpPath, world, file.run, simulation.state())
+                          : succeeded();
 }
 
 }  // namespace jello

@@ -28,11 +28,10 @@ Outcome check(const JelloCommand& c) {
   WorldFile file;
   if (Outcome loaded = loadRun(c.run, &file); !loaded.ok()) return loaded;
   if (c.mode == JelloCommand::Mode::Map)
-    return writeStabilityMap(c.mapDir, c.run.worldPath, file.world, file.state, c.mapTime,
-                             c.pictures.overwrite);
+    return writeStabilityMap(c.mapDir, c.run.worldPath, file, c.mapTime, c.pictures.overwrite);
   StabilityReport analysis = analyseStability(file.world, file.state);
-  std::fputs((c.json ? stabilityJson(c.run.worldPath, file.world, analysis)
-                     : stabilityText(c.run.worldPath, file.world, analysis))
+  std::fputs((c.json ? stabilityJson(c.run.worldPath, file.run, analysis)
+                     : stabilityText(c.run.worldPath, file.run, analysis))
                  .c_str(),
              stdout);
   return succeeded();

@@ -17,7 +17,7 @@ constexpr double kCourseMass = 1.0 / kNumPoints;
 
 Recipe courseBase(double dt, double kElastic, double kCollision) {
   Recipe r = defaultRecipe();
-  r.world.dt = dt;
+  r.run.dt = dt;
   r.world.kElastic = kElastic;
   r.world.kCollision = kCollision;
   r.field.source = FieldRecipe::Source::Uniform;  // the course's files hold a zero field
@@ -39,9 +39,7 @@ Vec3 rotate(Vec3 v, Vec3 degrees) {
 
 Recipe defaultRecipe() {
   Recipe r;
-  r.world.integrator = Integrator::RK4;
-  r.world.dt = 0.001;
-  r.world.n = 1;
+  r.run = {Integrator::RK4, 0.001, 1};
   r.world.kElastic = 500;
   r.world.dElastic = 0.25;
   r.world.kCollision = 1000;

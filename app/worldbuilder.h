@@ -33,6 +33,7 @@ struct StateRecipe {
 
 struct Recipe {
   World world;
+  RunSettings run;
   FieldRecipe field;
   StateRecipe state;
 };

@@ -60,7 +60,7 @@ void Step(benchmark::State& bench, int world, KernelChoice choice, Integrator in
   Stepper stepper(integrator);
   long long steps = 0;
   for (auto _ : bench) {
-    stepper.step(model, state, f.world.dt);
+    stepper.step(model, state, f.run.dt);
     // Back to the start now and then, so that every world is timed in its own regime.
     if (++steps % 1000 == 0) state = f.state;
   }

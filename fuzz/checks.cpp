@@ -37,7 +37,7 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
 bool sameWorld(const WorldFile& a, const WorldFile& b) {
   const World &x = a.world, &y = b.world;
   auto same = [](double p, double q) { return std::memcmp(&p, &q, sizeof p) == 0; };
-  return x.integrator == y.integrator && same(x.dt, y.dt) && x.n == y.n &&
+  return a.run.integrator == b.run.integrator && same(a.run.dt, b.run.dt) && a.run.n == b.run.n &&
          same(x.kElastic, y.kElastic) && same(x.dElastic, y.dElastic) &&
          same(x.kCollision, y.kCollision) && same(x.dCollision, y.dCollision) &&
          same(x.mass, y.mass) && x.hasPlane == y.hasPlane && same(x.plane.a, y.plane.a) &&
@@ -90,10 +90,10 @@ void checkWorldText(const std::uint8_t* data, std::size_t size) {
     if (!sameWorld(fromMemory.world, fromFile.world))
       failed("memory and file disagree", "different worlds");
     // createWorld's judge of a world in memory must pass every world the reader accepts.
-    if (auto problem = findWorldProblem(fromMemory.world.world, fromMemory.world.state)) {
+    if (auto problem = findWorldProblem(fromMemory.world)) {
       failed("an accepted world has a problem", problem->what);
     }
-    const std::string written = formatWorld(fromMemory.world.world, fromMemory.world.state);
+    const std::string written = formatWorld(fromMemory.world);
     Outcome again = outcomeOf([&] { return parseWorld(written, "round trip"); });
     if (!again.accepted) failed("a written world is refused", again.error);
     if (!sameWorld(fromMemory.world, again.world))
@@ -192,7 +192,7 @@ void checkSceneText(const std::uint8_t* data, std::size_t size) {
   const Outcome o = outcomeOf([&] { return parseScene(text, "fuzzed.toml", ""); });
   if (!o.accepted) return;
   const WorldFile& file = o.world;
-  if (auto problem = findWorldProblem(file.world, file.state))
+  if (auto problem = findWorldProblem(file))
     failed("an accepted scene has a problem", problem->what);
   const SceneSpec& spec = *file.world.scene;
   for (const Obstacle& ob : spec.obstacles) {

@@ -487,7 +487,7 @@ bool copyBuiltProgram(const std::string& from, const std::string& to) {
 // glutMainLoop(). "" when it does; otherwise what happened.
 std::string whyNotReaching(const std::string& probePath) {
   Script script;
-  script.world(probeWorld(), restLattice(kCentred));  // the term checks' world, at rest
+  script.world(probeWorld(), probeRun(), restLattice(kCentred));  // the term checks' world, at rest
   script.accelerations();
   ProbeRun run = runProbe(probePath, script);
   std::string failure = run.failure;

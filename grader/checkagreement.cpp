@@ -29,7 +29,7 @@ double rms(const State& a, const State& b) {
 
 std::vector<State> runCheckpoints(const WorldFile& file, std::string* diverged) {
   Model model = makeModel(file.world, file.state);
-  Simulation run(model, file.state, file.world.integrator, file.world.dt);
+  Simulation run(model, file.state, file.run);
   std::vector<State> states;
   for (int c = 0; c < kCheckpoints; ++c) {
     RunOutcome outcome = run.advance(kCheckpointSteps);
@@ -51,8 +51,8 @@ WorldFile unseenWorld(std::uint64_t seed, int which) {
   };
   WorldFile file;
   World& w = file.world;
-  w.integrator = which == 0 ? Integrator::RK4 : Integrator::Euler;
-  w.dt = which == 0 ? 0.0005 : 0.0001;
+  file.run.integrator = which == 0 ? Integrator::RK4 : Integrator::Euler;
+  file.run.dt = which == 0 ? 0.0005 : 0.0001;
   w.kElastic = uniform(200, 500), w.dElastic = uniform(0.1, 0.5);
   w.kCollision = uniform(400, 1000), w.dCollision = uniform(0.1, 0.5);
   w.mass = kProbeMass;
@@ -122,11 +122,11 @@ void failEulerDriftAlone(const std::vector<std::pair<std::string, WorldFile>>& w
                          std::vector<Judged>& judged) {
   bool rk4Drifts = false;
   for (std::size_t w = 0; w < worlds.size(); ++w) {
-    rk4Drifts |= worlds[w].second.world.integrator != Integrator::Euler &&
+    rk4Drifts |= worlds[w].second.run.integrator != Integrator::Euler &&
                  judged[w].grade != Grade::Pass && judged[w].grade != Grade::Info;
   }
   for (std::size_t w = 0; w < worlds.size(); ++w) {
-    if (worlds[w].second.world.integrator == Integrator::Euler && judged[w].grade == Grade::Near &&
+    if (worlds[w].second.run.integrator == Integrator::Euler && judged[w].grade == Grade::Near &&
         !rk4Drifts) {
       judged[w].grade = Grade::Fail;
       judged[w].line +=
@@ -182,9 +182,9 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
       ref = &found->second;
     }
     Script script;
-    script.world(file.world, file.state);
+    script.world(file.world, file.run, file.state);
     for (int c = 0; c < kCheckpoints; ++c) {
-      script.steps(file.world.integrator, kCheckpointSteps);
+      script.steps(file.run.integrator, kCheckpointSteps);
       script.read();
     }
     ProbeRun run = runProbe(probe, script, {3});

@@ -105,7 +105,7 @@ const char* const kWallNames[6] = {"wall x = -2", "wall x = +2", "wall y = -2",
 CheckResult checkWalls(const std::string& probe) {
   World world = probeWorld();
   Script script;
-  script.world(world, restLattice(kCentred));
+  script.world(world, probeRun(), restLattice(kCentred));
   std::vector<ContactProbe> probes;
   for (int wall = 0; wall < 6; ++wall) {
     int axis = wall / 2;
@@ -166,12 +166,12 @@ CheckResult checkPlane(const std::string& probe) {
   Vec3 along = (1 / std::sqrt(2.0)) * Vec3{1, -1, 0};
   ContactProbe p{inside, inward, 0.01, 0.02, -0.4 * inward + 0.3 * along};
   Script script;
-  script.world(world, inside);
+  script.world(world, probeRun(), inside);
   scriptContact(script, p);
   // The same cube with the plane's coefficients negated: on the negative side (not graded).
   World negated = world;
   negated.plane = {-a.x, -a.y, -a.z, -world.plane.d};
-  script.world(negated, inside);
+  script.world(negated, probeRun(), inside);
   script.accelerations();
   ProbeRun run = runProbe(probe, script);
   if (run.answers.size() < 4) return crashed("plane", run, "with a corner across the plane");

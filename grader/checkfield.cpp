@@ -83,9 +83,9 @@ std::string probeField(const std::string& probe, const ForceField& field, const 
   zero.field.resolution = field.resolution;
   zero.field.forces.assign(field.forces.size(), 0.0);
   Script script;
-  script.world(world, state);
+  script.world(world, probeRun(), state);
   script.accelerations();
-  script.world(zero, state);
+  script.world(zero, probeRun(), state);
   script.accelerations();
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return run.failure + " " + where;
@@ -134,7 +134,7 @@ CheckResult checkField(const std::string& probe) {
   Script script;
   World world = probeWorld();
   world.field = none;
-  script.world(world, scattered(false));
+  script.world(world, probeRun(), scattered(false));
   script.accelerations();
   ProbeRun run = runProbe(probe, script);
   if (!run.complete() || !allUsable(run.answers[0])) {

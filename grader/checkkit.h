@@ -17,6 +17,8 @@ namespace jello::grader {
 // that one used in another's place shows; no plane; a field of R = 30 zero nodes (the course's
 // resolution: a submission that assumes it still reads the field right).
 World probeWorld();
+// The run settings of the probe's worlds: RK4 at dt 0.5 ms, n 1.
+RunSettings probeRun();
 constexpr double kProbeMass = 1.0 / kNumPoints;  // kg: exact in binary
 
 // The cube at rest, p[i][j][k] = (i,j,k)/7, turned by `angle` radians about (1,2,3) around its

@@ -14,7 +14,7 @@ namespace {
 // A cube in motion, deformed, one face across the wall x = 2, in a field, over a plane: every
 // term at work.
 WorldFile busyWorld() {
-  WorldFile file{probeWorld(), restLattice({1.03, -0.4, -0.6}, 0.3)};
+  WorldFile file{probeWorld(), probeRun(), restLattice({1.03, -0.4, -0.6}, 0.3)};
   std::mt19937_64 random(42);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-0.5, 0.5);
   for (int n = 0; n < kNumCoords; ++n) {
@@ -111,9 +111,10 @@ std::string rk4Order(const std::string& probe, double* order) {
   }
   Script script;
   std::vector<State> ends;
+  RunSettings settings = probeRun();
   for (int halvings = 0; halvings < 4; ++halvings) {
-    world.dt = 4e-4 / (1 << halvings);
-    script.world(world, start);
+    settings.dt = 4e-4 / (1 << halvings);
+    script.world(world, settings, start);
     script.steps(Integrator::RK4, 25L << halvings);
     script.read();
   }
@@ -135,7 +136,7 @@ std::string rk4Order(const std::string& probe, double* order) {
 // stages are asked for a round (a probe run) at a time, each state once.
 std::string whichRk4(const std::string& probe, const WorldFile& busy, const std::vector<double>& k1,
                      const State& result, std::string* failure) {
-  double dt = busy.world.dt;
+  double dt = busy.run.dt;
   std::vector<Rk4Variant> variants = rk4Variants();
   std::vector<std::vector<State>> k(variants.size(), std::vector<State>(5));  // k[v][stage]
   for (auto& stages : k) stages[1] = derivativeOf(busy.state, k1);
@@ -178,7 +179,7 @@ CheckResult checkEuler(const std::string& probe) {
   if (!allUsable(run.answers[0])) return failed("euler", kNotJudged);
   const State& s = busy.state;
   State after = run.state(2), course = s, symplectic = s;
-  double dt = busy.world.dt;
+  double dt = busy.run.dt;
   for (int n = 0; n < kNumCoords; ++n) {
     course.v()[n] = s.v()[n] + dt * run.answers[0][n];
     course.p()[n] = s.p()[n] + dt * s.v()[n];
@@ -228,7 +229,7 @@ CheckResult checkRobust(const std::string& probe) {
   // The throw: its accelerations along this project's run into the corner, so that a mistake
   // elsewhere in its physics (which may make its own run explode) does not count here.
   Model model = makeModel(world, thrown);
-  Simulation reference(model, thrown, Integrator::RK4, world.dt);
+  Simulation reference(model, thrown, Integrator::RK4, probeRun().dt);
   std::vector<State> throw_;
   for (int n = 0; n < 10; ++n) {
     reference.advance(40);
@@ -248,7 +249,7 @@ CheckResult checkRobust(const std::string& probe) {
                                         "a collapsed cube (all 512 points at one place)", point},
                                     {"a cube collapsed flat (eight points at each place)", flat}}) {
     Script script;
-    script.world(world, state);
+    script.world(world, probeRun(), state);
     script.accelerations();
     script.steps(Integrator::RK4, 10);
     script.read();
@@ -265,7 +266,7 @@ CheckResult checkRobust(const std::string& probe) {
 CheckResult checkSpeed(const std::string& probe, const GradingSetup& setup) {
   WorldFile rotate = readWorldFile(setup.worldDir + "/rotate.w");
   Script script;
-  script.world(rotate.world, rotate.state);
+  script.world(rotate.world, rotate.run, rotate.state);
   script.timing(500);
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return info("speed", "not measured: " + run.failure);

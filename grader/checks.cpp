@@ -63,10 +63,10 @@ CheckResult runCheck(const std::string& name, const std::string& probe, const Gr
   return failed(name, "no such check");
 }
 
+RunSettings probeRun() { return {Integrator::RK4, 0.0005, 1}; }
+
 World probeWorld() {
   World world;
-  world.integrator = Integrator::RK4;
-  world.dt = 0.0005;
   world.kElastic = 300;
   world.dElastic = 0.7;
   world.kCollision = 1100;
@@ -133,7 +133,7 @@ std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const
                                                  const std::vector<State>& states,
                                                  std::string* failure) {
   Script script;
-  script.world(world, states.front());
+  script.world(world, probeRun(), states.front());
   for (const State& s : states) {
     script.state(s);
     script.accelerations();
@@ -149,7 +149,7 @@ std::vector<std::vector<double>> accelerationsAt(const std::string& probe, const
 
 ProbeRun oneStep(const std::string& probe, const WorldFile& start, Integrator integrator) {
   Script script;
-  script.world(start.world, start.state);
+  script.world(start.world, start.run, start.state);
   script.accelerations();
   script.steps(integrator, 1);
   script.read();

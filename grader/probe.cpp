@@ -67,8 +67,8 @@ void resetProbeBudget() {
 
 bool probeHung() { return hung; }
 
-void Script::world(const World& world, const State& state) {
-  std::string text = formatWorld(world, state);
+void Script::world(const World& world, const RunSettings& run, const State& state) {
+  std::string text = formatWorld(world, run, state);
   if (firstWorld_.empty()) firstWorld_ = text;
   pending_ += "W\n" + text;
 }

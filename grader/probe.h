@@ -17,7 +17,7 @@ class Script {
  public:
   // W: the world (its parameters, field and state) as the course's input code reads it. The
   // first world of a script is also the world file the student's own main() reads (argv[1]).
-  void world(const World& world, const State& state);
+  void world(const World& world, const RunSettings& run, const State& state);
   // S: the state.
   void state(const State& state);
   // A: answers the accelerations (m/s^2) at the state, per-point arrays (coordIndex).

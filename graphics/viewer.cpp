@@ -362,8 +362,8 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
     v.endName = textf("--steps %lld", *run.steps);
   }
   if (run.time) {
-    v.endStep = stepsForTime(*run.time, file.world.dt);
-    if (!v.endStep) return failed(tooManyStepsMessage(*run.time, file.world.dt));
+    v.endStep = stepsForTime(*run.time, v.simulation.dt());
+    if (!v.endStep) return failed(tooManyStepsMessage(*run.time, v.simulation.dt()));
     v.endName = textf("--time %g s", *run.time);
   }
 

@@ -101,14 +101,14 @@ struct Viewer {
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
         initial(file.state),
-        simulation(model, file.state, file.world.integrator, file.world.dt, run.tolerances),
+        simulation(model, file.state, file.run, run.tolerances),
         tolerances(run.tolerances),
         lastGood(file.state),
-        n(file.world.n),
+        n(file.run.n),
         pictures(pictures),
         worldPath(run.worldPath),
         stem(worldStem(run.worldPath)),
-        clock(pictures.fps, file.world.n, file.world.dt),
+        clock(pictures.fps, file.run.n, file.run.dt),
         camera(cameraFor(model, pictures.camera)),
         width(pictures.width),
         height(pictures.height) {

@@ -14,8 +14,10 @@
 
 namespace jello {
 
+// A world file: its physics, its run settings and its state.
 struct WorldFile {
   World world;
+  RunSettings run;
   State state;
 };
 
@@ -31,7 +33,11 @@ struct WorldProblem {
 };
 // The first problem of `world` and `state` (which holds the world's body's points), or none when
 // formatWorld of them reads back.
-std::optional<WorldProblem> findWorldProblem(const World& world, const State& state);
+std::optional<WorldProblem> findWorldProblem(const World& world, const RunSettings& run,
+                                             const State& state);
+inline std::optional<WorldProblem> findWorldProblem(const WorldFile& file) {
+  return findWorldProblem(file.world, file.run, file.state);
+}
 
 // The number grammar of world files, which the command lines share: a decimal number exactly as
 // std::from_chars reads it (no hex, no leading '+' or space), rounded once to the nearest
@@ -51,16 +57,19 @@ WorldFile readWorldFile(const std::string& path);
 
 // The text of a world file, numbers in shortest round-trip form: parseWorld of it gives back
 // bit-identical values.
-std::string formatWorld(const World& world, const State& state);
+std::string formatWorld(const World& world, const RunSettings& run, const State& state);
+inline std::string formatWorld(const WorldFile& file) {
+  return formatWorld(file.world, file.run, file.state);
+}
 // The same text handed to `write` in blocks of about 64 KB, in order: a world with a large field
 // (R = 512: gigabytes of text) is written without its whole text in memory.
-void formatWorldInBlocks(const World& world, const State& state,
+void formatWorldInBlocks(const World& world, const RunSettings& run, const State& state,
                          const std::function<void(std::string_view)>& write);
 // Writes the world to `path` in blocks under the rules of output.h: whole, never over anything
 // that is not a regular file; over an existing regular file only with `overwrite` (without it
 // the check and the write are one atomic step). Throws OutputError (a std::runtime_error) with a
 // one-line message on failure.
-void writeWorldFile(const std::string& path, const World& world, const State& state,
-                    bool overwrite = true);
+void writeWorldFile(const std::string& path, const World& world, const RunSettings& run,
+                    const State& state, bool overwrite = true);
 
 }  // namespace jello

@@ -27,10 +27,8 @@ namespace {
 // (1/512 kg a point), the cube's rest lattice centred on the origin, at rest; no field, no plane.
 WorldFile defaultWorld() {
   WorldFile file;
+  file.run = {Integrator::RK4, 0.0005, 10};
   World& w = file.world;
-  w.integrator = Integrator::RK4;
-  w.dt = 0.0005;
-  w.n = 10;
   w.kElastic = 500;
   w.dElastic = 0.25;
   w.kCollision = 1000;
@@ -59,7 +57,7 @@ WorldFile baseWorld(const Reader& r, const toml::table& root) {
   }
 }
 
-void readRun(const Reader& r, const toml::table& root, World* w) {
+void readRun(const Reader& r, const toml::table& root, RunSettings* w) {
   if (const toml::node* node = root.get("integrator")) {
     const std::optional<std::string> text = node->value<std::string>();
     if (!text || !parseIntegratorName(*text, &w->integrator))
@@ -466,7 +464,7 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   WorldFile file = baseWorld(r, root);
   World& w = file.world;
   auto spec = std::make_shared<SceneSpec>();
-  readRun(r, root, &w);
+  readRun(r, root, &file.run);
   readJelly(r, root, &file, spec.get());
   readField(r, root, &w.field);
   if (const toml::table* contact = r.table(root, "", "contact")) {
@@ -483,7 +481,7 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   readPins(r, root, body, file.state, spec.get());
   for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
   w.scene = std::move(spec);  // before the check: it names points by the scene's body
-  if (std::optional<WorldProblem> problem = findWorldProblem(w, file.state))
+  if (std::optional<WorldProblem> problem = findWorldProblem(w, file.run, file.state))
     throw InputError(name + ": " + problem->what);
   return file;
 }

@@ -24,7 +24,7 @@ bool finite3(const double* v) {
 }
 
 // The parameters' rules, as parseLines applies them to a file's tokens.
-std::optional<WorldProblem> findParameterProblem(const World& w) {
+std::optional<WorldProblem> findParameterProblem(const World& w, const RunSettings& run) {
   using Part = WorldProblem::Part;
   auto problem = [](Part part, const std::string& what) { return WorldProblem{part, 0, what}; };
   auto number = [](double value) {
@@ -32,9 +32,9 @@ std::optional<WorldProblem> findParameterProblem(const World& w) {
     appendNumber(text, value);
     return text;
   };
-  if (!(std::isfinite(w.dt) && w.dt > 0))
-    return problem(Part::Parameters, "dt must be > 0 and finite, got " + number(w.dt));
-  if (w.n < 1) return problem(Part::Parameters, "n must be >= 1, got " + std::to_string(w.n));
+  if (!(std::isfinite(run.dt) && run.dt > 0))
+    return problem(Part::Parameters, "dt must be > 0 and finite, got " + number(run.dt));
+  if (run.n < 1) return problem(Part::Parameters, "n must be >= 1, got " + std::to_string(run.n));
   const std::pair<const char*, double> nonNegative[] = {{"kElastic", w.kElastic},
                                                         {"dElastic", w.dElastic},
                                                         {"kCollision", w.kCollision},
@@ -57,9 +57,10 @@ std::optional<WorldProblem> findParameterProblem(const World& w) {
 
 }  // namespace
 
-std::optional<WorldProblem> findWorldProblem(const World& w, const State& state) {
+std::optional<WorldProblem> findWorldProblem(const World& w, const RunSettings& run,
+                                             const State& state) {
   using Part = WorldProblem::Part;
-  if (auto problem = findParameterProblem(w)) return problem;
+  if (auto problem = findParameterProblem(w, run)) return problem;
   const int r = w.field.resolution;
   const std::size_t nodes = r > 0 ? static_cast<std::size_t>(r) * r * r : 0;
   if (r < 0 || r > kMaxResolution || w.field.forces.size() != 3 * nodes) {

@@ -217,7 +217,7 @@ namespace {
 // then grows with what actually arrives, not with what the resolution line claims.
 constexpr std::size_t kUnknownSizeReserve = 3 << 16;
 
-void readIntegrator(Parser& in, World& w) {
+void readIntegrator(Parser& in, RunSettings& w) {
   in.record(1, "integrator");
   std::string_view integrator = in.token(0);
   if (integrator.size() > kMaxIntegratorNameLength) {
@@ -233,13 +233,16 @@ void readIntegrator(Parser& in, World& w) {
   }
 }
 
-// dt n, the springs' four constants, and the mass.
-void readParameters(Parser& in, World& w) {
+// dt n.
+void readSteps(Parser& in, RunSettings& run) {
   in.record(2, "dt n");
-  w.dt = in.positive(0, "dt");
-  w.n = in.integer(1, "n");
-  if (w.n < 1) in.fail(in.line(), "must be >= 1, got " + Parser::str(in.token(1)), "n");
+  run.dt = in.positive(0, "dt");
+  run.n = in.integer(1, "n");
+  if (run.n < 1) in.fail(in.line(), "must be >= 1, got " + Parser::str(in.token(1)), "n");
+}
 
+// The springs' four constants, and the mass.
+void readParameters(Parser& in, World& w) {
   in.record(4, "kElastic dElastic kCollision dCollision");
   w.kElastic = in.nonNegative(0, "kElastic");
   w.dElastic = in.nonNegative(1, "dElastic");
@@ -322,7 +325,8 @@ void readField(Parser& in, ForceField& field) {
 WorldFile parseLines(LineSource& source, const std::string& name) {
   Parser in(source, name);
   WorldFile result;
-  readIntegrator(in, result.world);
+  readIntegrator(in, result.run);
+  readSteps(in, result.run);
   readParameters(in, result.world);
   readPlane(in, result.world);
   readField(in, result.world.field);

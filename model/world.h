@@ -69,11 +69,19 @@ struct ForceField {
 
 struct SceneSpec;  // scene/spec.h
 
-// Everything a world file fixes except the state. Read once, never changed by a run.
-struct World {
+// How a world is run: its integrator, its step and the steps per drawn frame. A world file or a
+// scene file says them, and the command line may override them (solver/run.h); a run passes them
+// to its Simulation, which holds them (solver/simulation.h). They are not physics: a World, and
+// the Model made of it, hold none of them.
+struct RunSettings {
   Integrator integrator = Integrator::RK4;
-  double dt = 0.001;                                                  // s, > 0
-  int n = 1;                                                          // steps per drawn frame, >= 1
+  double dt = 0.001;  // s, > 0
+  int n = 1;          // steps per drawn frame, >= 1
+};
+
+// The physics a world file fixes: everything but its run settings and its state. Read once, never
+// changed by a run.
+struct World {
   double kElastic = 0, dElastic = 0, kCollision = 0, dCollision = 0;  // >= 0
   double mass = 1.0 / kNumPoints;                                     // kg per point, > 0
   bool hasPlane = false;

@@ -22,10 +22,10 @@ Outcome loadRun(const RunOptions& options, WorldFile* out) {
                     "folder; name one: jello path/to/world.w)");
     return failed(e.what());
   }
-  World& world = out->world;
-  if (options.integrator) world.integrator = *options.integrator;
-  if (options.dt) world.dt = *options.dt;
-  if (options.n) world.n = *options.n;
+  RunSettings& run = out->run;
+  if (options.integrator) run.integrator = *options.integrator;
+  if (options.dt) run.dt = *options.dt;
+  if (options.n) run.n = *options.n;
   return succeeded();
 }
 

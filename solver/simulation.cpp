@@ -38,18 +38,18 @@ bool passesCheapTest(const State& state) {
   return sane;
 }
 
-Simulation::Simulation(const Model& model, const State& start, Integrator integrator, double dt,
+Simulation::Simulation(const Model& model, const State& start, const RunSettings& run,
                        Tolerances tolerances)
     : model_(model),
       state_(start),
-      dt_(dt),
-      energyEvery_(std::max<long long>(model.world.n, kEnergyEvery)),
+      dt_(run.dt),
+      energyEvery_(std::max<long long>(run.n, kEnergyEvery)),
       tolerances_(tolerances),
-      stepper_(integrator, tolerances),
+      stepper_(run.integrator, tolerances),
       guard_(model, start) {
   // The start holds the model's body's points; a step is a positive, finite time.
   JELLO_ASSERT(start.points() == model.points());
-  JELLO_ASSERT(dt > 0 && std::isfinite(dt));
+  JELLO_ASSERT(run.dt > 0 && std::isfinite(run.dt));
 }
 
 bool Simulation::stepAndCheck(double h, double timeAfter, const Pull* pull) {

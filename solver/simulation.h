@@ -6,7 +6,7 @@
 //  - always the cheap test of docs/physics.md (Divergence): a position or velocity that is not
 //  finite, or a point more
 //    than 100 m from the origin (findDivergedPoint's test);
-//  - when s is a multiple of max(n, kEnergyEvery), n the world's steps per drawn frame, the
+//  - when s is a multiple of max(n, kEnergyEvery), n the run's steps per drawn frame, the
 //    energy bound of the guard (guard.h) as well: at most once a drawn frame, and no more often
 //    than every kEnergyEvery steps, since the energy costs about a fifth of an RK4 step;
 //  - never the energy bound after a step taken with a pull (the viewer's mouse adds energy the
@@ -57,11 +57,16 @@ struct RunOutcome {
 
 class Simulation {
  public:
-  // A run of `model` from `start` (copied) with `integrator` at steps of dt seconds. The model
+  // A run of `model` from `start` (copied) with the run's integrator at steps of its dt seconds
+  // (which the simulation holds: nothing else does during a run). The model
   // is referenced, not copied: it must outlive the simulation. Costs what a DivergenceGuard
   // costs to make (a pass over the field's nodes).
-  Simulation(const Model& model, const State& start, Integrator integrator, double dt,
+  Simulation(const Model& model, const State& start, const RunSettings& run,
              Tolerances tolerances = {});
+  // The same with n = 1 (the energy bound every kEnergyEvery steps): a run that draws no frames.
+  Simulation(const Model& model, const State& start, Integrator integrator, double dt,
+             Tolerances tolerances = {})
+      : Simulation(model, start, RunSettings{integrator, dt, 1}, tolerances) {}
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 

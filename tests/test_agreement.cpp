@@ -23,7 +23,7 @@ TEST_P(Agreement, TwoThousandStepsMatchTheReference) {
   const AgreementCase& c = GetParam();
   WorldFile f = readWorldFile(test::dataPath(c.world));
   Model model = makeModel(f.world, f.state);
-  const double dt = c.dt > 0 ? c.dt : f.world.dt;
+  const double dt = c.dt > 0 ? c.dt : f.run.dt;
   Stepper stepper(c.integrator);
   for (int s = 0; s < 2000; ++s) stepper.step(model, f.state, dt);
   std::vector<double> expected = test::readExpectedPositions(c.expected);

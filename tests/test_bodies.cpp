@@ -335,7 +335,7 @@ TEST(SceneBodies, APointThatIsNotFiniteIsNamedByItsOwnGridIndex) {
     const Body& body = *f.world.scene->body;
     const int q = body.count() - 1;
     f.state.v()[coordIndex(q, 1, body.count())] = NAN;
-    const std::optional<WorldProblem> problem = findWorldProblem(f.world, f.state);
+    const std::optional<WorldProblem> problem = findWorldProblem(f);
     ASSERT_TRUE(problem) << jelly;
     const std::array<int, 3> i = body.index(q);
     const std::string label = "[" + std::to_string(i[0]) + "][" + std::to_string(i[1]) + "][" +
@@ -379,9 +379,9 @@ TEST(SceneBodies, ALargeBodysDivergenceSuggestsAStepBelowTheAnalysedLimitWithout
     for (Integrator integrator : {Integrator::Symplectic, Integrator::Midpoint, Integrator::Verlet,
                                   Integrator::RK4, Integrator::RK45}) {
       SCOPED_TRACE(integratorName(integrator));
-      f.world.integrator = integrator;
+      f.run.integrator = integrator;
       const std::string message =
-          divergenceMessage(f.world, f.state, f.world.integrator, f.world.dt, 3, 0.03, "a test");
+          divergenceMessage(f.world, f.state, f.run.integrator, f.run.dt, 3, 0.03, "a test");
       const std::size_t at = message.find("stable below ");
       ASSERT_NE(at, std::string::npos) << message;
       const double bound = std::stod(message.substr(at + 13));
@@ -389,8 +389,8 @@ TEST(SceneBodies, ALargeBodysDivergenceSuggestsAStepBelowTheAnalysedLimitWithout
       EXPECT_LE(bound, limit) << message;
       EXPECT_GT(bound, limit / 25) << message;
     }
-    f.world.integrator = Integrator::Euler;
-    EXPECT_NE(divergenceMessage(f.world, f.state, f.world.integrator, f.world.dt, 3, 0.03, "a test")
+    f.run.integrator = Integrator::Euler;
+    EXPECT_NE(divergenceMessage(f.world, f.state, f.run.integrator, f.run.dt, 3, 0.03, "a test")
                   .find("row sums cannot bound"),
               std::string::npos);
   }

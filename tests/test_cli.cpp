@@ -143,8 +143,8 @@ TEST(Cli, DumpHoldsTheFinalStateBitForBitAndTheOverrides) {
   Stepper stepper(Integrator::Euler);
   for (int s = 0; s < 50; ++s) stepper.step(model, f.state, 0.0002);
   EXPECT_EQ(dumped.state.y, f.state.y);
-  EXPECT_EQ(dumped.world.integrator, Integrator::Euler);
-  EXPECT_EQ(dumped.world.dt, 0.0002);
+  EXPECT_EQ(dumped.run.integrator, Integrator::Euler);
+  EXPECT_EQ(dumped.run.dt, 0.0002);
   EXPECT_EQ(dumped.world.field.forces, f.world.field.forces);
   test::removeTree(dir);
 }

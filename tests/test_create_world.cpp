@@ -41,9 +41,9 @@ Result createWorld(const std::string& args, const std::string& cwd = "") {
 std::set<std::string> differences(const WorldFile& a, const WorldFile& b) {
   std::set<std::string> d;
   const World &x = a.world, &y = b.world;
-  if (x.integrator != y.integrator) d.insert("integrator");
-  if (x.dt != y.dt) d.insert("dt");
-  if (x.n != y.n) d.insert("n");
+  if (a.run.integrator != b.run.integrator) d.insert("integrator");
+  if (a.run.dt != b.run.dt) d.insert("dt");
+  if (a.run.n != b.run.n) d.insert("n");
   if (x.kElastic != y.kElastic) d.insert("kElastic");
   if (x.dElastic != y.dElastic) d.insert("dElastic");
   if (x.kCollision != y.kCollision) d.insert("kCollision");
@@ -76,10 +76,10 @@ TEST_P(Preset, RebuildsTheCourseWorldWithinItsRounding) {
   WorldFile made = readWorldFile(dir + "/made.w"), course = readWorldFile(dataPath(name + ".w"));
   test::removeTree(dir);
   const World &m = made.world, &c = course.world;
-  EXPECT_EQ(m.integrator, c.integrator);
-  EXPECT_EQ(m.n, c.n);
+  EXPECT_EQ(made.run.integrator, course.run.integrator);
+  EXPECT_EQ(made.run.n, course.run.n);
   EXPECT_EQ(m.hasPlane, c.hasPlane);
-  for (auto [x, y] : {std::pair{m.dt, c.dt},
+  for (auto [x, y] : {std::pair{made.run.dt, course.run.dt},
                       {m.kElastic, c.kElastic},
                       {m.dElastic, c.dElastic},
                       {m.kCollision, c.kCollision},
@@ -106,7 +106,7 @@ TEST(CreateWorld, FromAWorldRoundTripsBitIdentically) {
   WorldFile source = readWorldFile(dataPath("jello.w"));
   source.state.v()[4] = -0.0;
   source.state.p()[7] = 0.1 + 0.2;
-  writeWorldFile(dir + "/source.w", source.world, source.state);
+  writeWorldFile(dir + "/source.w", source.world, source.run, source.state);
   Result r = createWorld("--from '" + dir + "/source.w' -o '" + dir + "/copy.w'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(test::readText(dir + "/copy.w"), test::readText(dir + "/source.w"));
@@ -135,9 +135,9 @@ std::vector<OptionCase> optionCases() {
       {"integrator",
        "--integrator euler",
        {"integrator"},
-       [](const WorldFile& f) { EXPECT_EQ(f.world.integrator, Integrator::Euler); }},
-      {"dt", "--dt 0.0025", {"dt"}, [](const WorldFile& f) { EXPECT_EQ(f.world.dt, 0.0025); }},
-      {"n", "--n 4", {"n"}, [](const WorldFile& f) { EXPECT_EQ(f.world.n, 4); }},
+       [](const WorldFile& f) { EXPECT_EQ(f.run.integrator, Integrator::Euler); }},
+      {"dt", "--dt 0.0025", {"dt"}, [](const WorldFile& f) { EXPECT_EQ(f.run.dt, 0.0025); }},
+      {"n", "--n 4", {"n"}, [](const WorldFile& f) { EXPECT_EQ(f.run.n, 4); }},
       {"k_elastic",
        "--k-elastic 123",
        {"kElastic"},

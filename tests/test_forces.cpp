@@ -258,7 +258,7 @@ TEST(Plane, APlaneBeyondTheRangeOfDoublesIsRefusedByTheReader) {
   EXPECT_EQ(planeProblem({1e-300, 0, 0, 1e-290}), "");
   EXPECT_EQ(planeProblem({1e300, -1e300, 0, 1e-300}), "");
   try {
-    parseWorld(formatWorld(w, test::restLattice()), "far.w");
+    parseWorld(formatWorld(w, RunSettings{}, test::restLattice()), "far.w");
     FAIL() << "a plane 1e310 m away was read";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),

@@ -284,7 +284,7 @@ TEST(SceneDrawing, TheFrictionColouringShowsStickingGreenAndSlidingOrange) {
   auto render = [](const char* name, const Image** out, OffscreenRenderer* renderer) {
     const WorldFile f = readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/" + name);
     const Model model = makeModel(f.world, f.state);
-    Simulation run(model, f.state, f.world.integrator, f.world.dt);
+    Simulation run(model, f.state, f.run.integrator, f.run.dt);
     EXPECT_TRUE(run.advanceTo(0.5).ran());
     DrawOptions options;
     options.coloring = Coloring::Friction;

@@ -66,14 +66,14 @@ TEST(Conservation, MomentumAndAngularMomentumWithoutWallsPlaneOrField) {
   World w = test::springsOnlyWorld();  // damped springs: internal forces only
   // Momentum is a linear invariant, which RK4 keeps to rounding; angular momentum is quadratic
   // and RK4 keeps it only to its truncation error, O(dt^4): 9e-8 at dt = 1e-4, 2e-10 here.
-  w.dt = 2e-5;
+  const double dt = 2e-5;
   State state = tumblingCube(11, 0.02);
   Model model = makeModel(w, state);
   Vec3 p0 = momentum(state, w.mass), l0 = angularMomentum(state, w.mass);
   Stepper stepper(Integrator::RK4);
   double worstP = 0, worstL = 0;
   for (int s = 0; s < 1000; ++s) {
-    stepper.step(model, state, w.dt);
+    stepper.step(model, state, dt);
     ASSERT_TRUE(insideBox(state)) << "the cube touched a wall at step " << s;
     worstP = std::max(worstP, length(momentum(state, w.mass) - p0) / length(p0));
     worstL = std::max(worstL, length(angularMomentum(state, w.mass) - l0) / length(l0));
@@ -88,20 +88,20 @@ TEST(Conservation, UndampedSpringsKeepRk4EnergyOverOneSecond) {
   World w = test::springsOnlyWorld();
   w.dElastic = 0;
   // RK4's energy error per unit time goes as dt^5: 7e-5 at dt = 5e-5, 2e-7 here.
-  w.dt = 1.5e-5;
+  const double dt = 1.5e-5;
   State state = tumblingCube(12, 0.03);
   Model model = makeModel(w, state);
   const double e0 = energy(model, state);
   Stepper stepper(Integrator::RK4);
   double worst = 0;
-  const long steps = std::lround(1.0 / w.dt);
+  const long steps = std::lround(1.0 / dt);
   for (long s = 0; s < steps; ++s) {
-    stepper.step(model, state, w.dt);
+    stepper.step(model, state, dt);
     if (s % 100 == 0) worst = std::max(worst, std::fabs(energy(model, state) - e0) / e0);
   }
   ASSERT_TRUE(insideBox(state));
   worst = std::max(worst, std::fabs(energy(model, state) - e0) / e0);
-  std::printf("RK4 relative energy drift over 1 s at dt=%g: %.3g\n", w.dt, worst);
+  std::printf("RK4 relative energy drift over 1 s at dt=%g: %.3g\n", dt, worst);
   EXPECT_LT(worst, 1e-6);
 }
 
@@ -113,7 +113,7 @@ TEST(Conservation, DampedSpringsLoseEnergy) {
   Stepper stepper(Integrator::RK4);
   double previous = energy(model, state);
   for (int s = 0; s < 200; ++s) {
-    stepper.step(model, state, w.dt);
+    stepper.step(model, state, test::kSpringsOnlyDt);
     double e = energy(model, state);
     ASSERT_LE(e, previous * (1 + 1e-12)) << "energy grew at step " << s;
     previous = e;
@@ -585,9 +585,8 @@ TEST(IntegratorTable, HasARowPerEnumeratorInOrderWhoseNameParsesBackInAnyCase) {
 TEST(IntegratorTable, EveryNameReadsBackFromAWorldFile) {
   WorldFile f = readWorldFile(test::dataPath("jello.w"));
   for (const IntegratorInfo& row : integratorTable()) {
-    f.world.integrator = row.integrator;
-    EXPECT_EQ(parseWorld(formatWorld(f.world, f.state), "table.w").world.integrator, row.integrator)
-        << row.name();
+    f.run.integrator = row.integrator;
+    EXPECT_EQ(parseWorld(formatWorld(f), "table.w").run.integrator, row.integrator) << row.name();
   }
 }
 

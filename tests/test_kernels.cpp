@@ -30,7 +30,7 @@ double relativeDifference(const std::vector<double>& a, const std::vector<double
 
 // 1000 steps with each kernel from the same state; the largest relative difference of the
 // states along the way (a NaN counts as a failure).
-double kernelsDisagreeBy(const World& world, const State& start,
+double kernelsDisagreeBy(const World& world, const State& start, double dt,
                          Integrator integrator = Integrator::RK4) {
   Model specialised = makeModel(world, start, KernelChoice::Specialised);
   Model general = makeModel(world, start, KernelChoice::General);
@@ -39,8 +39,8 @@ double kernelsDisagreeBy(const World& world, const State& start,
   Stepper sa(integrator), sb(integrator);
   double worst = 0;
   for (int s = 0; s < 1000; ++s) {
-    sa.step(specialised, a, world.dt);
-    sb.step(general, b, world.dt);
+    sa.step(specialised, a, dt);
+    sb.step(general, b, dt);
     double d = relativeDifference(a.y, b.y);
     if (!(d <= worst)) worst = d;  // keeps a NaN
   }
@@ -133,7 +133,7 @@ class CourseKernels : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CourseKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
   WorldFile f = readWorldFile(test::dataPath(GetParam()));
-  double d = kernelsDisagreeBy(f.world, f.state);
+  double d = kernelsDisagreeBy(f.world, f.state, f.run.dt);
   std::printf("%s: specialised and general kernels differ by %.3g relative\n", GetParam(), d);
   EXPECT_LE(d, 1e-14);
 }
@@ -148,11 +148,11 @@ INSTANTIATE_TEST_SUITE_P(Worlds, CourseKernels,
 
 // Random worlds that exercise every branch: with and without dampers, plane and field (absent,
 // zero, uniform, trilinear), thrown so that the cube meets walls and the plane within the run.
+// Random worlds are run with RK4 at this step, s.
+constexpr double kRandomWorldDt = 2e-4;
 World randomWorld(std::mt19937& random, State* start) {
   std::uniform_real_distribution<double> unit(0, 1), centred(-1, 1);
   World w;
-  w.integrator = Integrator::RK4;
-  w.dt = 2e-4;
   w.kElastic = 200 + 800 * unit(random);
   w.dElastic = random() % 3 == 0 ? 0 : unit(random);
   w.kCollision = 500 + 1500 * unit(random);
@@ -187,7 +187,7 @@ TEST(RandomKernels, SpecialisedAgreesWithGeneralOverAThousandSteps) {
   for (int world = 0; world < 12; ++world) {
     State start;
     World w = randomWorld(random, &start);
-    double d = kernelsDisagreeBy(w, start);
+    double d = kernelsDisagreeBy(w, start, kRandomWorldDt);
     std::printf("random world %d (%s): %.3g\n", world,
                 termsLine(makeModel(w, start).forces).c_str(), d);
     EXPECT_LE(d, 1e-14) << "random world " << world;
@@ -210,7 +210,7 @@ TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
       const Model model = makeModel(w, state, choice);
       State s = state;
       Stepper stepper(Integrator::RK4);
-      for (int step = 0; step < 300; ++step) stepper.step(model, s, w.dt);
+      for (int step = 0; step < 300; ++step) stepper.step(model, s, kRandomWorldDt);
       const Bounds box = boundsOf(s.p(), kNumPoints);
       const Bounds* reach = model.forces.culling ? &box : nullptr;
       State other = s;
@@ -242,8 +242,8 @@ TEST(KernelRanges, ATwoThreadRunIsTheOneThreadRunBitForBit) {
   for (const char* name : {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
     const WorldFile f = readWorldFile(test::dataPath(name));
     const Model model = makeModel(f.world, f.state);
-    Simulation one(model, f.state, Integrator::RK4, f.world.dt);
-    Simulation two(model, f.state, Integrator::RK4, f.world.dt);
+    Simulation one(model, f.state, Integrator::RK4, f.run.dt);
+    Simulation two(model, f.state, Integrator::RK4, f.run.dt);
     two.setTeam(&team);
     for (int step = 0; step < 1000; ++step) {
       ASSERT_TRUE(one.advance(1).ran() && two.advance(1).ran()) << name;

@@ -102,9 +102,9 @@ TEST(HostileNames, CheckJsonOfANameThatIsNotUtf8IsValidJsonNotAnException) {
   StabilityReport report;
   report.criticalRest = report.criticalInitial = report.criticalFaceOnWall =
       std::vector<double>(kExplicitIntegrators.size(), 1e-3);
-  World world;
+  RunSettings run;
   std::string json;
-  ASSERT_NO_THROW(json = stabilityJson("bad\xff\xfename.w", world, report));
+  ASSERT_NO_THROW(json = stabilityJson("bad\xff\xfename.w", run, report));
   EXPECT_NE(json.find("\"world\": \"bad\xEF\xBF\xBD\xEF\xBF\xBDname.w\""), std::string::npos)
       << json;
 }
@@ -171,7 +171,7 @@ TEST(DumpRule, ReplacesARegularFileItNamesAndKeepsItsMode) {
   ::chmod(out.c_str(), 0640);
   test::CommandResult r = dump(out, test::dataPath("still.w"));
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(readWorldFile(out).world.dt, readWorldFile(test::dataPath("still.w")).world.dt);
+  EXPECT_EQ(readWorldFile(out).run.dt, readWorldFile(test::dataPath("still.w")).run.dt);
   struct stat info {};
   ASSERT_EQ(::stat(out.c_str(), &info), 0);
   EXPECT_EQ(info.st_mode & 0777, 0640u);

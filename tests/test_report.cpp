@@ -162,10 +162,10 @@ TEST(Report, AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep)
   for (const CsvRow& r : parseRows(test::readText(dir + "/first/report.csv")))
     if (r.integrator == "RK4") largest = std::max(largest, r.dt);
   WorldFile file = readWorldFile(test::dataPath("rotate.w"));
-  file.world.integrator = Integrator::RK4;
-  file.world.dt = largest;
+  file.run.integrator = Integrator::RK4;
+  file.run.dt = largest;
   const std::string world = dir + "/own.w";
-  writeWorldFile(world, file.world, file.state);
+  writeWorldFile(world, file.world, file.run, file.state);
 
   test::CommandResult r = test::runJelloArgs(
       {"--report", dir + "/second", "--time", T, "--integrators", "RK4,EULER", world});
@@ -399,8 +399,8 @@ TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
     words[0] = JELLO_CREATE_WORLD;
     ASSERT_EQ(test::runProgram(words).status, 0) << line;
     const WorldFile made = readWorldFile(words[8]);
-    EXPECT_EQ(integratorName(made.world.integrator), words[4]);
-    EXPECT_EQ(made.world.dt, std::stod(words[6]));
+    EXPECT_EQ(integratorName(made.run.integrator), words[4]);
+    EXPECT_EQ(made.run.dt, std::stod(words[6]));
     EXPECT_EQ(words[8], folder + "/rotate-rk4-dt" + words[6] + ".w");
   }
   test::removeTree(dir);
@@ -584,7 +584,7 @@ std::string writeStiffJello(const std::string& dir) {
   WorldFile file = readWorldFile(test::dataPath("jello.w"));
   file.world.kElastic = 30000;
   const std::string path = dir + "/stiff.w";
-  writeWorldFile(path, file.world, file.state);
+  writeWorldFile(path, file.world, file.run, file.state);
   return path;
 }
 
@@ -656,7 +656,7 @@ TEST(Report, AReferenceThatDivergesLeavesNoEmptyFolder) {
   const std::string dir = test::makeTempDir(), world = dir + "/wild.w";
   WorldFile file = readWorldFile(test::dataPath("rotate.w"));
   file.state.v()[0] = 1e20;
-  test::writeText(world, formatWorld(file.world, file.state));
+  test::writeText(world, formatWorld(file));
   test::CommandResult r = test::runJelloArgs(
       {"--report", dir + "/rep", "--time", "0.01", "--integrators", "EULER", world});
   EXPECT_EQ(r.status, 1) << r.err;

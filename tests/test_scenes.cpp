@@ -40,8 +40,8 @@ TEST(SceneFile, ACourseWorldThroughASceneIsTheCourseWorldBitForBit) {
     const WorldFile through = scene(std::string("world = \"world/") + name + "\"\n");
     const Model a = makeModel(course.world, course.state),
                 b = makeModel(through.world, through.state);
-    Simulation one(a, course.state, course.world.integrator, course.world.dt);
-    Simulation two(b, through.state, through.world.integrator, through.world.dt);
+    Simulation one(a, course.state, course.run.integrator, course.run.dt);
+    Simulation two(b, through.state, through.run.integrator, through.run.dt);
     ASSERT_TRUE(one.advance(1000).ran() && two.advance(1000).ran()) << name;
     EXPECT_EQ(
         std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 2 * kNumCoords), 0)
@@ -90,8 +90,8 @@ TEST(SceneFile, AFieldFromExpressionsUniformOrNone) {
   World withoutField = course.world;
   withoutField.field = ForceField{};
   const Model a = makeModel(withoutField, course.state), b = makeModel(none.world, none.state);
-  Simulation one(a, course.state, Integrator::RK4, course.world.dt);
-  Simulation two(b, none.state, Integrator::RK4, none.world.dt);
+  Simulation one(a, course.state, Integrator::RK4, course.run.dt);
+  Simulation two(b, none.state, Integrator::RK4, none.run.dt);
   ASSERT_TRUE(one.advance(500).ran() && two.advance(500).ran());
   EXPECT_EQ(one.state().y, two.state().y);
 }
@@ -187,7 +187,7 @@ TEST(Pins, APinnedPointDoesNotMoveByASingleUlp) {
   ASSERT_EQ(pinned.size(), 8u + 64u);
   for (const IntegratorInfo& row : integratorTable()) {
     const Model model = makeModel(f.world, f.state);
-    Simulation run(model, f.state, row.integrator, f.world.dt);
+    Simulation run(model, f.state, row.integrator, f.run.dt);
     ASSERT_TRUE(run.advance(row.needsJacobian ? 20 : 300).ran()) << row.name();
     double moved = 0, free = 0;
     for (int q = 0; q < kNumPoints; ++q) {
@@ -246,7 +246,7 @@ TEST(SceneFile, CheckHasAWallColumnOnlyWithTheCourseWalls) {
     const StabilityReport report = analyseStability(f.world, f.state);
     EXPECT_EQ(report.courseWalls, c.second) << c.first;
     EXPECT_EQ(std::isnan(report.criticalFaceOnWall[0]), !c.second) << c.first;
-    const std::string text = stabilityText("s.toml", f.world, report);
+    const std::string text = stabilityText("s.toml", f.run, report);
     EXPECT_EQ(text.find("(no course walls)") != std::string::npos, !c.second) << text;
   }
 }
@@ -281,11 +281,11 @@ TEST(Friction, ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt) {
     // in, and once sliding, mu_d < tan a keeps it going, as Coulomb's law says.
     const WorldFile level = slope(0);
     const Model levelModel = makeModel(level.world, level.state);
-    Simulation settle(levelModel, level.state, Integrator::RK4, level.world.dt);
+    Simulation settle(levelModel, level.state, Integrator::RK4, level.run.dt);
     ASSERT_TRUE(settle.advanceTo(0.5).ran());
     const WorldFile f = slope(0.8 * friction);
     const Model model = makeModel(f.world, f.state);
-    Simulation s(model, settle.state(), Integrator::RK4, f.world.dt);
+    Simulation s(model, settle.state(), Integrator::RK4, f.run.dt);
     ASSERT_TRUE(s.advanceTo(1.0).ran());
     const double slid = centroid(s.state()).x - centroid(settle.state()).x;
     std::printf("at 0.8 of the friction angle: %.3g m in 1 s\n", slid);
@@ -295,7 +295,7 @@ TEST(Friction, ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt) {
     const double angle = 1.2 * friction;
     const WorldFile f = slope(angle);
     const Model model = makeModel(f.world, f.state);
-    Simulation s(model, f.state, Integrator::RK4, f.world.dt);
+    Simulation s(model, f.state, Integrator::RK4, f.run.dt);
     auto speed = [&] {
       double sum = 0;
       for (int q = 0; q < kNumPoints; ++q) sum += s.state().v()[q];
@@ -342,7 +342,7 @@ TEST(FrictionState, TheJellyOnTheSlopeSticksWithEnoughFrictionAndSlidesWithout) 
   auto states = [](const char* name, double time) {
     const WorldFile f = readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/" + name);
     const Model model = makeModel(f.world, f.state);
-    Simulation run(model, f.state, f.world.integrator, f.world.dt);
+    Simulation run(model, f.state, f.run.integrator, f.run.dt);
     EXPECT_TRUE(run.advanceTo(time).ran());
     int count[2][3] = {};  // [bottom layer or not][state]
     double slip = 0;
@@ -373,7 +373,7 @@ TEST(Obstacles, AJellyDroppedOnASphereEndsRestingOnItCentred) {
       "[[sphere]]\ncentre = [0, 0, -1.5]\nradius = 1\nstiffness = 5000\ndamping = 10\n"
       "friction_static = 0.8\nfriction_dynamic = 0.6\n");
   const Model model = makeModel(f.world, f.state);
-  Simulation s(model, f.state, Integrator::RK4, f.world.dt);
+  Simulation s(model, f.state, Integrator::RK4, f.run.dt);
   const RunOutcome outcome = s.advanceTo(4.0);
   ASSERT_TRUE(outcome.ran()) << "step " << outcome.step << ": " << outcome.reason;
   const Vec3 c = centroid(s.state());

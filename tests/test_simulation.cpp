@@ -49,7 +49,8 @@ TEST(Simulation, ADivergingRunReportsTheStepTimeAndReasonTheHeadlessRunReported)
   for (const DivergingCase& c : cases) {
     WorldFile f = readWorldFile(sourcePath(c.world));
     Model model = makeModel(f.world, f.state);
-    Simulation simulation(model, f.state, c.integrator, c.dt);
+    // As the headless run: the world file's n (the energy bound's cadence), the case's step.
+    Simulation simulation(model, f.state, RunSettings{c.integrator, c.dt, f.run.n});
     const RunOutcome outcome = simulation.advance(2000);
     EXPECT_EQ(outcome.kind, RunOutcome::Kind::Diverged) << c.world;
     EXPECT_EQ(outcome.step, c.step) << c.world;
@@ -74,7 +75,7 @@ TEST(Simulation, ADivergingRunReportsTheStepTimeAndReasonTheHeadlessRunReported)
 // for the same reason, in the same state.
 TEST(Simulation, StopsAtTheSameStepHoweverItsStepsAreGrouped) {
   WorldFile f = readWorldFile(sourcePath("world/stress/stiff-1e5.w"));
-  f.world.n = 1;  // the energy every 8 steps, which advancing by 7 does not line up with
+  f.run.n = 1;  // the energy every 8 steps, which advancing by 7 does not line up with
   Model model = makeModel(f.world, f.state);
   Simulation whole(model, f.state, Integrator::RK4, 1e-4),
       single(model, f.state, Integrator::RK4, 1e-4), sevens(model, f.state, Integrator::RK4, 1e-4);
@@ -99,9 +100,9 @@ TEST(Simulation, StopsAtTheSameStepHoweverItsStepsAreGrouped) {
 TEST(Simulation, ChecksTheEnergyOnMultiplesOfTheLargerOfNAndEight) {
   for (int n : {1, 3, 12, 25}) {
     WorldFile f = readWorldFile(sourcePath("world/stress/stiff-1e5.w"));
-    f.world.n = n;
+    f.run.n = n;
     Model model = makeModel(f.world, f.state);
-    Simulation simulation(model, f.state, Integrator::RK4, 1e-4);
+    Simulation simulation(model, f.state, RunSettings{Integrator::RK4, 1e-4, f.run.n});
     const RunOutcome outcome = simulation.advance(2000);
     ASSERT_EQ(outcome.kind, RunOutcome::Kind::Diverged) << n;
     ASSERT_EQ(outcome.reason.rfind("its energy", 0), 0u) << outcome.reason;
@@ -136,7 +137,7 @@ TEST(Simulation, APullSkipsTheEnergyBoundAndLettingGoRestartsIt) {
 // bit; the energy the push adds is not taken for a divergence.
 TEST(Simulation, AddVelocityMovesEveryFreePointAndNoPinnedOneAndRestartsTheBound) {
   WorldFile f = readWorldFile(test::dataPath("still.w"));
-  f.world.n = 1;  // the energy bound checked every kEnergyEvery steps
+  f.run.n = 1;  // the energy bound checked every kEnergyEvery steps
   Model model = makeModel(f.world, f.state);
   model.pinned = {pointIndex(0, 0, 0), pointIndex(7, 7, 7)};
   Simulation simulation(model, f.state, Integrator::RK4, 1e-3);

@@ -100,7 +100,7 @@ TEST(Stability, VerdictsAndSuggestions) {
 // The start's and the wall's limits are warned about only when they are below the one at rest,
 // which the verdict already compares the step with: above it, they would repeat the verdict.
 TEST(Stability, TheStartAndTheWallAreWarnedAboutOnlyBelowTheLimitAtRest) {
-  World w;
+  RunSettings w;
   w.integrator = Integrator::RK4;
   const std::size_t n = integratorsWithStepLimit().size();
   auto report = [n](double rest, double initial, double wall) {
@@ -166,8 +166,8 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
   for (const auto& c : cases) {
     const auto start = std::chrono::steady_clock::now();
     EXPECT_EQ(beyondDoubles(c.world, c.state), c.says);
-    const std::string message = divergenceMessage(c.world, c.state, c.world.integrator, c.world.dt,
-                                                  1, 0.001, "point p[0][0][0] is no longer finite");
+    const std::string message = divergenceMessage(c.world, c.state, f.run.integrator, f.run.dt, 1,
+                                                  0.001, "point p[0][0][0] is no longer finite");
     EXPECT_NE(message.find("beyond what double arithmetic can simulate (" + std::string(c.says) +
                            "): no step will do"),
               std::string::npos)
@@ -175,11 +175,11 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
     EXPECT_EQ(message.find("--dt"), std::string::npos) << message;
     const StabilityReport report = analyseStability(c.world, c.state);
     EXPECT_EQ(report.beyond, c.says);
-    const std::string text = stabilityText("w.w", c.world, report);
+    const std::string text = stabilityText("w.w", f.run, report);
     EXPECT_EQ(text.find("rad/s"), std::string::npos) << text;
     EXPECT_NE(text.find("no practical step of any integrator will do"), std::string::npos) << text;
     EXPECT_EQ(
-        nlohmann::json::parse(stabilityJson("w.w", c.world, report))["beyond_double_arithmetic"],
+        nlohmann::json::parse(stabilityJson("w.w", f.run, report))["beyond_double_arithmetic"],
         c.says);
     EXPECT_LT(secondsSince(start), 0.1);
   }
@@ -189,7 +189,7 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
   EXPECT_EQ(beyondDoubles(stiff, f.state), "");
   lineariseAtRest(stiff);  // the unit lattice's eigensolve, once per process
   const auto start = std::chrono::steady_clock::now();
-  const std::string message = divergenceMessage(stiff, f.state, stiff.integrator, stiff.dt, 1,
+  const std::string message = divergenceMessage(stiff, f.state, f.run.integrator, f.run.dt, 1,
                                                 0.001, "point p[0][0][0] is no longer finite");
   EXPECT_LT(secondsSince(start), 0.1);
   EXPECT_NE(
@@ -207,8 +207,8 @@ TEST(Stability, AWorldBeyondDoublesIsDiagnosedAtOnceNamingTheNumber) {
 WorldFile undampedRotate(double dt, const std::function<void(State&)>& deform) {
   WorldFile f = readWorldFile(test::dataPath("rotate.w"));
   f.world.dElastic = 0;
-  f.world.integrator = Integrator::Symplectic;
-  f.world.dt = dt;
+  f.run.integrator = Integrator::Symplectic;
+  f.run.dt = dt;
   deform(f.state);
   return f;
 }
@@ -217,7 +217,7 @@ WorldFile undampedRotate(double dt, const std::function<void(State&)>& deform) {
 bool runsClean(const WorldFile& f, double dt, double time) {
   Model model = makeModel(f.world, f.state);
   State s = f.state;
-  Stepper stepper(f.world.integrator);
+  Stepper stepper(f.run.integrator);
   DivergenceGuard guard(model, f.state);
   for (long long i = 1; i * dt <= time; ++i) {
     stepper.step(model, s, dt);
@@ -241,14 +241,14 @@ TEST(Stability, AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit) {
   EXPECT_NEAR(report.verdictLimit(Integrator::Symplectic), 0.000867, 5e-7);
   EXPECT_NEAR(report.largestStrain, 0.3, 1e-4);  // the file's six decimals
   EXPECT_EQ(report.stableFraction, kLargeMotionStableFraction);
-  std::string text = stabilityText("w", stretched.world, report);
+  std::string text = stabilityText("w", stretched.run, report);
   EXPECT_NE(text.find("the world's dt 0.00077 with SYMPLECTIC: marginal (89% of the limit 0.000867 "
                       "at the initial "
                       "state)\n  marginal: the cube starts deformed (a spring strained by 30%)"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("try --dt 0.0002 or --integrator IMPLICIT"), std::string::npos) << text;
-  EXPECT_EQ(nlohmann::json::parse(stabilityJson("w", stretched.world, report))["verdict"],
+  EXPECT_EQ(nlohmann::json::parse(stabilityJson("w", stretched.run, report))["verdict"],
             "marginal");
   EXPECT_FALSE(runsClean(stretched, 0.00077, 0.2)) << "the marginal step does diverge";
   EXPECT_TRUE(runsClean(stretched, 0.0004, 1)) << "below half the limit, as the verdict says";
@@ -260,7 +260,7 @@ TEST(Stability, AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit) {
     store(s.p(), q, load(s.p(), q) + Vec3{1.0 / 7, 1.0 / 7, 1.0 / 7});
   });
   report = analyseStability(corner.world, corner.state);
-  text = stabilityText("w", corner.world, report);
+  text = stabilityText("w", corner.run, report);
   EXPECT_NE(text.find("the world's dt 0.0009 with SYMPLECTIC: marginal (93% of the limit "
                       "0.000971)\n  marginal: the "
                       "cube starts deformed"),
@@ -281,8 +281,8 @@ TEST(Guard, PassesPhysicsAndCatchesABlowUp) {
   State s = f.state;
   Stepper stepper(Integrator::RK4);
   for (int i = 1; i <= 3000; ++i) {
-    stepper.step(model, s, f.world.dt);
-    ASSERT_EQ(guard.check(s, i * f.world.dt), "") << "step " << i;
+    stepper.step(model, s, f.run.dt);
+    ASSERT_EQ(guard.check(s, i * f.run.dt), "") << "step " << i;
   }
   State fast = s;
   for (int c = 0; c < kNumCoords; ++c) fast.v()[c] *= 30;
@@ -443,7 +443,7 @@ TEST(SmallAndWildStates, AVelocityOf1e100IsADivergenceNotAnEigensolverFailure) {
   const std::string dir = test::makeTempDir(), world = dir + "/wild.w";
   WorldFile file = readWorldFile(test::dataPath("rotate.w"));
   file.state.v()[coordIndex(0, 0)] = 1e100;
-  test::writeText(world, formatWorld(file.world, file.state));
+  test::writeText(world, formatWorld(file));
   test::CommandResult r = test::runJelloArgs({"--headless", "--steps", "20", world});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("diverged at step 1"), std::string::npos) << r.err;

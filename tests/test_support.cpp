@@ -80,8 +80,6 @@ State restLattice() { return restState(courseBody()); }
 
 World springsOnlyWorld() {
   World w;
-  w.integrator = Integrator::RK4;
-  w.dt = 1e-4;
   w.kElastic = 500;
   w.dElastic = 0.25;
   w.kCollision = 1000;
@@ -222,7 +220,7 @@ std::vector<std::string> baseLines() {
   w.plane = {1, -1, -1, 4};
   w.field.resolution = 2;
   w.field.forces.assign(3 * 8, 0.5);
-  std::string text = formatWorld(w, restLattice());
+  std::string text = formatWorld(w, RunSettings{Integrator::RK4, 1e-4, 1}, restLattice());
   std::vector<std::string> lines;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) lines.push_back(line);

@@ -48,6 +48,8 @@ State restLattice();
 
 // A world with damped springs and nothing else: no plane, no field.
 World springsOnlyWorld();
+// The step the springs-only world is run at in the tests, s.
+constexpr double kSpringsOnlyDt = 1e-4;
 
 // A fresh directory under the system's temporary directory.
 std::string makeTempDir();

@@ -25,12 +25,12 @@ bool bitIdentical(const std::vector<double>& a, const std::vector<double>& b) {
 
 void expectSameWorld(const WorldFile& a, const WorldFile& b) {
   const World &x = a.world, &y = b.world;
-  EXPECT_EQ(x.integrator, y.integrator);
-  EXPECT_TRUE(bitIdentical({x.dt, x.kElastic, x.dElastic, x.kCollision, x.dCollision, x.mass,
+  EXPECT_EQ(a.run.integrator, b.run.integrator);
+  EXPECT_TRUE(bitIdentical({a.run.dt, x.kElastic, x.dElastic, x.kCollision, x.dCollision, x.mass,
                             x.plane.a, x.plane.b, x.plane.c, x.plane.d},
-                           {y.dt, y.kElastic, y.dElastic, y.kCollision, y.dCollision, y.mass,
+                           {b.run.dt, y.kElastic, y.dElastic, y.kCollision, y.dCollision, y.mass,
                             y.plane.a, y.plane.b, y.plane.c, y.plane.d}));
-  EXPECT_EQ(x.n, y.n);
+  EXPECT_EQ(a.run.n, b.run.n);
   EXPECT_EQ(x.hasPlane, y.hasPlane);
   EXPECT_EQ(x.field.resolution, y.field.resolution);
   EXPECT_TRUE(bitIdentical(x.field.forces, y.field.forces));
@@ -99,9 +99,9 @@ TEST(WorldReader, CourseWorldsLoadWithTheirExactValues) {
     SCOPED_TRACE(c.file);
     WorldFile f = readWorldFile(dataPath(c.file));
     const World& w = f.world;
-    EXPECT_EQ(w.integrator, Integrator::RK4);
-    EXPECT_EQ(w.dt, c.dt);
-    EXPECT_EQ(w.n, 1);
+    EXPECT_EQ(f.run.integrator, Integrator::RK4);
+    EXPECT_EQ(f.run.dt, c.dt);
+    EXPECT_EQ(f.run.n, 1);
     EXPECT_EQ(w.kElastic, c.kElastic);
     EXPECT_EQ(w.dElastic, c.dElastic);
     EXPECT_EQ(w.kCollision, c.kCollision);
@@ -216,7 +216,7 @@ TEST(WorldReader, IntegratorNamesAreCaseInsensitive) {
       {"implicit", Integrator::Implicit}};
   for (auto [name, integrator] : names) {
     std::string renamed = name + text.substr(text.find('\n'));
-    EXPECT_EQ(parseWorld(renamed, "w").world.integrator, integrator) << name;
+    EXPECT_EQ(parseWorld(renamed, "w").run.integrator, integrator) << name;
   }
 }
 
@@ -224,10 +224,10 @@ TEST(WorldWriter, CourseWorldsRoundTripBitIdentically) {
   for (const CourseWorld& c : kCourseWorlds) {
     SCOPED_TRACE(c.file);
     WorldFile original = readWorldFile(dataPath(c.file));
-    std::string written = formatWorld(original.world, original.state);
+    std::string written = formatWorld(original);
     WorldFile back = parseWorld(written, "written");
     expectSameWorld(original, back);
-    EXPECT_EQ(formatWorld(back.world, back.state), written);
+    EXPECT_EQ(formatWorld(back), written);
   }
 }
 
@@ -238,9 +238,7 @@ TEST(WorldWriter, ArbitraryDoublesRoundTripBitIdentically) {
   auto any = [&] { return std::ldexp(unit(random), exponent(random)); };
   auto positive = [&] { return std::fabs(any()) + 1e-300; };
   World w;
-  w.integrator = Integrator::Verlet;
-  w.dt = positive();
-  w.n = 7;
+  const RunSettings run{Integrator::Verlet, positive(), 7};
   w.kElastic = positive();
   w.dElastic = 0;
   w.kCollision = positive();
@@ -253,9 +251,9 @@ TEST(WorldWriter, ArbitraryDoublesRoundTripBitIdentically) {
   State s;
   for (double& value : s.y) value = unit(random) * 3;
   s.y[5] = 5e-324;  // the smallest subnormal
-  std::string text = formatWorld(w, s);
+  std::string text = formatWorld(w, run, s);
   WorldFile back = parseWorld(text, "random");
-  expectSameWorld({w, s}, back);
+  expectSameWorld({w, run, s}, back);
   EXPECT_TRUE(std::signbit(back.world.plane.d));
 }
 
@@ -263,12 +261,13 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
   std::string dir = test::makeTempDir();
   WorldFile f = readWorldFile(dataPath("jello.w"));
   std::string path = dir + "/out.w";
-  writeWorldFile(path, f.world, f.state);
+  writeWorldFile(path, f.world, f.run, f.state);
   expectSameWorld(f, readWorldFile(path));
   const auto entries = std::distance(std::filesystem::directory_iterator(dir),
                                      std::filesystem::directory_iterator());
   EXPECT_EQ(entries, 1) << "temporary file left behind";
-  EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.state), std::runtime_error);
+  EXPECT_THROW(writeWorldFile(dir + "/no/such/dir/out.w", f.world, f.run, f.state),
+               std::runtime_error);
   test::removeTree(dir);
 }
 
@@ -277,7 +276,7 @@ TEST(WorldWriter, WriteWorldFileWritesWholeFilesAndNothingElse) {
 TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
   using Part = WorldProblem::Part;
   const WorldFile good = readWorldFile(dataPath("rotate.w"));
-  EXPECT_FALSE(findWorldProblem(good.world, good.state));
+  EXPECT_FALSE(findWorldProblem(good));
   struct Case {
     std::function<void(WorldFile&)> spoil;
     Part part;
@@ -287,7 +286,7 @@ TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
   const Case cases[] = {
       {[](WorldFile& f) { f.world.mass = 0; }, Part::Parameters, 0,
        "mass must be > 0 and finite, got 0"},
-      {[](WorldFile& f) { f.world.dt = -1e-9; }, Part::Parameters, 0,
+      {[](WorldFile& f) { f.run.dt = -1e-9; }, Part::Parameters, 0,
        "dt must be > 0 and finite, got -1e-09"},
       {[](WorldFile& f) { f.world.kCollision = INFINITY; }, Part::Parameters, 0,
        "kCollision must be >= 0 and finite, got inf"},
@@ -305,12 +304,12 @@ TEST(WorldProblems, AreWhatTheReaderRefusesNamedByPartAndPlace) {
   for (const Case& c : cases) {
     WorldFile f = good;
     c.spoil(f);
-    std::optional<WorldProblem> problem = findWorldProblem(f.world, f.state);
+    std::optional<WorldProblem> problem = findWorldProblem(f);
     ASSERT_TRUE(problem) << c.what;
     EXPECT_EQ(problem->part, c.part) << c.what;
     EXPECT_EQ(problem->index, c.index) << c.what;
     EXPECT_EQ(problem->what, c.what);
-    EXPECT_THROW(parseWorld(formatWorld(f.world, f.state), "spoilt.w"), InputError) << c.what;
+    EXPECT_THROW(parseWorld(formatWorld(f), "spoilt.w"), InputError) << c.what;
   }
 }
 
@@ -318,17 +317,17 @@ TEST(WorldWriter, WritesInBlocksOfAtMost64KilobytesTheSameBytesAsOneString) {
   const WorldFile f = readWorldFile(dataPath("gravity.w"));
   std::string joined;
   std::size_t blocks = 0, largest = 0;
-  formatWorldInBlocks(f.world, f.state, [&](std::string_view block) {
+  formatWorldInBlocks(f.world, f.run, f.state, [&](std::string_view block) {
     ++blocks;
     largest = std::max(largest, block.size());
     joined += block;
   });
-  const std::string text = formatWorld(f.world, f.state);
+  const std::string text = formatWorld(f);
   EXPECT_EQ(joined, text);
   EXPECT_GE(blocks, text.size() / (65536 + 100));  // 5 for its 310 KB
   EXPECT_LE(largest, 65536u + 100) << "a block is the whole text, not a part of it";
   std::string dir = test::makeTempDir();
-  writeWorldFile(dir + "/out.w", f.world, f.state);
+  writeWorldFile(dir + "/out.w", f.world, f.run, f.state);
   EXPECT_EQ(test::readText(dir + "/out.w"), text);
   test::removeTree(dir);
 }
