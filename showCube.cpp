@@ -85,14 +85,14 @@ double niceCeiling(double x) {
 Vec3 lerp(Vec3 a, Vec3 b, double t) { return a + t * (b - a); }
 
 // Diverging map for strain in [-1, 1]: blue (compressed), white, red (stretched).
-Vec3 divergingColor(double t) {
+Vec3 divergingColour(double t) {
   t = std::clamp(t, -1.0, 1.0);
   const Vec3 blue{0.15, 0.3, 0.9}, white{0.95, 0.95, 0.95}, red{0.9, 0.12, 0.1};
   return t < 0 ? lerp(white, blue, -t) : lerp(white, red, t);
 }
 
 // Sequential map for a magnitude in [0, 1]: dark blue, cyan, yellow, red.
-Vec3 sequentialColor(double t) {
+Vec3 sequentialColour(double t) {
   t = std::clamp(t, 0.0, 1.0);
   const Vec3 stops[] = {{0.1, 0.1, 0.5}, {0.1, 0.75, 0.85}, {0.95, 0.9, 0.2}, {0.85, 0.1, 0.1}};
   double x = t * 3;
@@ -100,7 +100,7 @@ Vec3 sequentialColor(double t) {
   return lerp(stops[i], stops[i + 1], x - i);
 }
 
-struct SurfaceColors {
+struct SurfaceColours {
   std::vector<Vec3> color;  // per point
   double scale = 1;         // the value at the end of the legend
   const char* title = "";
@@ -125,12 +125,12 @@ struct SurfaceValues {
   double largest = 0;  // of the magnitudes
 };
 
-SurfaceValues valuesFor(const Model& model, const State& state, Coloring coloring) {
+SurfaceValues valuesFor(const Model& model, const State& state, Colouring colouring) {
   SurfaceValues out;
   std::vector<double>& value = out.value;
   const int n = model.points();
   value.assign(n, 0.0);
-  if (coloring == Coloring::Strain) {
+  if (colouring == Colouring::Strain) {
     // Mean relative stretch of the springs meeting at each point.
     std::vector<int> count(n, 0);
     for (const Spring& s : model.springs()) {
@@ -144,7 +144,7 @@ SurfaceValues valuesFor(const Model& model, const State& state, Coloring colorin
       value[q] /= count[q];
       out.largest = std::max(out.largest, std::fabs(value[q]));
     }
-  } else if (coloring == Coloring::Force) {
+  } else if (colouring == Colouring::Force) {
     std::vector<double> force(3 * n);
     computeForces(model, state.p(), state.v(), force.data());
     for (int q = 0; q < n; ++q) {
@@ -156,30 +156,30 @@ SurfaceValues valuesFor(const Model& model, const State& state, Coloring colorin
 }
 
 // The smallest legend scale: a cube at rest still gets a legend that means something.
-double smallestScale(Coloring coloring) { return coloring == Coloring::Strain ? 1e-3 : 1e-6; }
+double smallestScale(Colouring colouring) { return colouring == Colouring::Strain ? 1e-3 : 1e-6; }
 
 // `heldScale` > 0 is the legend's end value; 0 fits it to this state.
-SurfaceColors colorsFor(const Model& model, const State& state, Coloring coloring,
-                        double heldScale) {
-  SurfaceColors out;
+SurfaceColours coloursFor(const Model& model, const State& state, Colouring colouring,
+                          double heldScale) {
+  SurfaceColours out;
   const int n = model.points();
   out.color.assign(n, Vec3{kJelly[0], kJelly[1], kJelly[2]});
-  if (coloring == Coloring::Plain) return out;
-  if (coloring == Coloring::Friction) {
+  if (colouring == Colouring::Plain) return out;
+  if (colouring == Colouring::Friction) {
     out.frictionStates = true;
     out.title = "FRICTION";
     const std::vector<FrictionState> states = frictionStates(model, state);
     for (int q = 0; q < n; ++q) out.color[q] = frictionColour(states[q]);
     return out;
   }
-  const SurfaceValues values = valuesFor(model, state, coloring);
+  const SurfaceValues values = valuesFor(model, state, colouring);
   out.scale =
-      heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(coloring)));
-  out.diverging = coloring == Coloring::Strain;
+      heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(colouring)));
+  out.diverging = colouring == Colouring::Strain;
   out.title = out.diverging ? "STRAIN" : "FORCE N";
   for (int q = 0; q < n; ++q) {
     const double t = values.value[q] / out.scale;
-    out.color[q] = out.diverging ? divergingColor(t) : sequentialColor(t);
+    out.color[q] = out.diverging ? divergingColour(t) : sequentialColour(t);
   }
   return out;
 }
@@ -228,7 +228,7 @@ void drawBox(const std::vector<Edge>& edges) {
   glEnd();
 }
 
-void drawSurface(const Body& body, const State& state, const SurfaceColors& colors,
+void drawSurface(const Body& body, const State& state, const SurfaceColours& colors,
                  bool wireframe) {
   // The body's surface mesh (body.h: no GL, so that what is drawn can also be written as files).
   const std::vector<Triangle>& triangles = body.surface;
@@ -352,7 +352,7 @@ std::string formatValue(double v) {
 // The friction colouring's legend: its title, then a swatch of each state's colour, one a line,
 // in the bar's column with its word beside it; at the bottom of the legend's place, where the
 // other colourings' legends end.
-void drawFrictionLegend(const SurfaceColors& colors, const LegendLayout& legend, int width,
+void drawFrictionLegend(const SurfaceColours& colors, const LegendLayout& legend, int width,
                         int height) {
   const int scale = legend.scale, glyph = kGlyphHeight * scale, line = kLineAdvance * scale;
   const FrictionState order[] = {FrictionState::Sticking, FrictionState::Sliding,
@@ -368,7 +368,7 @@ void drawFrictionLegend(const SurfaceColors& colors, const LegendLayout& legend,
   }
 }
 
-void drawLegend(const SurfaceColors& colors, const LegendLayout& legend, int width, int height) {
+void drawLegend(const SurfaceColours& colors, const LegendLayout& legend, int width, int height) {
   if (colors.frictionStates) {
     drawFrictionLegend(colors, legend, width, height);
     return;
@@ -380,8 +380,8 @@ void drawLegend(const SurfaceColors& colors, const LegendLayout& legend, int wid
   const int steps = 32;
   for (int i = 0; i < steps; ++i) {
     double t0 = 1 - double(i) / steps, t1 = 1 - double(i + 1) / steps;  // top is the largest
-    Vec3 c0 = colors.diverging ? divergingColor(2 * t0 - 1) : sequentialColor(t0);
-    Vec3 c1 = colors.diverging ? divergingColor(2 * t1 - 1) : sequentialColor(t1);
+    Vec3 c0 = colors.diverging ? divergingColour(2 * t0 - 1) : sequentialColour(t0);
+    Vec3 c1 = colors.diverging ? divergingColour(2 * t1 - 1) : sequentialColour(t1);
     double y0 = bar.y + bar.height * double(i) / steps;
     double y1 = bar.y + bar.height * double(i + 1) / steps;
     glColor3d(c0.x, c0.y, c0.z);
@@ -477,13 +477,13 @@ Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request
   return camera;
 }
 
-const char* coloringName(Coloring coloring) {
-  static_assert(kColoringCount == kColouringCount, "a name for every colouring (app/pictures.h)");
-  return kColouringNames[static_cast<int>(coloring)];
+const char* colouringName(Colouring colouring) {
+  static_assert(kColouringKinds == kColouringCount, "a name for every colouring (app/pictures.h)");
+  return kColouringNames[static_cast<int>(colouring)];
 }
 
-void drawScene(const Model& model, const State& state, const Camera& camera,
-               const DrawOptions& options, int width, int height, const Pull* pull) {
+void drawPicture(const Model& model, const State& state, const Camera& camera,
+                 const DrawOptions& options, int width, int height, const Pull* pull) {
   glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -498,7 +498,7 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
   const std::vector<Edge> clip = boxEdges(clipBox(model));
   if (drawnBox(model)) drawBox(clip);
   drawSolidObstacles(model);
-  SurfaceColors colors = colorsFor(model, state, options.coloring, options.colourScale);
+  SurfaceColours colors = coloursFor(model, state, options.colouring, options.colourScale);
   drawSurface(model.body(), state, colors, options.wireframe);
   drawSprings(model, state, options);
   drawPinnedPoints(model, state);
@@ -506,15 +506,15 @@ void drawScene(const Model& model, const State& state, const Camera& camera,
   if (model.world.hasPlane) drawPlane(model.plane(), clip);
   drawHalfSpaces(model, clip);
   if (pull && pull->point >= 0) drawPull(state, *pull);
-  const bool coloured = options.coloring != Coloring::Plain;
+  const bool coloured = options.colouring != Colouring::Plain;
   const LegendLayout legend = layoutLegends(width, height, options.springKinds(), coloured);
   if (coloured) drawLegend(colors, legend, width, height);
   if (options.springKinds() > 0) drawSpringLegend(options, legend, width, height);
 }
 
-double fittedColourScale(const Model& model, const State& state, Coloring coloring) {
-  if (coloring == Coloring::Plain || coloring == Coloring::Friction) return 0;
-  return colorsFor(model, state, coloring, 0).scale;
+double fittedColourScale(const Model& model, const State& state, Colouring colouring) {
+  if (colouring == Colouring::Plain || colouring == Colouring::Friction) return 0;
+  return coloursFor(model, state, colouring, 0).scale;
 }
 
 void drawPanel(const PixelRect& rect, int width, int height, float r, float g, float b,

@@ -13,7 +13,7 @@
 namespace jello {
 
 // The colourings of the cube's surface by name, in the order the window's `c` cycles them
-// (showCube.h's Coloring): --colouring starts a run's pictures in one of them.
+// (showCube.h's Colouring): --colouring starts a run's pictures in one of them.
 constexpr const char* kColouringNames[] = {"plain", "strain", "force", "friction"};
 constexpr int kColouringCount = 4;
 

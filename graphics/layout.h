@@ -4,7 +4,7 @@
 // Pixels count from the window's top-left corner, x to the right, y down. The layout (README: The
 // viewer) is, by construction, one where nothing overlaps:
 //   - a legend column at the right edge, only while a legend is shown: the springs' legend at its
-//     top, the colour legend at its bottom (both drawn by drawScene, so saved frames have them);
+//     top, the colour legend at its bottom (both drawn by drawPicture, so saved frames have them);
 //   - the text column, the rest of the width: the status lines at its top (the status, the
 //     recording, the colouring, one under the other), the messages wrapped at its bottom, and the
 //     key help, when shown, in the space between them.

@@ -48,7 +48,7 @@ OffscreenRenderer::~OffscreenRenderer() {
 
 const Image& OffscreenRenderer::render(const Model& model, const State& state, const Camera& camera,
                                        const DrawOptions& options) {
-  drawScene(model, state, camera, options, image_.width, image_.height);
+  drawPicture(model, state, camera, options, image_.width, image_.height);
   glFinish();
   const int w = image_.width, h = image_.height;
   for (int row = 0; row < h; ++row) {
@@ -79,7 +79,7 @@ class OffscreenFrames : public FrameObserver {
       : options_(pictures),
         renderer_(pictures.width, pictures.height),
         sequence_(pictures.framesDir, pictures.maxFrames, pictures.overwrite) {
-    draw_.coloring = static_cast<Coloring>(pictures.colouring);
+    draw_.colouring = static_cast<Colouring>(pictures.colouring);
   }
 
   const PictureOptions& options() const override { return options_; }

@@ -1,6 +1,6 @@
 // graphics/scenedraw.h: what a scene file (docs/scenes.md) adds to the picture: its balls, boxes
 // and half-spaces, its pinned points, and its bounding box at its own size, or none; and the
-// box and plane clipping that the course's picture uses too. drawScene (showCube.h) calls them,
+// box and plane clipping that the course's picture uses too. drawPicture (showCube.h) calls them,
 // so that the window and the headless frames show the same. The draw functions need a current
 // GL context; the geometry is plain arithmetic.
 //

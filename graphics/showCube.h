@@ -40,14 +40,14 @@ Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request
 // How the cube's surface is coloured; `c` in the viewer cycles through them.
 // Friction: each point in contact with a frictional obstacle, sticking or sliding
 // (app/contacts.h).
-enum class Coloring { Plain, Strain, Force, Friction };
-constexpr int kColoringCount = 4;
-const char* coloringName(Coloring coloring);
+enum class Colouring { Plain, Strain, Force, Friction };
+constexpr int kColouringKinds = 4;
+const char* colouringName(Colouring colouring);
 
 struct DrawOptions {
   bool wireframe = false;
   bool structural = false, shear = false, bend = false;  // springs drawn as lines
-  Coloring coloring = Coloring::Plain;
+  Colouring colouring = Colouring::Plain;
   // The value at the colour legend's end (strain, or newtons for force), held by the viewer's
   // `f`; 0: fitted to each frame's largest value.
   double colourScale = 0;
@@ -58,12 +58,12 @@ struct DrawOptions {
 // smooth-shaded surface (or its wireframe), the springs asked for (over the surface, never
 // half-hidden in it), the inclined plane clipped to the box, the legends of the springs and the
 // colouring where layoutLegends (layout.h) puts them, and the pull line when a point is pulled.
-void drawScene(const Model& model, const State& state, const Camera& camera,
-               const DrawOptions& options, int width, int height, const Pull* pull = nullptr);
+void drawPicture(const Model& model, const State& state, const Camera& camera,
+                 const DrawOptions& options, int width, int height, const Pull* pull = nullptr);
 
-// The colour legend's end value that drawScene fits to `state` (a round 1, 2 or 5 times a power
-// of ten at least its largest value); 0 for Coloring::Plain and Coloring::Friction (no scale).
-double fittedColourScale(const Model& model, const State& state, Coloring coloring);
+// The colour legend's end value that drawPicture fits to `state` (a round 1, 2 or 5 times a power
+// of ten at least its largest value); 0 for Colouring::Plain and Colouring::Friction (no scale).
+double fittedColourScale(const Model& model, const State& state, Colouring colouring);
 
 // Text in a small built-in bitmap font (upper case, digits, punctuation; lower case is drawn
 // as upper case), its top-left corner at pixel (x, y), `scale` pixels per font dot.

@@ -67,11 +67,11 @@ OverlayText overlayText(const Viewer& v) {
   if (v.saving)
     text.recording = textf("SAVING %d/%d INTO %s/", v.frames->written(), v.frames->maxFrames(),
                            v.frames->dir().c_str());
-  if (v.draw.coloring == Coloring::Friction)
+  if (v.draw.colouring == Colouring::Friction)
     text.colouring = "friction: sticking or sliding";
-  else if (v.draw.coloring != Coloring::Plain)
+  else if (v.draw.colouring != Colouring::Plain)
     text.colouring =
-        std::string(coloringName(v.draw.coloring)) +
+        std::string(colouringName(v.draw.colouring)) +
         (v.draw.colourScale > 0 ? " SCALE HELD (F FREES)" : " SCALE FITS EACH FRAME (F HOLDS)");
   if (v.help) text.help = windowKeys();
   text.standing = v.standing;
@@ -80,8 +80,9 @@ OverlayText overlayText(const Viewer& v) {
 }
 
 void drawOverlay(const Viewer& v) {
-  const OverlayLayout layout = layoutOverlay(
-      overlayText(v), v.width, v.height, v.draw.springKinds(), v.draw.coloring != Coloring::Plain);
+  const OverlayLayout layout =
+      layoutOverlay(overlayText(v), v.width, v.height, v.draw.springKinds(),
+                    v.draw.colouring != Colouring::Plain);
   // Dark panels behind the longer texts keep them readable over the box's white lines.
   for (const PixelRect& panel : {layout.help, layout.messages})
     if (!panel.empty()) drawPanel(panel, v.width, v.height, 0, 0, 0, kPanelAlpha);
@@ -203,7 +204,7 @@ void saveScreenshot(Viewer& v) {
 
 void display() {
   Viewer& v = viewer();
-  drawScene(v.model, v.state(), v.camera, v.draw, v.width, v.height, &v.pull);
+  drawPicture(v.model, v.state(), v.camera, v.draw, v.width, v.height, &v.pull);
   glGetDoublev(GL_MODELVIEW_MATRIX, v.modelview);
   glGetDoublev(GL_PROJECTION_MATRIX, v.projection);
   glGetIntegerv(GL_VIEWPORT, v.viewport);

@@ -33,22 +33,23 @@ void togglePause(Viewer& v) {
 }
 
 void toggleColourHold(Viewer& v) {
-  if (v.draw.coloring == Coloring::Plain) {
+  if (v.draw.colouring == Colouring::Plain) {
     v.say("f holds the scale of a coloured surface: c colours it first");
-  } else if (v.draw.coloring == Coloring::Friction) {
+  } else if (v.draw.colouring == Colouring::Friction) {
     v.say("the friction colouring has no scale to hold: its colours are states");
   } else if (v.draw.colourScale > 0) {
     v.draw.colourScale = 0;
     v.say("the colour scale fits each frame again");
   } else {
-    v.draw.colourScale = fittedColourScale(v.model, v.state(), v.draw.coloring);
+    v.draw.colourScale = fittedColourScale(v.model, v.state(), v.draw.colouring);
     v.say(textf("colour scale held at %g: a colour means the same value in every frame",
                 v.draw.colourScale));
   }
 }
 
 void nextColouring(Viewer& v) {
-  v.draw.coloring = static_cast<Coloring>((static_cast<int>(v.draw.coloring) + 1) % kColoringCount);
+  v.draw.colouring =
+      static_cast<Colouring>((static_cast<int>(v.draw.colouring) + 1) % kColouringKinds);
   v.draw.colourScale = 0;  // a held scale belongs to the colouring it was held for
 }
 

@@ -112,7 +112,7 @@ struct Viewer {
         camera(cameraFor(model, pictures.camera)),
         width(pictures.width),
         height(pictures.height) {
-    draw.coloring = static_cast<Coloring>(pictures.colouring);
+    draw.colouring = static_cast<Colouring>(pictures.colouring);
   }
 
   double time() const { return simulation.time(); }

@@ -110,57 +110,54 @@ FrictionState frictionState(const Obstacle& o, Vec3 p, Vec3 v) {
 
 namespace {
 
-// A 3x3 matrix, row-major, for the Jacobian's algebra.
-struct Mat3 {
-  double m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-};
-Mat3 outer(Vec3 a, Vec3 b) {
+// The Jacobian's algebra on 3x3 blocks (Block3, term.h: row-major).
+Block3 outer(Vec3 a, Vec3 b) {
   const double x[3] = {a.x, a.y, a.z}, y[3] = {b.x, b.y, b.z};
-  Mat3 r;
+  Block3 r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r.m[3 * i + j] = x[i] * y[j];
   return r;
 }
-Mat3 operator*(double s, Mat3 a) {
+Block3 operator*(double s, Block3 a) {
   for (double& e : a.m) e *= s;
   return a;
 }
-Mat3 operator+(Mat3 a, const Mat3& b) {
+Block3 operator+(Block3 a, const Block3& b) {
   for (int e = 0; e < 9; ++e) a.m[e] += b.m[e];
   return a;
 }
-Mat3 identity() {
-  Mat3 r;
+Block3 identity() {
+  Block3 r;
   r.m[0] = r.m[4] = r.m[8] = 1;
   return r;
 }
 // a^T M, as a vector.
-Vec3 leftTimes(Vec3 a, const Mat3& M) {
+Vec3 leftTimes(Vec3 a, const Block3& M) {
   return {a.x * M.m[0] + a.y * M.m[3] + a.z * M.m[6], a.x * M.m[1] + a.y * M.m[4] + a.z * M.m[7],
           a.x * M.m[2] + a.y * M.m[5] + a.z * M.m[8]};
 }
-Mat3 product(const Mat3& a, const Mat3& b) {
-  Mat3 r;
+Block3 product(const Block3& a, const Block3& b) {
+  Block3 r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) r.m[3 * i + j] += a.m[3 * i + k] * b.m[3 * k + j];
   return r;
 }
-void addTo(Block3* block, const Mat3& a) {
+void addTo(Block3* block, const Block3& a) {
   for (int e = 0; e < 9; ++e) block->m[e] += a.m[e];
 }
 
 // The derivatives of one penetration's force F = k depth n - d (v.n) n + F_t, where
 // F_t = -g(s) N t (obstacle.h), by the chain rule through depth, n and t. dn = dn/dp: zero for a
 // flat face, (I - n n^T) / r on a sphere of the point's distance r from the centre.
-void addPenetrationJacobian(const Obstacle& o, const Penetration& pen, Vec3 v, const Mat3& dn,
+void addPenetrationJacobian(const Obstacle& o, const Penetration& pen, Vec3 v, const Block3& dn,
                             Block3* dFdp, Block3* dFdv) {
   const double k = o.spring.k, d = o.spring.d;
   const Vec3 n = pen.normal;
   const double vn = dot(v, n);
-  const Mat3 nn = outer(n, n);
+  const Block3 nn = outer(n, n);
   // d(v.n)/dp = v^T dn; d(v.n) n/dp = n (v^T dn) + (v.n) dn.
-  const Mat3 dvnn = outer(n, leftTimes(v, dn)) + vn * dn;
+  const Block3 dvnn = outer(n, leftTimes(v, dn)) + vn * dn;
   addTo(dFdp, (-k) * nn + (k * pen.depth) * dn + (-d) * dvnn);  // d depth/dp = -n^T
   addTo(dFdv, (-d) * nn);
   const Friction& f = o.friction;
@@ -173,9 +170,9 @@ void addPenetrationJacobian(const Obstacle& o, const Penetration& pen, Vec3 v, c
   const double muSlope = -(f.muStatic - f.muDynamic) * decay / (kStribeckRatio * f.speed);
   const double g = mu / root, gSlope = muSlope / root - mu * s / (root * root * root);
   const Vec3 dPushDp = (-k) * n + (-d) * leftTimes(v, dn), dPushDv = (-d) * n;
-  const Mat3 dtDp = (-1.0) * dvnn, dtDv = identity() + (-1.0) * nn;
-  auto friction = [&](const Mat3& dtDx, Vec3 dPushDx) {
-    Mat3 out = (-push * g) * dtDx + (-g) * outer(t, dPushDx);
+  const Block3 dtDp = (-1.0) * dvnn, dtDv = identity() + (-1.0) * nn;
+  auto friction = [&](const Block3& dtDx, Vec3 dPushDx) {
+    Block3 out = (-push * g) * dtDx + (-g) * outer(t, dPushDx);
     if (s > 0) out = out + (-push * gSlope / s) * product(outer(t, t), dtDx);
     return out;
   };
@@ -191,7 +188,7 @@ void obstacleJacobian(const Obstacle& o, Vec3 p, Vec3 v, Block3* dFdp, Block3* d
   Penetration pens[3];
   const int count = penetrations(o, p, pens);
   for (int i = 0; i < count; ++i) {
-    Mat3 dn;
+    Block3 dn;
     const double r = o.radius - pens[i].depth;
     if (o.shape == ObstacleShape::Sphere && r > 0)
       dn = (1 / r) * (identity() + (-1.0) * outer(pens[i].normal, pens[i].normal));

@@ -97,11 +97,11 @@ TEST(Offscreen, ColouringsAndSpringsChangeThePicture) {
   OffscreenRenderer renderer(320, 240);
   Image plain = renderer.render(model, f.state, Camera{}, DrawOptions{});
   DrawOptions options;
-  for (Coloring coloring : {Coloring::Strain, Coloring::Force}) {
-    options.coloring = coloring;
+  for (Colouring colouring : {Colouring::Strain, Colouring::Force}) {
+    options.colouring = colouring;
     EXPECT_GT(meanAbsoluteDifference(plain, renderer.render(model, f.state, Camera{}, options)),
               0.5)
-        << coloringName(coloring);
+        << colouringName(colouring);
   }
   options = DrawOptions{};
   options.structural = options.shear = options.bend = true;
@@ -166,10 +166,10 @@ TEST(Offscreen, AHeldColourScaleIsTheLegendsWhateverTheState) {
   Model model = makeModel(f.world, f.state);
   OffscreenRenderer renderer(320, 240);
   DrawOptions options;
-  options.coloring = Coloring::Strain;
-  const double fitted = fittedColourScale(model, f.state, Coloring::Strain);
+  options.colouring = Colouring::Strain;
+  const double fitted = fittedColourScale(model, f.state, Colouring::Strain);
   ASSERT_GT(fitted, 0);
-  EXPECT_EQ(fittedColourScale(model, f.state, Coloring::Plain), 0);
+  EXPECT_EQ(fittedColourScale(model, f.state, Colouring::Plain), 0);
   const Image fit = renderer.render(model, f.state, Camera{}, options);
   options.colourScale = fitted;
   EXPECT_EQ(meanAbsoluteDifference(fit, renderer.render(model, f.state, Camera{}, options)), 0);
@@ -287,7 +287,7 @@ TEST(SceneDrawing, TheFrictionColouringShowsStickingGreenAndSlidingOrange) {
     Simulation run(model, f.state, f.run.integrator, f.run.dt);
     EXPECT_TRUE(run.advanceTo(0.5).ran());
     DrawOptions options;
-    options.coloring = Coloring::Friction;
+    options.colouring = Colouring::Friction;
     *out = &renderer->render(model, run.state(), cameraFor(model, CameraRequest{-90, 8, 3.5}),
                              options);
   };
