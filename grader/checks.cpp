@@ -21,22 +21,48 @@ const char* gradeName(Grade grade) {
   return "?";
 }
 
+namespace {
+
+// The checks whose function needs more than the probe, or a name.
+template <CheckResult (*check)(const std::string&)>
+CheckResult probeOnly(const std::string& probe, const GradingSetup&) {
+  return check(probe);
+}
+CheckResult structural(const std::string& probe, const GradingSetup&) {
+  return checkSprings(probe, "structural");
+}
+CheckResult shear(const std::string& probe, const GradingSetup&) {
+  return checkSprings(probe, "shear");
+}
+CheckResult bend(const std::string& probe, const GradingSetup&) {
+  return checkSprings(probe, "bend");
+}
+
+}  // namespace
+
 const std::vector<CheckInfo>& checkTable() {
   static const std::vector<CheckInfo> table = {
-      {"builds", "physics.cpp compiles and links with the course API"},
-      {"rest", "zero acceleration at the rest lattice, also moved and turned rigidly"},
-      {"structural", "structural springs: present, rest length 1/7, stiffness kElastic"},
-      {"shear", "shear springs (face and body diagonals): present, rest length, stiffness"},
-      {"bend", "bend springs: present, rest length 2/7, stiffness"},
-      {"dampers", "dampers along each spring, dElastic, the right sign"},
-      {"walls", "each of the six walls: rest length 0, kCollision, only beyond it, damping"},
-      {"plane", "the inclined plane: the positive side allowed, rest length 0, damping"},
-      {"field", "the force field: trilinear, node order, cells at the walls, R = 1"},
-      {"euler", "one Euler step is the course's Euler on its own accelerations"},
-      {"rk4", "one RK4 step is classic RK4 on its own accelerations; order 4"},
-      {"agreement", "2000 steps of the course worlds and of unseen worlds against this project"},
-      {"robust", "no NaN and no crash: thrown into a corner, collapsed"},
-      {"speed", "microseconds per RK4 step (reported, not graded)"},
+      {"builds", "physics.cpp compiles and links with the course API", nullptr},
+      {"rest", "zero acceleration at the rest lattice, also moved and turned rigidly",
+       probeOnly<checkRest>},
+      {"structural", "structural springs: present, rest length 1/7, stiffness kElastic",
+       structural},
+      {"shear", "shear springs (face and body diagonals): present, rest length, stiffness", shear},
+      {"bend", "bend springs: present, rest length 2/7, stiffness", bend},
+      {"dampers", "dampers along each spring, dElastic, the right sign", probeOnly<checkDampers>},
+      {"walls", "each of the six walls: rest length 0, kCollision, only beyond it, damping",
+       probeOnly<checkWalls>},
+      {"plane", "the inclined plane: the positive side allowed, rest length 0, damping",
+       probeOnly<checkPlane>},
+      {"field", "the force field: trilinear, node order, cells at the walls, R = 1",
+       probeOnly<checkField>},
+      {"euler", "one Euler step is the course's Euler on its own accelerations",
+       probeOnly<checkEuler>},
+      {"rk4", "one RK4 step is classic RK4 on its own accelerations; order 4", probeOnly<checkRk4>},
+      {"agreement", "2000 steps of the course worlds and of unseen worlds against this project",
+       checkAgreement},
+      {"robust", "no NaN and no crash: thrown into a corner, collapsed", probeOnly<checkRobust>},
+      {"speed", "microseconds per RK4 step (reported, not graded)", checkSpeed},
   };
   return table;
 }
@@ -49,17 +75,8 @@ bool isCheck(const std::string& name) {
 }
 
 CheckResult runCheck(const std::string& name, const std::string& probe, const GradingSetup& setup) {
-  if (name == "rest") return checkRest(probe);
-  if (name == "structural" || name == "shear" || name == "bend") return checkSprings(probe, name);
-  if (name == "dampers") return checkDampers(probe);
-  if (name == "walls") return checkWalls(probe);
-  if (name == "plane") return checkPlane(probe);
-  if (name == "field") return checkField(probe);
-  if (name == "euler") return checkEuler(probe);
-  if (name == "rk4") return checkRk4(probe);
-  if (name == "agreement") return checkAgreement(probe, setup);
-  if (name == "robust") return checkRobust(probe);
-  if (name == "speed") return checkSpeed(probe, setup);
+  for (const CheckInfo& check : checkTable())
+    if (name == check.name && check.run) return check.run(probe, setup);
   return failed(name, "no such check");
 }
 

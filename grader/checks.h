@@ -24,18 +24,21 @@ struct CheckResult {
   double figure = -1;              // speed: microseconds per RK4 step; -1 when none
 };
 
-struct CheckInfo {
-  const char* name;  // in test names: SUBMISSION/NAME
-  const char* what;  // one line for reports
-};
-// Every check, in the order they run; "builds" first.
-const std::vector<CheckInfo>& checkTable();
-bool isCheck(const std::string& name);
-
 struct GradingSetup {
   std::string worldDir;    // the course worlds (rotate.w, ...)
   std::uint64_t seed = 1;  // the unseen worlds of "agreement"
 };
+
+// A check, as the table carries it: its name, its line, and what runs it (null for "builds",
+// which the grader's build answers).
+struct CheckInfo {
+  const char* name;  // in test names: SUBMISSION/NAME
+  const char* what;  // one line for reports
+  CheckResult (*run)(const std::string& probePath, const GradingSetup& setup);
+};
+// Every check, in the order they run; "builds" first.
+const std::vector<CheckInfo>& checkTable();
+bool isCheck(const std::string& name);
 
 // Runs check `name` (not "builds") on the probe at `probePath`.
 CheckResult runCheck(const std::string& name, const std::string& probePath,

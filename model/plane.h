@@ -34,7 +34,7 @@ inline T planeValueAt(const Plane& plane, const T& x, const T& y, const T& z) {
 inline double planeValue(const Plane& plane, Vec3 p) { return planeValueAt(plane, p.x, p.y, p.z); }
 // The allowed side of the plane for a cube at positions p: the sign of the plane's value at
 // their centroid, +1 when the centroid is on the plane.
-double allowedSide(const Plane& plane, const double* p, int n);
+double allowedSide(const Plane& plane, const double* p, int points);
 // "x - y - z + 4 = 0" for (1, -1, -1, 4).
 std::string planeEquation(const Plane& plane);
 

@@ -25,9 +25,9 @@ namespace jello {
 struct Bounds {
   Vec3 lower, upper;
 };
-// The bounds of the n positions of p (a per-point array of n points). (With a NaN among them they
-// mean little; such a state is caught as diverged after the step.)
-Bounds boundsOf(const double* p, int n);
+// The bounds of the positions of p (a per-point array of `points` points). (With a NaN among them
+// they mean little; such a state is caught as diverged after the step.)
+Bounds boundsOf(const double* p, int points);
 
 // The points [begin, end) a call works on: begin a multiple of kRangeAlignment (so that the loops
 // 8 points at a time stay aligned; whole lattice rows in the course cube), end one too or the last

@@ -24,17 +24,20 @@ constexpr double kBoxHalfSize = 2.0;                                    // bound
 
 constexpr int pointIndex(int i, int j, int k) { return (i * kLatticeSize + j) * kLatticeSize + k; }
 
-// A per-point array (positions, velocities, forces) of a body of n points (body.h; the course
-// cube's n is kNumPoints) holds 3n doubles, structure of arrays: all x, then all y, then all z,
+// A per-point array (positions, velocities, forces) of a body of `points` points (body.h; the
+// course cube's are kNumPoints) holds 3 * points doubles, structure of arrays: all x, then all y,
+// then all z,
 // each in point order. Coordinate `axis` (0 x, 1 y, 2 z) of point q is element
-// coordIndex(q, axis, n). The force kernel's loops then run over contiguous, equally spaced
+// coordIndex(q, axis, points). The force kernel's loops then run over contiguous, equally spaced
 // doubles and vectorise.
-constexpr int coordIndex(int q, int axis, int n) { return axis * n + q; }
-inline Vec3 load(const double* a, int q, int n) { return {a[q], a[n + q], a[2 * n + q]}; }
-inline void store(double* a, int q, int n, Vec3 value) {
+constexpr int coordIndex(int q, int axis, int points) { return axis * points + q; }
+inline Vec3 load(const double* a, int q, int points) {
+  return {a[q], a[points + q], a[2 * points + q]};
+}
+inline void store(double* a, int q, int points, Vec3 value) {
   a[q] = value.x;
-  a[n + q] = value.y;
-  a[2 * n + q] = value.z;
+  a[points + q] = value.y;
+  a[2 * points + q] = value.z;
 }
 // The same on the course cube's arrays (kNumPoints points): the course's files, the grader.
 constexpr int coordIndex(int q, int axis) { return coordIndex(q, axis, kNumPoints); }
@@ -59,11 +62,11 @@ inline bool hasNormal(const Plane& plane) { return plane.a != 0 || plane.b != 0 
 struct ForceField {
   int resolution = 0;
   std::vector<double> forces;
-  Vec3 node(std::size_t n) const { return {forces[3 * n], forces[3 * n + 1], forces[3 * n + 2]}; }
-  void setNode(std::size_t n, Vec3 f) {
-    forces[3 * n] = f.x;
-    forces[3 * n + 1] = f.y;
-    forces[3 * n + 2] = f.z;
+  Vec3 node(std::size_t i) const { return {forces[3 * i], forces[3 * i + 1], forces[3 * i + 2]}; }
+  void setNode(std::size_t i, Vec3 f) {
+    forces[3 * i] = f.x;
+    forces[3 * i + 1] = f.y;
+    forces[3 * i + 2] = f.z;
   }
 };
 

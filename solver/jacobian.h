@@ -19,8 +19,8 @@ using Mat3 = Eigen::Matrix3d;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using BlockSlots = std::array<int, 9>;
 
-// 1 at each coordinate (coordIndex) of a pinned point, 0 elsewhere: 3n flags for n points.
-std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int n);
+// 1 at each coordinate (coordIndex) of a pinned point, 0 elsewhere: 3 flags a point.
+std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int points);
 
 // A term's block as an Eigen matrix.
 Mat3 toMatrix(const Block3& block);
