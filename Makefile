@@ -84,7 +84,7 @@ format-check:
 
 # The compiler's vectorisation report on the force terms: which loops became vector loops.
 vec-report:
-	@for f in forces/springs.cpp forces/walls.cpp forces/plane.cpp forces/field.cpp forces/term.cpp; do \
+	@for f in model/springs.cpp model/walls.cpp model/plane.cpp model/field.cpp model/term.cpp physics.cpp model/model.cpp; do \
 		$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
 		-c $$f -o /dev/null -fopt-info-vec-optimized 2>&1 | grep "^$$f.*loop vectorized" | sort -t: -k2 -n -u; done
 

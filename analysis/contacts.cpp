@@ -1,4 +1,4 @@
-// app/contacts.cpp: the points' friction states (contacts.h).
+// analysis/contacts.cpp: the points' friction states (contacts.h).
 
 #include "analysis/contacts.h"
 

@@ -1,4 +1,4 @@
-// app/contacts.h: which points of the jelly touch a scene's frictional obstacles, and whether
+// analysis/contacts.h: which points of the jelly touch a scene's frictional obstacles, and whether
 // each sticks or slides (the window's friction colouring, README: The viewer). No GL, so that
 // the classification is tested as numbers.
 #pragma once

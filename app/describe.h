@@ -1,5 +1,5 @@
 // describe.h: what a world is, in words a user reads (createWorld --describe). The recognition
-// of the course's force fields is the field term's (forces/field.h).
+// of the course's force fields is the field term's (model/field.h).
 #pragma once
 
 #include <string>

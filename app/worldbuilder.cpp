@@ -1,4 +1,4 @@
-// worldbuilder.cpp: recipes into worlds (the field through scene/fieldrecipe).
+// worldbuilder.cpp: recipes into worlds (the field through io/fieldrecipe).
 
 #include "app/worldbuilder.h"
 

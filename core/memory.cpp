@@ -18,7 +18,7 @@ namespace {
 constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
 constexpr std::uint64_t kFieldBytesPerNode = 3 * sizeof(double);  // a World's ForceField
 // A Model holds its own copy of the World (24) and the trilinear kernel's padded copy of the
-// field, 4 doubles a node (physics.h, Model::paddedField).
+// field, 4 doubles a node (model/field.h: the field term's padded nodes).
 constexpr std::uint64_t kModelBytesPerNode = kFieldBytesPerNode + 4 * sizeof(double);
 // Everything else a program allocates once a world is read, whatever its field: the springs,
 // the integrators' states, the stability analysis's dense 1536 x 1536 matrices (19 MB each).

@@ -1,4 +1,4 @@
-// libFuzzer target: an OBJ file's text read (scene/voxels.h) and, when accepted, made into
+// libFuzzer target: an OBJ file's text read (io/voxels.h) and, when accepted, made into
 // voxels at a size the input picks and cut to its largest piece. Aborts unless a refusal is one
 // line naming the file, an accepted mesh keeps the reader's promises (triangles, indices in
 // range, finite coordinates within kLargestMeshCoordinate), and a grid holds 1 to 47 voxels an

@@ -1,6 +1,6 @@
 // checkfield.cpp: the force field, isolated as the difference between the same positions in
 // the field and in a zero field of the same resolution; compared with this project's
-// interpolation (forces/field.h).
+// interpolation (model/field.h).
 #include <cmath>
 #include <random>
 

@@ -39,7 +39,7 @@ Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request
 
 // How the cube's surface is coloured; `c` in the viewer cycles through them.
 // Friction: each point in contact with a frictional obstacle, sticking or sliding
-// (app/contacts.h).
+// (analysis/contacts.h).
 enum class Colouring { Plain, Strain, Force, Friction };
 constexpr int kColouringKinds = 4;
 const char* colouringName(Colouring colouring);

@@ -1,4 +1,4 @@
-// scene/fieldrecipe.cpp: a force field from a recipe (fieldrecipe.h). Expressions are evaluated
+// io/fieldrecipe.cpp: a force field from a recipe (fieldrecipe.h). Expressions are evaluated
 // by muparser.
 
 #include "io/fieldrecipe.h"

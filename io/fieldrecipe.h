@@ -1,4 +1,4 @@
-// scene/fieldrecipe.h: a force field (world.h's ForceField, N at each node) made from a
+// io/fieldrecipe.h: a force field (world.h's ForceField, N at each node) made from a
 // recipe: uniform, a swirl, a radial field, "fx; fy; fz" expressions (muparser), or given.
 // createWorld's field options and a scene's [field] table both build through it.
 #pragma once

@@ -134,7 +134,7 @@ int wholeNumber(const Reader& r, const toml::node& node, const std::string& key,
 }
 
 // The body of [jelly]'s shape: a lattice (the course's cube when it is 8x8x8 at 1/7 m), or the
-// voxels of a ball or of a mesh (scene/voxels.h).
+// voxels of a ball or of a mesh (io/voxels.h).
 Body readShape(const Reader& r, const toml::table& t, const std::string& shape, double spacing) {
   const toml::node& at = *t.get("shape");
   if (shape == "lattice") {

@@ -1,4 +1,4 @@
-// scene/reader.h: the scene file reader (TOML, docs/scenes.md). A scene starts from a course world
+// io/scenereader.h: the scene file reader (TOML, docs/scenes.md). A scene starts from a course world
 // (its key `world`, a path relative to the scene file's folder) or from the defaults below, and
 // adds gravity, obstacles with friction, pinned points and a bounding box of any size.
 //

@@ -1,4 +1,4 @@
-// scene/voxels.cpp: OBJ meshes read with tinyobjloader, and meshes and balls made into voxels.
+// io/voxels.cpp: OBJ meshes read with tinyobjloader, and meshes and balls made into voxels.
 //
 // Inside or outside: a voxel is filled when a ray from its centre crosses the mesh an odd number
 // of times. The rays go up (+z), one vertical line through each column of voxel centres, so that

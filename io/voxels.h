@@ -1,4 +1,4 @@
-// scene/voxels.h: solid shapes as grids of cubic voxels, the raw material of a jelly body of any
+// io/voxels.h: solid shapes as grids of cubic voxels, the raw material of a jelly body of any
 // shape: a closed triangle mesh read from a Wavefront OBJ file (tinyobjloader), or a ball. The
 // body made from a grid (elsewhere) has a point at each corner of a filled voxel.
 //

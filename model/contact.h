@@ -1,4 +1,4 @@
-// forces/contact.h: the collision spring every obstacle (walls, plane) pushes back with.
+// model/contact.h: the collision spring every obstacle (walls, plane) pushes back with.
 //
 // Units: metres, seconds, newtons; k in N/m, d in N s/m. L points from the contact point (the
 // point's projection on the obstacle) to the point; the force is ON the point.

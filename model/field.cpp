@@ -1,4 +1,4 @@
-// forces/field.cpp: the force field: interpolation, its gradient, the kernel's fast paths, and
+// model/field.cpp: the force field: interpolation, its gradient, the kernel's fast paths, and
 // the recognition of the course's fields.
 
 #include "model/field.h"

@@ -1,4 +1,4 @@
-// forces/field.h: the world's force field, a point term: forces given on an R^3 grid of nodes
+// model/field.h: the world's force field, a point term: forces given on an R^3 grid of nodes
 // spanning the box, interpolated trilinearly inside it, zero outside (docs/world-format.md has
 // the node layout, docs/physics.md the interpolation).
 //

@@ -1,4 +1,4 @@
-// forces/gravity.cpp: a scene's gravity: force, energy and description.
+// model/gravity.cpp: a scene's gravity: force, energy and description.
 
 #include "model/gravity.h"
 

@@ -1,4 +1,4 @@
-// forces/gravity.h: a scene's gravity, a uniform acceleration g (m/s^2) on every point,
+// model/gravity.h: a scene's gravity, a uniform acceleration g (m/s^2) on every point,
 // everywhere (a course world fakes gravity with a uniform field, which acts inside the box only).
 // A point term: the force is mass * g, N.
 #pragma once

@@ -1,4 +1,4 @@
-// forces/obstacle.cpp: a scene's obstacles: penetrations, force, Jacobian, energy, description.
+// model/obstacle.cpp: a scene's obstacles: penetrations, force, Jacobian, energy, description.
 
 #include "model/obstacle.h"
 

@@ -1,6 +1,6 @@
-// forces/obstacle.h: a scene's static obstacles (scene files, docs/scenes.md): a sphere, an
+// model/obstacle.h: a scene's static obstacles (scene files, docs/scenes.md): a sphere, an
 // axis-aligned box, a half-space bounded by a plane, or the container box that holds the jelly.
-// Each pushes a point inside it out with the course's collision spring (forces/contact.h), from
+// Each pushes a point inside it out with the course's collision spring (model/contact.h), from
 // the nearest point of its surface, and holds it back with Coulomb friction. A point term.
 //
 // Units: metres, seconds, newtons; k in N/m, d in N s/m, friction speeds in m/s. A penetration's

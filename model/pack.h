@@ -1,4 +1,4 @@
-// forces/pack.h: eight doubles operated on together, the unit of work of the force kernels.
+// model/pack.h: eight doubles operated on together, the unit of work of the force kernels.
 //
 // A Pack is a lattice row's worth of doubles (kLatticeSize points along k): with AVX-512
 // (-march=native on a processor that has it) one 512-bit register, with AVX two 256-bit ones,

@@ -1,4 +1,4 @@
-// forces/plane.cpp: the inclined plane: force, reach test, Jacobian, energy and description.
+// model/plane.cpp: the inclined plane: force, reach test, Jacobian, energy and description.
 
 #include "model/plane.h"
 

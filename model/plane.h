@@ -1,8 +1,8 @@
-// forces/plane.h: the inclined plane a x + b y + c z + d = 0, a point term.
+// model/plane.h: the inclined plane a x + b y + c z + d = 0, a point term.
 //
 // Units: metres, seconds, newtons. The cube keeps to one side of the plane, the side holding
 // the centroid of its initial positions (docs/physics.md); a point strictly on the other side
-// is pulled back by a collision spring (forces/contact.h) from its projection on the plane.
+// is pulled back by a collision spring (model/contact.h) from its projection on the plane.
 // `side` is the sign of a x + b y + c z + d on the allowed side: +1 or -1.
 #pragma once
 
@@ -25,7 +25,7 @@ Plane normalisedPlane(const Plane& plane);
 // is not finite (the plane lies further from the origin than about 1e308 m).
 std::string planeProblem(const Plane& plane);
 // a*x + b*y + c*z + d at (x, y, z): the one place it is computed (positive on the normal's
-// side). T is a double, or a Pack of eight points' coordinates (forces/pack.h), which round
+// side). T is a double, or a Pack of eight points' coordinates (model/pack.h), which round
 // lane by lane as the doubles do.
 template <class T>
 inline T planeValueAt(const Plane& plane, const T& x, const T& y, const T& z) {

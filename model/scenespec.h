@@ -1,4 +1,4 @@
-// scene/spec.h: what a scene file (docs/scenes.md) adds to a course world: gravity, obstacles
+// model/scenespec.h: what a scene file (docs/scenes.md) adds to a course world: gravity, obstacles
 // with friction, pinned points and the bounding box's size. A course world has none of it, and
 // its .w format is unchanged; a scene is read once and shared by the world's copies.
 //

@@ -1,4 +1,4 @@
-// forces/springs.cpp: the lattice's springs: the spring list, the force kernel, Jacobian, energy
+// model/springs.cpp: the lattice's springs: the spring list, the force kernel, Jacobian, energy
 // and description.
 
 #include "model/springs.h"

@@ -1,4 +1,4 @@
-// forces/springs.h: the damped springs of the lattice (structural, shear, bend), a pair term.
+// model/springs.h: the damped springs of the lattice (structural, shear, bend), a pair term.
 //
 // Units: metres, seconds, newtons; k in N/m, d in N s/m. Sign convention: a spring's force is
 // the force ON its end a; its end b gets minus that. L = p_a - p_b points from b to a.

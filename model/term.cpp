@@ -1,4 +1,4 @@
-// forces/term.cpp: what the terms share: the positions' bounds and the description's printf.
+// model/term.cpp: what the terms share: the positions' bounds and the description's printf.
 
 #include "model/term.h"
 

@@ -1,8 +1,8 @@
-// forces/term.h: what every force term of the model is (docs/physics.md describes each).
+// model/term.h: what every force term of the model is (docs/physics.md describes each).
 //
 // A term owns everything about one kind of force: the force itself on every point, its
 // Jacobian blocks, the energy it stores, a test of whether it may act at all on a cube inside
-// a given box, and its lines in the scene's description. The scene (physics.h) is the list of
+// a given box, and its lines in the model's description. ForceTerms (model.h) is the list of
 // the terms a world needs; the force kernel, the Jacobian, the divergence guard and
 // `createWorld --describe` iterate that list and know no term by name.
 //

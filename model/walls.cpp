@@ -1,4 +1,4 @@
-// forces/walls.cpp: the box's walls: force, Jacobian, energy and description.
+// model/walls.cpp: the box's walls: force, Jacobian, energy and description.
 
 #include "model/walls.h"
 

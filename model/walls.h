@@ -1,7 +1,7 @@
-// forces/walls.h: the six walls of the box [-2,2]^3, a point term.
+// model/walls.h: the six walls of the box [-2,2]^3, a point term.
 //
 // Units: metres, seconds, newtons. A point strictly beyond a wall is pulled back by a collision
-// spring (forces/contact.h) from its projection on that wall.
+// spring (model/contact.h) from its projection on that wall.
 #pragma once
 
 #include "model/contact.h"

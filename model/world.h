@@ -70,7 +70,7 @@ struct ForceField {
   }
 };
 
-struct SceneSpec;  // scene/spec.h
+struct SceneSpec;  // model/scenespec.h
 
 // How a world is run: its integrator, its step and the steps per drawn frame. A world file or a
 // scene file says them, and the command line may override them (solver/run.h); a run passes them

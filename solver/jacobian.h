@@ -1,9 +1,9 @@
-// jacobian.h: the Jacobians of the scene's forces (physics.h) with respect to the positions and
-// the velocities, assembled from the terms' blocks (forces/term.h), for the implicit integrator
-// and for the stability analysis.
+// solver/jacobian.h: the Jacobians of a model's forces (model/model.h) with respect to the
+// positions and the velocities, assembled from the terms' blocks (model/term.h), for the implicit
+// integrator and for the stability analysis.
 //
 // Units: dF/dp in N/m, dF/dv in N s/m; the acceleration Jacobians divide by the mass. Signs
-// follow physics.h: each block is the derivative of the force ON a point.
+// follow model/term.h: each block is the derivative of the force ON a point.
 #pragma once
 
 #include <Eigen/Core>

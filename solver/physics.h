@@ -15,7 +15,7 @@ namespace jello {
 class Team;  // core/team.h
 
 // The force kernel: total force on every point (per-point arrays, see coordIndex) for
-// positions p and velocities v, with the user's pull when there is one: the scene's terms,
+// positions p and velocities v, with the user's pull when there is one: the model's terms,
 // each skipped when the positions are out of its reach. With a team, its two threads take a
 // range of points each (balancedSplitPoint), with the same result bit for bit.
 void computeForces(const Model& model, const double* p, const double* v, double* force,

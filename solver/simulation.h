@@ -99,8 +99,9 @@ class Simulation {
   Integrator integrator() const { return stepper_.integrator(); }
   const StepStats& stats() const { return stepper_.stats(); }  // the stepper's, since the start
   const Model& model() const { return model_; }
-  // Shares each force evaluation between `team`'s two threads (physics.h's derivative), with the
-  // same results; null: this thread alone (the default). The team must outlive its use here.
+  // Shares each force evaluation between `team`'s two threads (physics.h's derivative,
+  // solver/physics.h), with the same results; null: this thread alone (the default). The team must
+  // outlive its use here.
   void setTeam(Team* team) { team_ = team; }
 
  private:

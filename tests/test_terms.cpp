@@ -1,4 +1,4 @@
-// Every force term keeps the contract of forces/term.h, checked through the interface alone, so
+// Every force term keeps the contract of model/term.h, checked through the interface alone, so
 // that a new term is checked by these tests as soon as a scene holds it: its Jacobian blocks
 // against finite differences of its own force, its stored energy against its force, its reach
 // test against the force it exerts.

@@ -1,4 +1,4 @@
-// Voxels (scene/voxels.h): OBJ files read through tinyobjloader and their refusals, meshes and
+// Voxels (io/voxels.h): OBJ files read through tinyobjloader and their refusals, meshes and
 // balls made into voxels with counts worked out by hand, rays through edges and vertices, the
 // showcase's model, and the largest piece kept.
 #include <gtest/gtest.h>
