@@ -17,6 +17,7 @@
 #include <string>
 #include <system_error>
 
+#include "core/assert.h"
 #include "core/output.h"
 #include "io/worldparser.h"
 #include "model/model.h"
@@ -87,6 +88,8 @@ WorldFile readWorldFile(const std::string& path) {
 
 void formatWorldInBlocks(const World& w, const RunSettings& run, const State& state,
                          const std::function<void(std::string_view)>& write) {
+  // A world file holds the course cube: 512 positions and 512 velocities.
+  JELLO_ASSERT(state.points() == kNumPoints);
   std::string out;
   out.reserve(kFormatBlock + 256);
   auto flushFull = [&] {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -187,13 +188,17 @@ BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Mo
       {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
   const std::vector<double> forces = timeForces(kernels, file.state, fixed, figures.repeats);
   std::copy(forces.begin(), forces.end(), figures.forces);
-  // The world's text is parsed from memory: the file itself may be a pipe, read once already.
-  const std::string text = formatWorld(file);
-  figures.loading = medianSecondsPerCall({[&](long long count) {
-                                           for (long long i = 0; i < count; ++i)
-                                             parseWorld(text, run.worldPath);
-                                         }},
-                                         run.steps ? 1 : 0, figures.repeats)[0];
+  // The world's text is parsed from memory: the file itself may be a pipe, read once already. A
+  // world file holds the course cube only: a scene's other jelly has no such text to parse.
+  figures.loading = NAN;
+  if (bodyOf(file.world).courseLattice) {
+    const std::string text = formatWorld(file);
+    figures.loading = medianSecondsPerCall({[&](long long count) {
+                                             for (long long i = 0; i < count; ++i)
+                                               parseWorld(text, run.worldPath);
+                                           }},
+                                           run.steps ? 1 : 0, figures.repeats)[0];
+  }
   for (const IntegratorInfo& row : integratorTable())
     figures.rows.push_back(
         timeIntegrator(kernels, file.state, row, file.run, run, fixed, figures.repeats));
@@ -209,10 +214,14 @@ void printBench(const RunOptions& run, const WorldFile& file, const Model& speci
       "general = every term at every point\n\n",
       f.repeats, file.run.dt);
   const World& world = file.world;
-  std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", f.loading * 1e3,
-              world.field.resolution > 0
-                  ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
-                  : "no field");
+  if (std::isnan(f.loading))
+    std::printf("%-22s %14s  (a scene's jelly other than the course cube: no world file)\n",
+                "world parsing", "-");
+  else
+    std::printf("%-22s %11.2f ms  (%s)\n", "world parsing", f.loading * 1e3,
+                world.field.resolution > 0
+                    ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
+                    : "no field");
   const double forcesS = f.forces[0], forcesG = f.forces[1], forcesT = f.forces[2];
   std::printf("%-22s %14s %14s %9s %14s %9s\n", "", "specialised", "general", "speed-up",
               "two threads", "speed-up");

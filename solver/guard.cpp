@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/assert.h"
+
 namespace jello {
 
 namespace {
@@ -26,6 +28,8 @@ double mechanicalEnergy(const Model& model, const State& state) {
 }
 
 DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
+  JELLO_ASSERT(initial.points() == model.points());
+  JELLO_ASSERT(model.world.mass > 0);  // the reader's rule: the energy rate divides by it
   double largestForce = 0;
   for (const auto& term : model.forces.terms) largestForce += term->largestExternalForce();
   energyRate_ = largestForce * std::sqrt(model.points() / (2 * model.world.mass));

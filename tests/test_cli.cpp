@@ -52,6 +52,18 @@ TEST(Cli, BenchTimesEveryIntegratorWithBothKernels) {
   }
 }
 
+// A scene's jelly other than the course cube has no world file to time the parsing of (formatWorld
+// writes the course cube's 512 points: it read past a smaller body's arrays before).
+TEST(Cli, BenchOfASceneWithItsOwnJellyTimesNoWorldFile) {
+  test::CommandResult r =
+      runJello("--bench --steps 2 '" + std::string(JELLO_SOURCE_DIR) + "/scenes/bar.toml'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("world parsing                       -  (a scene's jelly"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("RK4"), std::string::npos) << r.out;
+}
+
 // The pictures' library is loaded for frames and only for them.
 TEST(Cli, AHeadlessRunLoadsNoGlLibrary) {
   const char* pictureLibraries[] = {"libGL.so", "libOSMesa.so", "libglut.so", "libX11.so",
