@@ -14,6 +14,13 @@ namespace {
 constexpr std::array<const char*, kIntegratorCount> kNames = {
     "EULER", "SYMPLECTIC", "MIDPOINT", "VERLET", "RK4", "RK45", "IMPLICIT"};
 
+constexpr bool everyIntegratorNamed() {
+  for (const char* name : kNames)
+    if (!name) return false;
+  return true;
+}
+static_assert(everyIntegratorNamed(), "a name for every enumerator of Integrator, in its order");
+
 }  // namespace
 
 const char* integratorName(Integrator integrator) {
