@@ -142,6 +142,7 @@ void stepEuler(StepWork& w, const OdeSystem& system, std::vector<double>& y, dou
 // Semi-implicit Euler: the velocities first, then the positions with the new velocities.
 void stepSymplectic(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   const std::size_t half = y.size() / 2;
+  JELLO_ASSERT(y.size() == 2 * half);  // y = [p; v], taken in halves
   std::vector<double>& k1 = w.k[0];
   evaluate(w, system, y, k1);
   for (std::size_t i = 0; i < half; ++i) y[half + i] += dt * k1[half + i];
@@ -163,6 +164,7 @@ void stepMidpoint(StepWork& w, const OdeSystem& system, std::vector<double>& y, 
 // symplectic velocity Verlet, and with them it stays second order.
 void stepVerlet(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   const std::size_t half = y.size() / 2;
+  JELLO_ASSERT(y.size() == 2 * half);  // y = [p; v], taken in halves
   std::vector<double>&k1 = w.k[0], &k2 = w.k[1];
   evaluate(w, system, y, k1);
   for (std::size_t i = 0; i < half; ++i) {
@@ -380,6 +382,7 @@ double largestOf(const std::vector<double>& velocity, std::size_t half) {
 void stepImplicit(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   if (!system.newtonMatrix) throw std::logic_error("IMPLICIT needs the Jacobian of the system");
   const std::size_t half = y.size() / 2;
+  JELLO_ASSERT(y.size() == 2 * half);      // y = [p; v], taken in halves
   std::vector<double>& velocity = w.next;  // the Newton iterate v'
   w.residual.resize(static_cast<Eigen::Index>(half));
   double residual = firstIterate(w, system, y, dt);
@@ -473,7 +476,6 @@ const StepStats& Stepper::stats() const { return work_->stats; }
 
 void Stepper::step(const OdeSystem& system, std::vector<double>& y, double dt) {
   const std::size_t n = y.size();
-  JELLO_ASSERT(n % 2 == 0);  // y = [p; v]: the integrators that split it take halves
   for (auto& k : work_->k) sized(k, n);
   sized(work_->temp, n);
   sized(work_->next, n);
