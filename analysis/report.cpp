@@ -17,9 +17,7 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "analysis/reportstudy.h"
 #include "analysis/runqueue.h"

@@ -10,12 +10,9 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "analysis/reportstudy.h"
-#include "analysis/runqueue.h"
 #include "analysis/stability.h"
 #include "core/output.h"
 #include "core/plot.h"

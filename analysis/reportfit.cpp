@@ -10,16 +10,11 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "analysis/reportstudy.h"
-#include "analysis/runqueue.h"
 #include "analysis/stability.h"
 #include "core/output.h"
-#include "core/plot.h"
-#include "core/progress.h"
 #include "io/scenereader.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"

@@ -7,7 +7,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -17,18 +16,15 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
-#include "analysis/spectrum.h"
 #include "core/output.h"
 #include "core/plot.h"
 #include "core/progress.h"
 #include "model/scenespec.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
-#include "solver/jacobian.h"
 #include "solver/simulation.h"
 
 namespace jello {

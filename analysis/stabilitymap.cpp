@@ -6,21 +6,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <fstream>
-#include <future>
 #include <limits>
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
-#include "analysis/spectrum.h"
 #include "analysis/stability.h"
 #include "core/output.h"
 #include "core/plot.h"
@@ -28,7 +24,6 @@
 #include "model/scenespec.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
-#include "solver/jacobian.h"
 #include "solver/simulation.h"
 
 namespace jello {
