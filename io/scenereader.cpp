@@ -48,8 +48,7 @@ WorldFile baseWorld(const Reader& r, const toml::table& root) {
   if (!node) return defaultWorld();
   const std::optional<std::string> path = node->value<std::string>();
   if (!path || path->empty()) r.fail(*node, "world", "expected the path of a course world (.w)");
-  const std::string full =
-      (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+  const std::string full = r.pathFromScene(*path);
   try {
     return readWorldFile(full);
   } catch (const InputError& e) {
@@ -160,8 +159,7 @@ Body readShape(const Reader& r, const toml::table& t, const std::string& shape, 
     const std::optional<std::string> path = node ? node->value<std::string>() : std::nullopt;
     if (!node) r.fail(at, "jelly.mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
     if (!path || path->empty()) r.fail(*node, "jelly.mesh", "expected the path of an OBJ file");
-    const std::string full =
-        (*path)[0] == '/' || r.folder().empty() ? *path : r.folder() + "/" + *path;
+    const std::string full = r.pathFromScene(*path);
     TriangleMesh mesh;
     if (!readObjMesh(full, &mesh, &why) || !voxeliseMesh(mesh, spacing, &grid, &why))
       r.fail(*node, "jelly.mesh", why);

@@ -120,7 +120,11 @@ class Reader {
   }
 
   const std::string& name() const { return name_; }
-  const std::string& folder() const { return folder_; }
+  // A path the scene file names (a world, a model): absolute as it is, else relative to the
+  // scene file's folder (docs/scenes.md).
+  std::string pathFromScene(const std::string& path) const {
+    return path.empty() || path[0] == '/' || folder_.empty() ? path : folder_ + "/" + path;
+  }
 
  public:
   static std::string textOf(double value) {
