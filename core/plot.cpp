@@ -3,6 +3,8 @@
 #include "core/plot.h"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,14 +26,21 @@ int runGnuplot(const std::string& dir, const std::string& script, const std::str
   const std::string setOutput = "png='" + output + "'";  // output is our own temporary name
   int told[2];
   if (::pipe2(told, O_CLOEXEC) != 0) return -1;
+  // Signals wait until the child is remembered: one arriving between the fork and
+  // rememberChild would end us and leave gnuplot to write its picture after us.
+  sigset_t every, before;
+  ::sigfillset(&every);
+  ::pthread_sigmask(SIG_BLOCK, &every, &before);
   pid_t child = ::fork();
   if (child < 0) {
     *startError = errno;
+    ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
     ::close(told[0]);
     ::close(told[1]);
     return -1;
   }
   if (child == 0) {
+    ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
     ::close(told[0]);
     int quiet = ::open("/dev/null", O_RDWR);
     if (quiet >= 0) {
@@ -48,6 +57,7 @@ int runGnuplot(const std::string& dir, const std::string& script, const std::str
     ::_exit(kExecFailed);
   }
   rememberChild(child);  // killed with us by a signal: it would write its picture after us
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
   ::close(told[1]);
   *startError = 0;
   while (::read(told[0], startError, sizeof *startError) < 0 && errno == EINTR) {
