@@ -5,6 +5,8 @@
 
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -174,8 +176,30 @@ void removeOutputs(const std::string& dir, const std::vector<std::string>& names
   }
 }
 
+namespace {
+
+// Signals wait while it lives: a temporary file made and remembered in one step, so that a
+// signal cannot end the program between the two and leave the file behind.
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t every;
+    ::sigfillset(&every);
+    ::pthread_sigmask(SIG_BLOCK, &every, &before_);
+  }
+  ~SignalsHeld() { ::pthread_sigmask(SIG_SETMASK, &before_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t before_;
+};
+
+}  // namespace
+
 std::string makeTemporary(const std::string& dir, const std::string& suffix) {
   std::string temporary = temporaryTemplate(dir, suffix);
+  const SignalsHeld held;
   int fd = ::mkstemps(temporary.data(), static_cast<int>(suffix.size()));
   if (fd < 0) throw OutputError(withError(dir, "cannot write", errno));
   rememberTemporary(temporary);
@@ -207,9 +231,13 @@ void writeFileWhole(const std::string& path, const std::function<void(std::FILE*
   std::string why = whyNotWritable(path, existing);
   if (!why.empty()) throw OutputError(path + ": " + why);
   std::string temporary = temporaryTemplate(folderOf(path), "");
-  int fd = ::mkstemp(temporary.data());
+  int fd = -1;
+  {
+    const SignalsHeld held;
+    fd = ::mkstemp(temporary.data());
+    if (fd >= 0) rememberTemporary(temporary);
+  }
   if (fd < 0) throw OutputError(withError(path, "cannot write", errno));
-  rememberTemporary(temporary);
   std::FILE* file = ::fdopen(fd, "wb");
   if (!file) {
     int error = errno;

@@ -1,6 +1,6 @@
-// io/scenereader.h: the scene file reader (TOML, docs/scenes.md). A scene starts from a course world
-// (its key `world`, a path relative to the scene file's folder) or from the defaults below, and
-// adds gravity, obstacles with friction, pinned points and a bounding box of any size.
+// io/scenereader.h: the scene file reader (TOML, docs/scenes.md). A scene starts from a course
+// world (its key `world`, a path relative to the scene file's folder) or from the defaults below,
+// and adds gravity, obstacles with friction, pinned points and a bounding box of any size.
 //
 // Every key is checked: an unknown key, a value of the wrong type and an impossible value are
 // refused with one line "FILE:LINE: what (key)", as a malformed world file is.
