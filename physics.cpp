@@ -97,11 +97,12 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
   const double* v = y + 3 * n;
   double* a = dydt + 3 * n;
   computeForcesOn(model, points, p, v, reach, a, pull, springForce);
-  const double mass = model.world.mass;
+  const double* mass = model.pointMass.data();
+  JELLO_ASSERT(model.pointMass.size() == std::size_t(n));
   for (int axis = 0; axis < 3; ++axis) {
     const int first = axis * n + points.begin, end = axis * n + points.end;
     std::copy(v + first, v + end, dydt + first);
-    for (int c = first; c < end; ++c) a[c] /= mass;
+    for (int c = first, q = points.begin; c < end; ++c, ++q) a[c] /= mass[q];
   }
   // A pinned point neither moves nor accelerates: every integrator keeps it exactly where it is.
   for (int q : model.pinned)

@@ -24,6 +24,9 @@ namespace {
 
 constexpr float kBackground[3] = {0.5f, 0.5f, 0.5f};
 constexpr float kJelly[3] = {0.86f, 0.18f, 0.24f};
+// The plain colouring of a scene's jellies, in turn (the first is the course's jelly red).
+constexpr float kJellies[6][3] = {{0.86f, 0.18f, 0.24f}, {0.2f, 0.62f, 0.25f}, {0.95f, 0.62f, 0.1f},
+                                  {0.2f, 0.42f, 0.85f},  {0.62f, 0.3f, 0.75f}, {0.1f, 0.7f, 0.7f}};
 constexpr double kNear = 0.05, kFar = 100.0;
 
 // The spring kinds' line colours, shown by their legend too.
@@ -128,7 +131,15 @@ SurfaceColours coloursFor(const Model& model, const State& state, Colouring colo
   SurfaceColours out;
   const int n = model.points();
   out.color.assign(n, Vec3{kJelly[0], kJelly[1], kJelly[2]});
-  if (colouring == Colouring::Plain) return out;
+  if (colouring == Colouring::Plain) {
+    const Body& body = model.body();
+    if (body.joined())
+      for (int q = 0; q < n; ++q) {
+        const float* c = kJellies[body.partOf(q) % 6];
+        out.color[q] = {c[0], c[1], c[2]};
+      }
+    return out;
+  }
   if (colouring == Colouring::Friction) {
     out.frictionStates = true;
     out.title = "FRICTION";

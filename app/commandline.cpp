@@ -89,10 +89,12 @@ namespace {
 
 // The values of the options that are checked or converted after parsing, and which were given.
 struct Given {
-  std::string integrator, dump, kernel, size, integrators, exportFormat, camera, colouring;
+  std::string integrator, dump, saveState, kernel, size, integrators, exportFormat, camera,
+      colouring;
   long long steps = 0;
   double time = 0, dt = 0;
   int n = 0;
+  CLI::Option* saveStateOption = nullptr;
   CLI::Option *stepsOption, *timeOption, *integratorOption, *dtOption, *nOption, *dumpOption,
       *kernelOption;
   CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
@@ -130,6 +132,12 @@ void addRunOptions(CLI::App& app, JelloCommand* c, Given* g) {
              "--dump", g->dump,
              "write the final state as a world file (creates FILE, or replaces a regular file "
              "FILE; never the world being run)")
+          ->check(kNonEmpty);
+  g->saveStateOption =
+      app.add_option("--save-state", g->saveState,
+                     "write every body's final points (positions, velocities) as a state file, "
+                     "CSV, that a scene's state = \"FILE\" starts from (creates FILE, or "
+                     "replaces a regular file FILE)")
           ->check(kNonEmpty);
   g->kernelOption =
       app.add_option(
@@ -263,6 +271,8 @@ Outcome chooseMode(const Given& g, JelloCommand* c) {
     return refuse(
         "--dump goes with a run (headless or the window), not with --check, --report "
         "or --bench");
+  if (*g.saveStateOption && analysis)
+    return refuse("--save-state goes with a headless run, not with --check, --report or --bench");
   if (*g.framesOption && (*g.checkOption || *g.benchOption))
     return refuse("--frames goes with a run (headless or the window), not with --check or --bench");
   if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) > 1)
@@ -321,6 +331,7 @@ Outcome readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.dtOption) run.dt = g.dt;
   if (*g.nOption) run.n = g.n;
   if (*g.dumpOption) run.dumpPath = g.dump;
+  if (*g.saveStateOption) run.saveStatePath = g.saveState;
   run.worldDefaulted = g.worldOption->count() == 0;
   c->framesGiven = g.framesOption->count() > 0;
   if (*g.exportFormatOption && !*g.exportOption)

@@ -58,7 +58,12 @@ std::string objText(const Body& body, const double* positions, const MeshStamp& 
   for (int q : body.surfacePoints) appendVector(&out, "v ", load(positions, q, n));
   for (int q : body.surfacePoints) appendVector(&out, "vn ", normals[q]);
   const std::vector<int>& vertexOf = body.surfaceVertexOf;
+  int part = -1;  // several jellies: an object each, its faces after its name
   for (const Triangle& t : body.surface) {
+    if (body.joined() && body.partOf(t[0]) != part) {
+      part = body.partOf(t[0]);
+      out += "o jelly-" + std::to_string(part + 1) + "\n";
+    }
     out += "f";
     for (int q : t) {
       const std::string v = std::to_string(vertexOf[q] + 1);  // OBJ counts from 1

@@ -16,6 +16,7 @@
 #include "core/output.h"
 #include "core/progress.h"
 #include "io/scenereader.h"
+#include "io/statefile.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -184,8 +185,13 @@ std::string whyNotDumpable(const std::string& dumpPath, const std::string& world
 
 namespace {
 
-// Whether --dump may write its file (whyNotDumpable) and the world is one a world file holds.
+// Whether --save-state and --dump may write their files (whyNotDumpable), and the world is one a
+// world file holds.
 Outcome checkDump(const RunOptions& options, const World& world) {
+  if (options.saveStatePath)
+    if (const std::string why = whyNotDumpable(*options.saveStatePath, options.worldPath);
+        !why.empty())
+      return failed("--save-state " + *options.saveStatePath + ": " + why);
   if (!options.dumpPath) return succeeded();
   // A course world file holds the 8x8x8 cube and nothing else.
   if (!bodyOf(world).courseLattice)
@@ -213,6 +219,19 @@ Outcome writeDump(const std::string& path, const World& world, const RunSettings
                "obstacles, pins or bounds; a scene with world = \"" +
                path + "\" and those keys continues from it");
   return succeeded();
+}
+
+// --save-state FILE and --dump FILE: the run's last state.
+Outcome writeFinalState(const RunOptions& options, const Model& model, const RunSettings& run,
+                        const State& state) {
+  if (options.saveStatePath) {
+    try {
+      writeStateFile(*options.saveStatePath, model.body(), state);
+    } catch (const std::exception& e) {
+      return failed(e.what());
+    }
+  }
+  return options.dumpPath ? writeDump(*options.dumpPath, model.world, run, state) : succeeded();
 }
 
 }  // namespace
@@ -268,8 +287,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (frames && !frames->wantsMore() && lastFrame < steps)
     printError(frameLimitNote(*frames, lastFrame * simulation.dt(), steps * simulation.dt()));
 
-  return options.dumpPath ? writeDump(*options.dumpPath, world, file.run, simulation.state())
-                          : succeeded();
+  return writeFinalState(options, model, file.run, simulation.state());
 }
 
 }  // namespace jello

@@ -14,7 +14,9 @@
 
 #include "core/readfile.h"
 #include "io/fieldrecipe.h"
+#include "io/jellyreader.h"
 #include "io/scenetable.h"
+#include "io/statefile.h"
 #include "io/voxels.h"
 #include "model/scenespec.h"
 
@@ -118,137 +120,6 @@ void readField(const Reader& r, const toml::table& root, ForceField* field) {
     *field = buildField(recipe);
   } catch (const InputError& e) {
     r.fail(node, std::string("field.") + key, e.what());
-  }
-}
-
-// A whole number in [lowest, highest].
-int wholeNumber(const Reader& r, const toml::node& node, const std::string& key, int lowest,
-                int highest) {
-  const std::optional<std::int64_t> value = node.value<std::int64_t>();
-  if (!node.is_integer() || !value || *value < lowest || *value > highest)
-    r.fail(node, key,
-           "expected a whole number from " + std::to_string(lowest) + " to " +
-               std::to_string(highest));
-  return static_cast<int>(*value);
-}
-
-// The body of [jelly]'s shape: a lattice (the course's cube when it is 8x8x8 at 1/7 m), or the
-// voxels of a ball or of a mesh (io/voxels.h).
-Body readShape(const Reader& r, const toml::table& t, const std::string& shape, double spacing) {
-  const toml::node& at = *t.get("shape");
-  if (shape == "lattice") {
-    const toml::node* size = t.get("size");
-    if (!size) r.fail(at, "jelly.size", "a lattice needs its size = [nx, ny, nz]");
-    const toml::array* array = size->as_array();
-    if (!array || array->size() != 3) r.fail(*size, "jelly.size", "expected [nx, ny, nz]");
-    int n[3];
-    for (int i = 0; i < 3; ++i)
-      n[i] = wholeNumber(r, *array->get(i), "jelly.size", 2, kMostBodyPoints);
-    return latticeBody(n[0], n[1], n[2], spacing);
-  }
-  VoxelGrid grid;
-  std::string why, what;
-  if (shape == "sphere") {
-    const std::optional<double> radius = r.number(t, "jelly.", "radius", 0, true);
-    if (!radius) r.fail(at, "jelly.radius", "a sphere needs its radius (m)");
-    if (!voxeliseSphere(*radius, spacing, &grid, &why))
-      r.fail(*t.get("radius"), "jelly.radius", why);
-    what = "a ball of radius " + Reader::textOf(*radius) + " m";
-  } else if (shape == "mesh") {
-    const toml::node* node = t.get("mesh");
-    const std::optional<std::string> path = node ? node->value<std::string>() : std::nullopt;
-    if (!node) r.fail(at, "jelly.mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
-    if (!path || path->empty()) r.fail(*node, "jelly.mesh", "expected the path of an OBJ file");
-    const std::string full = r.pathFromScene(*path);
-    TriangleMesh mesh;
-    if (!readObjMesh(full, &mesh, &why) || !voxeliseMesh(mesh, spacing, &grid, &why))
-      r.fail(*node, "jelly.mesh", why);
-    keepLargestPiece(&grid);
-    what = "the voxels of " + *path;
-  } else {
-    r.fail(at, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
-  }
-  return voxelBody(grid, spacing, what);  // where the voxels lie is the body's placement's
-}
-
-// The jelly's body when [jelly] gives a shape, or null (the course cube). Its spacing is the
-// voxels' edge: 1/7 m, the course's, unless given.
-std::shared_ptr<const Body> readBody(const Reader& r, const toml::table& t) {
-  const toml::node* node = t.get("shape");
-  for (const char* key : {"size", "spacing", "radius", "mesh"})
-    if (!node && t.get(key))
-      r.fail(*t.get(key), std::string("jelly.") + key,
-             "give the jelly's shape (\"lattice\", \"sphere\" or \"mesh\") with it");
-  if (!node) return nullptr;
-  const std::optional<std::string> shape = node->value<std::string>();
-  if (!shape) r.fail(*node, "jelly.shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
-  for (const auto& [key, owner] :
-       {std::pair{"size", "lattice"}, {"radius", "sphere"}, {"mesh", "mesh"}})
-    if (t.get(key) && *shape != owner)
-      r.fail(*t.get(key), std::string("jelly.") + key,
-             "belongs to shape = \"" + std::string(owner) + "\", not \"" + *shape + "\"");
-  const double spacing =
-      r.number(t, "jelly.", "spacing", kSmallestSpacing, false).value_or(kRestSpacing);
-  if (spacing > kLargestSpacing)
-    r.fail(*t.get("spacing"), "jelly.spacing",
-           "must be at most " + Reader::textOf(kLargestSpacing));
-  return std::make_shared<Body>(readShape(r, t, *shape, spacing));
-}
-
-// A stiffness or damping: one number for every kind of spring, or a table by kind
-// ({structural = ..., shear = ..., bend = ...}; a kind left out keeps *all, the world's).
-void readByKind(const Reader& r, const toml::table& t, const char* key, double* all,
-                std::array<double, kSpringKinds>* byKind, bool* perKind) {
-  const toml::node* node = t.get(key);
-  if (!node) return;
-  const std::string path = std::string("jelly.") + key;
-  if (const toml::table* kinds = node->as_table()) {
-    r.onlyKeys(*kinds, path + ".", {"structural", "shear", "bend"});
-    for (int kind = 0; kind < kSpringKinds; ++kind)
-      if (auto v = r.number(*kinds, path + ".", springKindName(SpringKind(kind)), 0))
-        (*byKind)[kind] = *v;
-    *perKind = true;
-    return;
-  }
-  *all = *r.number(t, "jelly.", key, 0);
-  byKind->fill(*all);
-}
-
-// The jelly's rest placement: a shaped body centred on the origin (the middle of its grid).
-State placedBody(const Body& body) {
-  const int n = body.count();
-  State state(n);
-  const Vec3 middle =
-      0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
-  for (int q = 0; q < n; ++q) store(state.p(), q, n, body.restPosition(q) - middle);
-  return state;
-}
-
-void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneSpec* spec) {
-  const toml::table* t = r.table(root, "", "jelly");
-  if (!t) return;
-  r.onlyKeys(*t, "jelly.",
-             {"mass", "total_mass", "stiffness", "damping", "offset", "velocity", "shape", "size",
-              "spacing", "radius", "mesh"});
-  World& w = file->world;
-  spec->body = readBody(r, *t);
-  if (spec->body) file->state = placedBody(*spec->body);
-  const int n = file->state.points();
-  if (t->get("mass") && t->get("total_mass"))
-    r.fail(*t->get("total_mass"), "jelly.total_mass",
-           "give mass (per point) or total_mass, not both");
-  if (auto m = r.number(*t, "jelly.", "mass", 0, true)) w.mass = *m;
-  if (auto m = r.number(*t, "jelly.", "total_mass", 0, true)) w.mass = *m / n;
-  SpringConstants springs = SpringConstants::same(w.kElastic, w.dElastic);
-  bool perKind = false;
-  readByKind(r, *t, "stiffness", &w.kElastic, &springs.k, &perKind);
-  readByKind(r, *t, "damping", &w.dElastic, &springs.d, &perKind);
-  if (perKind) spec->springs = springs;
-  const Vec3 offset = r.vector(*t, "jelly.", "offset").value_or(Vec3{});
-  const std::optional<Vec3> velocity = r.vector(*t, "jelly.", "velocity");
-  for (int q = 0; q < n; ++q) {
-    store(file->state.p(), q, n, load(file->state.p(), q, n) + offset);
-    if (velocity) store(file->state.v(), q, n, *velocity);
   }
 }
 
@@ -374,34 +245,56 @@ std::pair<int, int> indexRange(const Reader& r, const toml::table& t, const std:
   return {static_cast<int>(*a), static_cast<int>(*b)};
 }
 
+// The jelly a pin names (`jelly`, from 1; the first by default, or every one for a region
+// without it): its points are [first, end) of the body, its grid `grid`.
+struct PinTarget {
+  const Body* grid;
+  int first, end;
+};
+PinTarget pinTarget(const Reader& r, const toml::table& t, const std::string& path,
+                    const Body& body, bool region) {
+  const toml::node* node = t.get("jelly");
+  const int jellies = body.joined() ? static_cast<int>(body.parts.size()) : 1;
+  if (!node && (region || !body.joined())) return {&body, 0, body.count()};
+  const std::optional<std::int64_t> value = node ? node->value<std::int64_t>() : 1;
+  if (node && (!node->is_integer() || !value || *value < 1 || *value > jellies))
+    r.fail(*node, path + "jelly", "expected a whole number from 1 to " + std::to_string(jellies));
+  if (!body.joined()) return {&body, 0, body.count()};
+  const int part = static_cast<int>(*value) - 1;
+  return {body.parts[part].get(), body.partFirst[part], body.partFirst[part + 1]};
+}
+
 void readPins(const Reader& r, const toml::table& root, const Body& body, const State& state,
               SceneSpec* spec) {
   const int n = body.count();
   std::vector<char> pinned(n, 0);
   r.tables(root, "pin", [&](const toml::table& t, const std::string& path) {
-    r.onlyKeys(t, path, {"i", "j", "k", "lower", "upper"});
+    r.onlyKeys(t, path, {"i", "j", "k", "lower", "upper", "jelly"});
     const bool region = t.get("lower") || t.get("upper");
     if (region && (t.get("i") || t.get("j") || t.get("k")))
       r.fail(t, path + "lower",
              "give lattice ranges (i, j, k) or a region (lower, upper), not both");
     int count = 0;
+    const PinTarget target = pinTarget(r, t, path, body, region);
     if (region) {
       const Vec3 lower = r.vector(t, path, "lower").value_or(Vec3{-INFINITY, -INFINITY, -INFINITY});
       const Vec3 upper = r.vector(t, path, "upper").value_or(Vec3{INFINITY, INFINITY, INFINITY});
-      for (int q = 0; q < n; ++q) {
+      for (int q = target.first; q < target.end; ++q) {
         const Vec3 p = load(state.p(), q, n);
         const bool inside = p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
                             p.z >= lower.z && p.z <= upper.z;
         if (inside) pinned[q] = 1, ++count;
       }
     } else {
-      const auto is = indexRange(r, t, path, "i", body.nx),
-                 js = indexRange(r, t, path, "j", body.ny),
-                 ks = indexRange(r, t, path, "k", body.nz);
+      const Body& grid = *target.grid;
+      const auto is = indexRange(r, t, path, "i", grid.nx),
+                 js = indexRange(r, t, path, "j", grid.ny),
+                 ks = indexRange(r, t, path, "k", grid.nz);
       for (int i = is.first; i <= is.second; ++i)
         for (int j = js.first; j <= js.second; ++j)
           for (int k = ks.first; k <= ks.second; ++k)
-            if (const int q = body.pointAtIndex(i, j, k); q >= 0) pinned[q] = 1, ++count;
+            if (const int q = grid.pointAtIndex(i, j, k); q >= 0)
+              pinned[target.first + q] = 1, ++count;
     }
     if (count == 0) r.fail(t, path.substr(0, path.size() - 1), "pins no point");
   });
@@ -458,24 +351,53 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   const Reader r(name, folder);
   r.onlyKeys(root, "",
              {"world", "integrator", "dt", "n", "gravity", "field", "jelly", "contact", "bounds",
-              "sphere", "box", "plane", "pin"});
+              "sphere", "box", "plane", "pin", "state"});
   WorldFile file = baseWorld(r, root);
   World& w = file.world;
   auto spec = std::make_shared<SceneSpec>();
   readRun(r, root, &file.run);
   readJelly(r, root, &file, spec.get());
   readField(r, root, &w.field);
-  if (const toml::table* contact = r.table(root, "", "contact")) {
-    r.onlyKeys(*contact, "contact.", {"stiffness", "damping"});
+  const toml::table* contact = r.table(root, "", "contact");
+  if (contact) {
+    r.onlyKeys(*contact, "contact.",
+               {"stiffness", "damping", "distance", "friction_static", "friction_dynamic",
+                "friction_speed"});
     const ContactSpring spring = readSpring(r, *contact, "contact.", {w.kCollision, w.dCollision});
     w.kCollision = spring.k;
     w.dCollision = spring.d;
+  }
+  bool selfContact = spec->selfContact;
+  for (const JellySpec& jelly : spec->jellies) selfContact = selfContact || jelly.selfContact;
+  if (!spec->jellies.empty() || selfContact) {
+    BodyContactSpec bodies;
+    bodies.spring = {w.kCollision, w.dCollision};
+    if (contact) {
+      bodies.distance = r.number(*contact, "contact.", "distance", 0, true).value_or(0);
+      bodies.friction = readFriction(r, *contact, "contact.");
+    }
+    spec->bodyContact = bodies;
+  } else if (contact) {
+    for (const char* key : {"distance", "friction_static", "friction_dynamic", "friction_speed"})
+      if (contact->get(key))
+        r.fail(*contact->get(key), std::string("contact.") + key,
+               "belongs to contact between bodies: give several [[jelly]] or self_contact = true");
   }
   spec->gravity = r.vector(root, "", "gravity").value_or(Vec3{});
   const ContactSpring spring{w.kCollision, w.dCollision};
   readBounds(r, root, spring, spec.get());
   readObstacles(r, root, spring, spec.get());
   const Body& body = spec->body ? *spec->body : courseBody();
+  checkJellies(r, root, file, *spec);
+  if (const toml::node* state = root.get("state")) {
+    const std::optional<std::string> path = state->value<std::string>();
+    if (!path || path->empty()) r.fail(*state, "state", "expected the path of a state file (.csv)");
+    try {
+      file.state = readStateFile(r.pathFromScene(*path), body);
+    } catch (const InputError& e) {
+      r.fail(*state, "state", e.what());
+    }
+  }
   readPins(r, root, body, file.state, spec.get());
   for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
   w.scene = std::move(spec);  // before the check: it names points by the scene's body

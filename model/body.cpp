@@ -2,7 +2,9 @@
 
 #include "model/body.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/assert.h"
 
@@ -24,12 +26,28 @@ double restLength(const SpringOffset& o, double spacing) {
   return spacing * std::sqrt(double(o.di * o.di + o.dj * o.dj + o.dk * o.dk));
 }
 
+int Body::partOf(int q) const {
+  if (!joined()) return 0;
+  JELLO_ASSERT(q >= 0 && q < count());
+  return static_cast<int>(std::upper_bound(partFirst.begin(), partFirst.end(), q) -
+                          partFirst.begin()) -
+         1;
+}
+
 std::array<int, 3> Body::index(int q) const {
+  if (joined()) {
+    const int p = partOf(q);
+    return parts[p]->index(q - partFirst[p]);
+  }
   const int node = nodeOf[q];
   return {node / (ny * nz), (node / nz) % ny, node % nz};
 }
 
 Vec3 Body::restPosition(int q) const {
+  if (joined()) {
+    const int p = partOf(q);
+    return parts[p]->restPosition(q - partFirst[p]);
+  }
   const std::array<int, 3> i = index(q);
   return spacing * Vec3{double(i[0]), double(i[1]), double(i[2])};
 }
@@ -37,11 +55,11 @@ Vec3 Body::restPosition(int q) const {
 std::string Body::label(int q) const {
   const std::array<int, 3> i = index(q);
   return "[" + std::to_string(i[0]) + "][" + std::to_string(i[1]) + "][" + std::to_string(i[2]) +
-         "]";
+         "]" + (joined() ? " of jelly " + std::to_string(partOf(q) + 1) : std::string());
 }
 
 int Body::pointAtIndex(int i, int j, int k) const {
-  if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
+  if (joined() || i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
   return pointAt[node(i, j, k)];
 }
 
@@ -171,15 +189,80 @@ Body voxelBody(const VoxelMask& mask, double spacing, std::string what) {
   return body;
 }
 
+namespace {
+
+// A sheet: every node a point, the springs that stay in its plane, the sheet as its surface.
+Body sheetBody(int nx, int ny, int nz, double spacing, std::string what) {
+  Body body;
+  body.what = std::move(what);
+  body.nx = nx, body.ny = ny, body.nz = nz;
+  body.spacing = spacing;
+  const int nodes = nx * ny * nz;
+  for (int node = 0; node < nodes; ++node) {
+    body.pointAt.push_back(node);
+    body.nodeOf.push_back(node);
+  }
+  addSprings(&body);
+  const int axis = nx == 1 ? 0 : ny == 1 ? 1 : 2;
+  const VoxelMask none;
+  const FaceGrid g{none, body};
+  for (int u = 0; u + 1 < g.nodes((axis + 1) % 3); ++u)
+    for (int v = 0; v + 1 < g.nodes((axis + 2) % 3); ++v)
+      addQuad(g, axis, 0, u, v, true, &body.surface);
+  body.surfaceVertexOf.resize(nodes);
+  for (int q = 0; q < nodes; ++q) body.surfacePoints.push_back(q), body.surfaceVertexOf[q] = q;
+  return body;
+}
+
+}  // namespace
+
 Body latticeBody(int nx, int ny, int nz, double spacing) {
+  const std::string what = "the " + std::to_string(nx) + "x" + std::to_string(ny) + "x" +
+                           std::to_string(nz) +
+                           (nx == 1 || ny == 1 || nz == 1 ? " sheet" : " lattice");
+  JELLO_ASSERT((nx == 1) + (ny == 1) + (nz == 1) <= 1);
+  if (nx == 1 || ny == 1 || nz == 1) return sheetBody(nx, ny, nz, spacing, what);
   VoxelMask mask{nx - 1, ny - 1, nz - 1, {}};
   mask.filled.assign(std::size_t(mask.nx) * mask.ny * mask.nz, 1);
-  Body body = voxelBody(mask, spacing,
-                        "the " + std::to_string(nx) + "x" + std::to_string(ny) + "x" +
-                            std::to_string(nz) + " lattice");
+  Body body = voxelBody(mask, spacing, what);
   body.courseLattice =
       nx == kLatticeSize && ny == kLatticeSize && nz == kLatticeSize && spacing == kRestSpacing;
   return body;
+}
+
+bool isSheet(const Body& body) {
+  return !body.joined() && (body.nx == 1 || body.ny == 1 || body.nz == 1);
+}
+
+Body joinBodies(std::vector<std::shared_ptr<const Body>> parts) {
+  JELLO_ASSERT(parts.size() >= 2 && parts.size() <= std::size_t(kMostJellies));
+  Body joined;
+  joined.what = std::to_string(parts.size()) + " jellies";
+  joined.partFirst.push_back(0);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const Body& part = *parts[p];
+    JELLO_ASSERT(!part.joined());
+    const int first = joined.count();
+    for (int node : part.nodeOf) joined.nodeOf.push_back(node);
+    for (Spring s : part.springs) {
+      s.a += first, s.b += first;
+      s.part = static_cast<std::uint16_t>(p);
+      joined.springs.push_back(s);
+    }
+    for (Triangle t : part.surface)
+      joined.surface.push_back({t[0] + first, t[1] + first, t[2] + first});
+    joined.partFirst.push_back(joined.count());
+  }
+  joined.surfaceVertexOf.assign(joined.count(), -1);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (int q : parts[p]->surfacePoints) {
+      const int point = q + joined.partFirst[p];
+      joined.surfaceVertexOf[point] = static_cast<int>(joined.surfacePoints.size());
+      joined.surfacePoints.push_back(point);
+    }
+  joined.spacing = parts[0]->spacing;
+  joined.parts = std::move(parts);
+  return joined;
 }
 
 const Body& courseBody() {

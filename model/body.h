@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,12 +68,16 @@ struct Spring {
   int a, b;     // point numbers
   double rest;  // m, from the ideal lattice
   SpringKind kind;
+  std::uint16_t part = 0;  // the jelly it belongs to, in a scene of several (joinBodies); else 0
 };
 
 using Triangle = std::array<int, 3>;  // three point numbers, counter-clockwise from outside
 
 // The most points along an edge of a body's grid (the 2..48).
 constexpr int kMostBodyPoints = 48;
+// The most jellies a scene may hold ([[jelly]], docs/scenes.md), and the most points of them all.
+constexpr int kMostJellies = 64;
+constexpr int kMostScenePoints = 1 << 20;
 
 // Which voxels of an nx x ny x nz grid are filled: filled[cell(i, j, k)].
 struct VoxelMask {
@@ -95,26 +100,43 @@ struct Body {
   std::vector<int> surfacePoints;    // the points on the surface, ascending
   std::vector<int> surfaceVertexOf;  // point -> its place in surfacePoints, or -1
   bool courseLattice = false;        // the 8x8x8 lattice of spacing 1/7: the course's cube
+  // A scene's several jellies joined into one body (joinBodies): part p's points are
+  // [partFirst[p], partFirst[p + 1]), numbered as in parts[p], its springs and triangles those of
+  // parts[p] renumbered, in the order of the parts. Empty for one body. A joined body has no grid
+  // of its own: index, restPosition and label are its part's.
+  std::vector<std::shared_ptr<const Body>> parts;
+  std::vector<int> partFirst;
 
   int count() const { return static_cast<int>(nodeOf.size()); }
   int coords() const { return 3 * count(); }
+  bool joined() const { return !parts.empty(); }
+  // The part point q belongs to (0 for a body that is not joined).
+  int partOf(int q) const;
   // Grid node (i, j, k)'s number: (i * ny + j) * nz + k.
   int node(int i, int j, int k) const { return (i * ny + j) * nz + k; }
   // The grid index of point q.
   std::array<int, 3> index(int q) const;
   // Point q at rest, m: spacing * its grid index (node (0, 0, 0) at the origin).
   Vec3 restPosition(int q) const;
-  // "[i][j][k]" for point q.
+  // "[i][j][k]" for point q; in a joined body "[i][j][k] of jelly P" (P from 1).
   std::string label(int q) const;
-  // The point at grid node (i, j, k), or -1 (also outside the grid).
+  // The point at grid node (i, j, k), or -1 (also outside the grid, and in a joined body).
   int pointAtIndex(int i, int j, int k) const;
 };
 
 // A body of every corner of the filled voxels of `mask`, spacing metres apart. The mask must hold
 // at least one filled voxel and at most kMostBodyPoints - 1 voxels along each axis.
 Body voxelBody(const VoxelMask& mask, double spacing, std::string what);
-// The nx x ny x nz lattice (each 2..kMostBodyPoints) of points spacing metres apart.
+// The nx x ny x nz lattice (each 2..kMostBodyPoints, except that one of them may be 1: a sheet, a
+// cloth) of points spacing metres apart. A sheet's springs are those of the offsets that stay in
+// its plane (structural, face shear and bend); its surface is the sheet, its triangles wound
+// counter-clockwise seen from the + side of the thin axis.
 Body latticeBody(int nx, int ny, int nz, double spacing);
+// Whether the body is a sheet (one point thick along an axis).
+bool isSheet(const Body& body);
+// The bodies as one (Body::parts): points, springs and triangles of each in turn, each spring
+// marked with its part. At least two parts.
+Body joinBodies(std::vector<std::shared_ptr<const Body>> parts);
 // The course's cube, built once (the 8x8x8 lattice of spacing kRestSpacing).
 const Body& courseBody();
 

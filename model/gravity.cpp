@@ -2,10 +2,27 @@
 
 #include "model/gravity.h"
 
+#include <algorithm>
+
 namespace jello {
+
+GravityTerm::GravityTerm(Vec3 g, const std::vector<double>& pointMass)
+    : ForceTerm(static_cast<int>(pointMass.size())), g_(g) {
+  for (double mass : pointMass) weights_.push_back(mass * g);
+}
+
+double GravityTerm::largestExternalForce() const {
+  double largest = length(weight_);
+  for (Vec3 w : weights_) largest = std::max(largest, length(w));
+  return largest;
+}
 
 void GravityTerm::addForcesOn(PointRange points, const double*, const double*, const Bounds*,
                               double* force) const {
+  if (!weights_.empty()) {
+    for (int q = points.begin; q < points.end; ++q) addAt(force, q, weights_[q]);
+    return;
+  }
   for (int q = points.begin; q < points.end; ++q) addAt(force, q, weight_);
 }
 

@@ -45,10 +45,29 @@ void addField(const World& world, int n, KernelChoice choice, ForceTerms* forces
 // What a scene file adds after the course's terms (so that a scene that adds nothing sums as the
 // course world does): gravity, then the obstacles in the file's order.
 void addSceneTerms(const World& world, int n, const SceneSpec& spec, ForceTerms* forces) {
-  if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0)
-    forces->terms.push_back(std::make_unique<GravityTerm>(n, spec.gravity, world.mass));
+  if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0) {
+    if (spec.jellies.empty())
+      forces->terms.push_back(std::make_unique<GravityTerm>(n, spec.gravity, world.mass));
+    else
+      forces->terms.push_back(std::make_unique<GravityTerm>(spec.gravity, pointMassesOf(world)));
+  }
   for (const Obstacle& obstacle : spec.obstacles)
     forces->terms.push_back(std::make_unique<ObstacleTerm>(n, obstacle));
+}
+
+// Contact between the scene's jellies, or of its one jelly with itself.
+void addBodyContact(const Body& body, const SceneSpec& spec, ForceTerms* forces) {
+  const BodyContactSpec& contact = *spec.bodyContact;
+  std::vector<ContactPart> parts;
+  auto radius = [&](const Body& b) {
+    return contact.distance > 0 ? contact.distance / 2 : b.spacing / 2;
+  };
+  if (body.joined())
+    for (std::size_t p = 0; p < body.parts.size(); ++p)
+      parts.push_back({radius(*body.parts[p]), spec.jellies[p].selfContact});
+  else
+    parts.push_back({radius(body), spec.selfContact});
+  forces->terms.push_back(std::make_unique<BodyContactTerm>(body, std::move(parts), contact));
 }
 
 // The terms of `world` in the order their forces are summed. The field term reads the nodes of
@@ -60,10 +79,17 @@ ForceTerms buildForceTerms(const World& world, const State& initial, KernelChoic
   const SceneSpec* spec = world.scene.get();
   const Body& body = bodyOf(world);
   const int n = body.count();
-  const SpringConstants constants = springConstantsOf(world);
-  auto springs = std::make_unique<SpringTerm>(body, constants, general || constants.anyDamping());
+  std::vector<SpringConstants> byPart;
+  bool damping = false;
+  if (spec && !spec->jellies.empty())
+    for (const JellySpec& jelly : spec->jellies) byPart.push_back(jelly.springs);
+  else
+    byPart.push_back(springConstantsOf(world));
+  for (const SpringConstants& c : byPart) damping = damping || c.anyDamping();
+  auto springs = std::make_unique<SpringTerm>(body, std::move(byPart), general || damping);
   forces.springs = springs.get();
   forces.terms.push_back(std::move(springs));
+  if (spec && spec->bodyContact) addBodyContact(body, *spec, &forces);
   const ContactSpring contact{world.kCollision, world.dCollision};
   if (hasCourseWalls(spec))
     forces.terms.push_back(std::make_unique<WallsTerm>(n, contact));
@@ -117,6 +143,14 @@ SpringConstants springConstantsOf(const World& world) {
   return SpringConstants::same(world.kElastic, world.dElastic);
 }
 
+std::vector<double> pointMassesOf(const World& world) {
+  const Body& body = bodyOf(world);
+  std::vector<double> mass(body.count(), world.mass);
+  if (world.scene && !world.scene->jellies.empty())
+    for (int q = 0; q < body.count(); ++q) mass[q] = world.scene->jellies[body.partOf(q)].mass;
+  return mass;
+}
+
 bool hasCourseSprings(const World& world) {
   return courseSprings(bodyOf(world), springConstantsOf(world));
 }
@@ -127,6 +161,7 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   model.world = world;
   model.forces = buildForceTerms(model.world, initial, choice);
   if (world.scene) model.pinned = world.scene->pinned;
+  model.pointMass = pointMassesOf(model.world);
   JELLO_ASSERT(model.forces.terms.size() <= kMaxTerms);
   return model;
 }

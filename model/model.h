@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "model/bodycontact.h"
 #include "model/field.h"
 #include "model/plane.h"
 #include "model/scenespec.h"
@@ -29,15 +30,16 @@ class Team;  // core/team.h
 // term everywhere (the reference the specialisations are tested and timed against).
 enum class KernelChoice { Specialised, General };
 
-// The terms a world needs, in the order their forces are summed: the springs, the walls, the
-// plane, the field, then a scene file's gravity and obstacles (docs/physics.md). The specialised
+// The terms a world needs, in the order their forces are summed: the springs, a scene's contact
+// between bodies (the pair terms), the walls, the plane, the field, then a scene file's gravity
+// and obstacles (docs/physics.md). The specialised
 // list leaves out what adds nothing (dampers without damping, a plane the file does not have, a
 // zero field), computes a uniform field as a constant, and lets every term skip its work when the
 // cube's bounding box is out of its reach (culling). The general list computes every term for
 // every point.
 // The most terms a list holds: the springs, walls, plane, field and gravity, and a scene's
 // obstacles (its bounding box among them). The force kernel keeps the terms in reach on the stack.
-constexpr int kMaxTerms = 8 + kMostObstacles;
+constexpr int kMaxTerms = 9 + kMostObstacles;
 
 struct ForceTerms {
   std::vector<std::unique_ptr<ForceTerm>> terms;  // owned; pair terms first
@@ -64,6 +66,8 @@ struct Model {
   ForceTerms forces;
   std::vector<int>
       pinned;  // the scene's pinned points (scenespec.h), sorted; none for a course world
+  // Each point's mass, kg: the world's mass for one jelly, each jelly's own for several.
+  std::vector<double> pointMass;
 
   Model() = default;
   Model(Model&&) = default;
@@ -83,8 +87,11 @@ struct Model {
 };
 // The body of a world: its scene's, or the course cube.
 const Body& bodyOf(const World& world);
-// The springs' constants: a scene's per kind, or the world's kElastic and dElastic for all.
+// The springs' constants: a scene's per kind, or the world's kElastic and dElastic for all (for
+// several jellies, the first's).
 SpringConstants springConstantsOf(const World& world);
+// Each point's mass, kg (Model::pointMass).
+std::vector<double> pointMassesOf(const World& world);
 // Whether the world's jelly is the course cube with the course's springs (courseSprings).
 bool hasCourseSprings(const World& world);
 // `initial` holds the body's points.

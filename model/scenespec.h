@@ -17,12 +17,35 @@
 
 namespace jello {
 
+// One jelly of a scene with several ([[jelly]]): its points are body->parts[p]'s in the joined
+// body, its mass and springs its own.
+struct JellySpec {
+  double mass = 0;  // kg a point, > 0
+  SpringConstants springs;
+  bool selfContact = false;  // its surface kept from passing through itself
+};
+
+// Contact between jellies, and of a jelly with itself (model/bodycontact.h): every surface point a
+// ball of radius half its body's spacing, or of half `distance` when the scene gives one.
+struct BodyContactSpec {
+  double distance = 0;  // m, two points' contact distance; 0: the mean of their bodies' spacings
+  ContactSpring spring;
+  Friction friction;
+};
+
 struct SceneSpec {
   // The jelly, when the scene gives its shape ([jelly] shape); null: the course cube.
   std::shared_ptr<const Body> body;
   // The springs' constants by kind, when the scene gives them; none: the world's kElastic and
   // dElastic for every kind.
   std::optional<SpringConstants> springs;
+  // Several jellies: one each, body the joined body (Body::parts), pins and the state in its
+  // numbering; `springs` unused, the world's mass the first jelly's. Empty for one jelly.
+  std::vector<JellySpec> jellies;
+  // Whether the one jelly keeps from passing through itself ([jelly] self_contact).
+  bool selfContact = false;
+  // Contact between bodies: there for several jellies or self-contact, else none.
+  std::optional<BodyContactSpec> bodyContact;
   Vec3 gravity;                     // m/s^2, on every point, everywhere
   std::vector<Obstacle> obstacles;  // in the order of the file
   // Points that do not move (the body's point numbers), sorted, each once. Their velocities are 0.

@@ -270,11 +270,15 @@ int balancedSplitPoint() {
 }
 
 SpringTerm::SpringTerm(const Body& body, const SpringConstants& constants, bool dampers)
+    : SpringTerm(body, std::vector<SpringConstants>{constants}, dampers) {}
+
+SpringTerm::SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers)
     : ForceTerm(body.count()),
       body_(body),
-      c_(constants),
+      c_(std::move(byPart)),
       dampers_(dampers),
-      rowKernel_(courseSprings(body, constants)) {
+      rowKernel_(c_.size() == 1 && courseSprings(body, c_[0])) {
+  JELLO_ASSERT(c_.size() == (body.joined() ? body.parts.size() : 1u));
   for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
   // Each point's springs in the list's order: counted, then placed.
   const int n = body.count();
@@ -298,8 +302,9 @@ std::vector<std::pair<int, int>> SpringTerm::pairs() const {
 
 // The force on end a of spring s, as springForce computes it with its kind's constants; without
 // dampers their tension is left out altogether, as the row kernel leaves it out.
-inline Vec3 listSpringForce(const Spring& s, const SpringConstants& c, bool dampers,
-                            const double* p, const double* v, int n) {
+inline Vec3 listSpringForce(const Spring& s, const std::vector<SpringConstants>& byPart,
+                            bool dampers, const double* p, const double* v, int n) {
+  const SpringConstants& c = byPart[s.part];
   const int kind = static_cast<int>(s.kind);
   const Vec3 L = load(p, s.a, n) - load(p, s.b, n);
   double len;
@@ -368,7 +373,7 @@ void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v
   // The row kernel is the course cube's: 512 points, ranges of whole lattice rows.
   JELLO_ASSERT(pointCount() == kNumPoints);
   JELLO_ASSERT(points.begin % kLatticeSize == 0 && points.end % kLatticeSize == 0);
-  const Inputs in{p, v, -c_.k[0], -c_.d[0], rests_.data()};
+  const Inputs in{p, v, -c_[0].k[0], -c_[0].d[0], rests_.data()};
   if (dampers_)
     addSpringForces<true>(in, points, force);
   else
@@ -380,8 +385,9 @@ void SpringTerm::addJacobian(const double* p, const double* v, JacobianSink* sin
   Block3 dFdL, dFdw;
   for (const Spring& s : springs()) {
     const int kind = static_cast<int>(s.kind);
-    springJacobian(load(p, s.a, n) - load(p, s.b, n), load(v, s.a, n) - load(v, s.b, n), c_.k[kind],
-                   c_.d[kind], s.rest, &dFdL, &dFdw);
+    const SpringConstants& c = c_[s.part];
+    springJacobian(load(p, s.a, n) - load(p, s.b, n), load(v, s.a, n) - load(v, s.b, n), c.k[kind],
+                   c.d[kind], s.rest, &dFdL, &dFdw);
     sink->addPair(dFdL, dFdw);
   }
 }
@@ -390,7 +396,7 @@ void SpringTerm::addEnergy(const double* p, double* energy) const {
   const int n = pointCount();
   for (const Spring& s : springs()) {
     double stretch = length(load(p, s.a, n) - load(p, s.b, n)) - s.rest;
-    *energy += 0.5 * c_.k[static_cast<int>(s.kind)] * stretch * stretch;
+    *energy += 0.5 * c_[s.part].k[static_cast<int>(s.kind)] * stretch * stretch;
   }
 }
 
@@ -403,16 +409,30 @@ void SpringTerm::summarise(std::vector<std::string>* kept,
     leftOut->push_back("dampers (zero damping)");
 }
 
-std::vector<TermLine> SpringTerm::describe(const double*) const {
-  if (c_.uniform())
-    return {{"springs",
-             textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)",
-                   c_.k[0], c_.d[0], springs().size())}};
-  std::string text = textf("%zu springs:", springs().size());
+namespace {
+
+std::string constantsText(const SpringConstants& c, std::size_t springs) {
+  if (c.uniform())
+    return textf("kElastic %.9g N/m, dElastic %.9g N s/m (%zu springs: structural, shear, bend)",
+                 c.k[0], c.d[0], springs);
+  std::string text = textf("%zu springs:", springs);
   for (int kind = 0; kind < kSpringKinds; ++kind)
     text += textf("%s %s k %.9g N/m, d %.9g N s/m", kind ? ";" : "",
-                  springKindName(SpringKind(kind)), c_.k[kind], c_.d[kind]);
-  return {{"springs", text}};
+                  springKindName(SpringKind(kind)), c.k[kind], c.d[kind]);
+  return text;
+}
+
+}  // namespace
+
+std::vector<TermLine> SpringTerm::describe(const double*) const {
+  if (c_.size() == 1) return {{"springs", constantsText(c_[0], springs().size())}};
+  std::vector<std::size_t> count(c_.size(), 0);
+  for (const Spring& s : springs()) ++count[s.part];
+  std::vector<TermLine> lines;
+  for (std::size_t part = 0; part < c_.size(); ++part)
+    lines.push_back(
+        {"springs", textf("jelly %zu: ", part + 1) + constantsText(c_[part], count[part])});
+  return lines;
 }
 
 }  // namespace jello

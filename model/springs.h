@@ -76,8 +76,11 @@ inline bool courseSprings(const Body& body, const SpringConstants& constants) {
 class SpringTerm final : public ForceTerm {
  public:
   SpringTerm(const Body& body, const SpringConstants& constants, bool dampers);
+  // A joined body's (Body::parts): each part's springs with its own constants.
+  SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers);
   const std::vector<Spring>& springs() const { return body_.springs; }
-  const SpringConstants& constants() const { return c_; }
+  // The constants of the springs of part `part` (0 for one body).
+  const SpringConstants& constants(int part = 0) const { return c_[part]; }
   // Whether the row kernel computes the forces (else the spring list does).
   bool rowKernel() const { return rowKernel_; }
   // The spring list in two passes, for two threads: each spring's force on its end a, for the
@@ -106,7 +109,7 @@ class SpringTerm final : public ForceTerm {
   void gather(PointRange points, const ForceOf& forceOf, double* force) const;
 
   const Body& body_;
-  SpringConstants c_;
+  std::vector<SpringConstants> c_;  // by part
   bool dampers_, rowKernel_;
   std::array<double, kSpringOffsets.size()> rests_;  // m, restLength of each offset
   // Each point's springs, in their order: springsOf_[springsStart_[q] .. springsStart_[q + 1]).

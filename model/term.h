@@ -55,7 +55,7 @@ class JacobianSink {
  public:
   virtual ~JacobianSink() = default;
   // The derivatives of a pair force F on point a (and -F on b) with respect to L = p_a - p_b and
-  // to w = v_a - v_b. The pairs come in the order of the term's pairs().
+  // to w = v_a - v_b. The pairs come in the order of the term's pairsAt(p).
   virtual void addPair(const Block3& dFdL, const Block3& dFdw) = 0;
   // The derivatives of a point force on q with respect to q's own position and velocity.
   virtual void addPoint(int q, const Block3& dFdp, const Block3& dFdv) = 0;
@@ -83,6 +83,11 @@ class ForceTerm {
   virtual std::vector<std::pair<int, int>> pairs() const { return {}; }
   // pairs().size(), without making the list (the Jacobian checks its pattern with it each time).
   virtual std::size_t pairCount() const { return 0; }
+  // Whether the pairs depend on the positions (contact between bodies): then pairs() and
+  // pairCount() are empty, and pairsAt(p) lists the pairs at positions p, in the order of the
+  // Jacobian blocks addJacobian(p, ...) gives.
+  virtual bool pairsMove() const { return false; }
+  virtual std::vector<std::pair<int, int>> pairsAt(const double* /*p*/) const { return pairs(); }
 
   // Whether the term may act on some point inside `box`. Conservative: true when unsure.
   virtual bool mayReach(const Bounds& box) const = 0;

@@ -22,17 +22,19 @@ double mechanicalEnergy(const Model& model, const State& state) {
   double energy = 0;
   const int n = model.points();
   for (int q = 0; q < n; ++q)
-    energy += 0.5 * model.world.mass * dot(load(state.v(), q, n), load(state.v(), q, n));
+    energy += 0.5 * model.pointMass[q] * dot(load(state.v(), q, n), load(state.v(), q, n));
   for (const auto& term : model.forces.terms) term->addEnergy(state.p(), &energy);
   return energy;
 }
 
 DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
   JELLO_ASSERT(initial.points() == model.points());
-  JELLO_ASSERT(model.world.mass > 0);  // the reader's rule: the energy rate divides by it
+  // The reader's rule, every mass > 0: the energy rate divides by the lightest.
+  const double lightest = *std::min_element(model.pointMass.begin(), model.pointMass.end());
+  JELLO_ASSERT(lightest > 0);
   double largestForce = 0;
   for (const auto& term : model.forces.terms) largestForce += term->largestExternalForce();
-  energyRate_ = largestForce * std::sqrt(model.points() / (2 * model.world.mass));
+  energyRate_ = largestForce * std::sqrt(model.points() / (2 * lightest));
   restart(initial, 0);
 }
 

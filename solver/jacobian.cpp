@@ -27,23 +27,50 @@ std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int n) {
 
 namespace {
 
-// How many blocks the model's pattern has: a matrix whose slots list as many fits it.
-std::size_t patternBlockCount(const Model& model) {
-  std::size_t blocks = model.points();
-  for (const auto& term : model.forces.terms) blocks += 4 * term->pairCount();
-  return blocks;
+// Every pair of the model's pair terms at positions p, in the terms' order: the pairs of its
+// Jacobian blocks.
+std::vector<std::pair<int, int>> pairsOf(const Model& model, const double* p) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& term : model.forces.terms) {
+    const std::vector<std::pair<int, int>> own = term->pairsAt(p);
+    pairs.insert(pairs.end(), own.begin(), own.end());
+  }
+  return pairs;
+}
+
+// Whether `cached` (pairsOf at some positions) is the model's pairs at p: the terms whose pairs
+// are fixed are checked by their count alone, those whose pairs move pair by pair.
+bool samePairs(const Model& model, const double* p,
+               const std::vector<std::pair<int, int>>& cached) {
+  std::size_t at = 0;
+  for (const auto& term : model.forces.terms) {
+    if (!term->pairsMove()) {
+      at += term->pairCount();
+      continue;
+    }
+    for (const auto& pair : term->pairsAt(p))
+      if (at >= cached.size() || cached[at++] != pair) return false;
+  }
+  return at == cached.size();
 }
 
 // Every (row, column) block of the pattern, in the order of AccelerationJacobian::blockSlots.
-std::vector<std::pair<int, int>> patternBlocks(const Model& model) {
+std::vector<std::pair<int, int>> patternBlocks(const std::vector<std::pair<int, int>>& pairs,
+                                               int points) {
   std::vector<std::pair<int, int>> blocks;
-  blocks.reserve(patternBlockCount(model));
-  for (const auto& term : model.forces.terms)
-    for (auto [a, b] : term->pairs())
-      for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
-        blocks.push_back({row, column});
-  for (int q = 0; q < model.points(); ++q) blocks.push_back({q, q});
+  blocks.reserve(4 * pairs.size() + points);
+  for (auto [a, b] : pairs)
+    for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
+      blocks.push_back({row, column});
+  for (int q = 0; q < points; ++q) blocks.push_back({q, q});
   return blocks;
+}
+
+// 1 / each point's mass.
+std::vector<double> perMassOf(const Model& model) {
+  std::vector<double> perMass(model.points());
+  for (int q = 0; q < model.points(); ++q) perMass[q] = 1.0 / model.pointMass[q];
+  return perMass;
 }
 
 // The pattern of `blocks` as a sparse matrix of zeros, its columns' row indices written out in
@@ -136,16 +163,19 @@ class PointSums : public JacobianSink {
 };
 
 // dA/dp and dA/dv as sparse matrices: pair blocks go straight in (their slots in order), then
-// the points' blocks, scaled by 1/mass.
+// the points' blocks, each row scaled by 1 / its point's mass.
 class Assembly final : public PointSums {
  public:
-  Assembly(int points, AccelerationJacobian* out, double perMass)
-      : PointSums(points, &out->pointP, &out->pointV), out_(*out), perMass_(perMass) {}
+  Assembly(int points, AccelerationJacobian* out, std::vector<double> perMass)
+      : PointSums(points, &out->pointP, &out->pointV), out_(*out), perMass_(std::move(perMass)) {}
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
     JELLO_ASSERT(slot_ + 4 + points() <= out_.blockSlots.size());
-    for (double sign : {1.0, -1.0, -1.0, 1.0}) {  // aa, ab, ba, bb
-      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], dFdL, sign * perMass_);
-      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], dFdw, sign * perMass_);
+    JELLO_ASSERT(slot_ / 4 < out_.pairs.size());
+    const auto [a, b] = out_.pairs[slot_ / 4];
+    const double scale[4] = {perMass_[a], -perMass_[a], -perMass_[b], perMass_[b]};  // aa ab ba bb
+    for (double sign : scale) {
+      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], dFdL, sign);
+      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], dFdw, sign);
       ++slot_;
     }
   }
@@ -153,14 +183,14 @@ class Assembly final : public PointSums {
     // Every pair term gave as many pairs as it listed when the pattern was built.
     JELLO_ASSERT(slot_ + points() == out_.blockSlots.size());
     for (int q = 0; q < points(); ++q, ++slot_) {
-      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], byPosition(q, pull), perMass_);
-      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], byVelocity(q), perMass_);
+      addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], byPosition(q, pull), perMass_[q]);
+      addBlock(out_.dAdv.valuePtr(), out_.blockSlots[slot_], byVelocity(q), perMass_[q]);
     }
   }
 
  private:
   AccelerationJacobian& out_;
-  double perMass_;
+  std::vector<double> perMass_;
   std::size_t slot_ = 0;
 };
 
@@ -177,16 +207,19 @@ void zeroPinnedRows(const std::vector<int>& pinned, int n, AccelerationJacobian*
 
 void accelerationJacobian(const Model& model, const double* p, const double* v, const Pull* pull,
                           AccelerationJacobian* out) {
-  // The pattern is made once per model shape; later calls only check that it still fits.
-  if (out->blockSlots.size() != patternBlockCount(model)) {
-    const std::vector<std::pair<int, int>> blocks = patternBlocks(model);
+  // The pattern is made once per model shape and pairs in contact; later calls only check that
+  // it still fits.
+  if (out->blockSlots.size() != 4 * out->pairs.size() + model.points() ||
+      !samePairs(model, p, out->pairs)) {
+    out->pairs = pairsOf(model, p);
+    const std::vector<std::pair<int, int>> blocks = patternBlocks(out->pairs, model.points());
     out->dAdp = patternMatrix(blocks, model.points());
     out->dAdv = out->dAdp;
     out->blockSlots = findSlots(blocks, out->dAdp, model.points());
   }
   std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
   std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
-  Assembly assembly(model.points(), out, 1.0 / model.world.mass);
+  Assembly assembly(model.points(), out, perMassOf(model));
   for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
   if (!model.pinned.empty()) zeroPinnedRows(model.pinned, model.points(), out);
@@ -194,14 +227,28 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
 
 namespace {
 
-// Block B of each pair, as the terms give them, and each point's diagonal block.
+// Block B of each pair, as the terms give them, and each point's diagonal block. With one mass
+// for every point B is -cp dF/dL / m - cv dF/dw / m, the same for the pair's four blocks up to
+// sign; with several, B is in force units and each row's 1 / mass is NewtonBlocks::rowScale's.
 class BlockAssembly final : public PointSums {
  public:
-  BlockAssembly(int points, NewtonBlocks* out, double byPosition, double byVelocity)
-      : PointSums(points, &out->pointP, &out->pointV),
-        out_(*out),
-        byPosition_(byPosition),
-        byVelocity_(byVelocity) {}
+  BlockAssembly(const Model& model, NewtonBlocks* out, double cv, double cp)
+      : PointSums(model.points(), &out->pointP, &out->pointV), out_(*out), cv_(cv), cp_(cp) {
+    const std::vector<double>& mass = model.pointMass;
+    const bool uniform =
+        std::all_of(mass.begin(), mass.end(), [&](double m) { return m == mass[0]; });
+    mass_ = mass;
+    out_.rowScale.clear();
+    if (uniform) {
+      byPosition_ = -cp / model.world.mass;
+      byVelocity_ = -cv / model.world.mass;
+      JELLO_ASSERT(mass.empty() || mass[0] == model.world.mass);
+    } else {
+      byPosition_ = -cp;
+      byVelocity_ = -cv;
+      for (double m : mass) out_.rowScale.push_back(1.0 / m);
+    }
+  }
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
     JELLO_ASSERT(pair_ < out_.pair.size());
     Block3& b = out_.pair[pair_++];
@@ -210,17 +257,22 @@ class BlockAssembly final : public PointSums {
   // The diagonal blocks: the identity and the point terms' (the pull's included).
   void finish(const Pull* pull) {
     JELLO_ASSERT(pair_ == out_.pair.size());
+    const bool uniform = out_.rowScale.empty();
     for (int q = 0; q < points(); ++q) {
       const Block3 &p = byPosition(q, pull), &v = byVelocity(q);
+      const double byP = uniform ? byPosition_ : -cp_ / mass_[q];
+      const double byV = uniform ? byVelocity_ : -cv_ / mass_[q];
       Block3& b = out_.point[q];
-      for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * p.m[e] + byVelocity_ * v.m[e];
+      for (int e = 0; e < 9; ++e) b.m[e] = byP * p.m[e] + byV * v.m[e];
       for (int axis = 0; axis < 3; ++axis) b.m[4 * axis] += 1;
     }
   }
 
  private:
   NewtonBlocks& out_;
-  double byPosition_, byVelocity_;
+  double cv_, cp_;
+  std::vector<double> mass_;
+  double byPosition_ = 0, byVelocity_ = 0;
   std::size_t pair_ = 0;
 };
 
@@ -237,8 +289,13 @@ void NewtonBlocks::multiply(const double* x, double* y) const {
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto [a, b] = pairs[k];
     const Vec3 f = times(pair[k], load(x, a, n) - load(x, b, n));
-    store(y, a, n, load(y, a, n) + f);
-    store(y, b, n, load(y, b, n) - f);
+    if (rowScale.empty()) {
+      store(y, a, n, load(y, a, n) + f);
+      store(y, b, n, load(y, b, n) - f);
+    } else {
+      store(y, a, n, load(y, a, n) + rowScale[a] * f);
+      store(y, b, n, load(y, b, n) - rowScale[b] * f);
+    }
   }
   for (int q : pinned) store(y, q, n, load(x, q, n));
 }
@@ -247,27 +304,29 @@ void NewtonBlocks::diagonal(double* d) const {
   const int n = points();
   for (int q = 0; q < n; ++q)
     for (int axis = 0; axis < 3; ++axis) d[coordIndex(q, axis, n)] = point[q].m[4 * axis];
-  for (std::size_t k = 0; k < pairs.size(); ++k)
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto [a, b] = pairs[k];
+    const double scaleA = rowScale.empty() ? 1.0 : rowScale[a];
+    const double scaleB = rowScale.empty() ? 1.0 : rowScale[b];
     for (int axis = 0; axis < 3; ++axis) {
-      d[coordIndex(pairs[k].first, axis, n)] += pair[k].m[4 * axis];
-      d[coordIndex(pairs[k].second, axis, n)] += pair[k].m[4 * axis];
+      d[coordIndex(a, axis, n)] += scaleA * pair[k].m[4 * axis];
+      d[coordIndex(b, axis, n)] += scaleB * pair[k].m[4 * axis];
     }
+  }
   for (int q : pinned) store(d, q, n, Vec3{1, 1, 1});
 }
 
 void newtonBlocks(const Model& model, const double* p, const double* v, const Pull* pull, double cv,
                   double cp, NewtonBlocks* out) {
-  // The pairs are listed once per model shape; later calls only check that they still fit.
-  if (4 * out->pairs.size() + out->point.size() != patternBlockCount(model) ||
-      out->points() != model.points()) {
-    out->pairs.clear();
-    for (const auto& term : model.forces.terms)
-      for (auto pair : term->pairs()) out->pairs.push_back(pair);
+  // The pairs are listed once per model shape and pairs in contact; later calls only check that
+  // they still fit.
+  if (out->points() != model.points() || !samePairs(model, p, out->pairs)) {
+    out->pairs = pairsOf(model, p);
     out->pair.resize(out->pairs.size());
     out->point.resize(model.points());
   }
   // -cp dA/dp - cv dA/dv, dA = dF / mass.
-  BlockAssembly assembly(model.points(), out, -cp / model.world.mass, -cv / model.world.mass);
+  BlockAssembly assembly(model, out, cv, cp);
   for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
   assembly.finish(pull);
   out->pinned = model.pinned;
@@ -290,10 +349,12 @@ SparseMatrix sparseOf(const NewtonBlocks& blocks) {
       entries.emplace_back(coordIndex(q, axis, n), coordIndex(q, axis, n), 1.0);
   for (std::size_t k = 0; k < blocks.pairs.size(); ++k) {
     const auto [a, b] = blocks.pairs[k];
-    add(a, a, blocks.pair[k], 1);
-    add(a, b, blocks.pair[k], -1);
-    add(b, a, blocks.pair[k], -1);
-    add(b, b, blocks.pair[k], 1);
+    const double scaleA = blocks.rowScale.empty() ? 1.0 : blocks.rowScale[a];
+    const double scaleB = blocks.rowScale.empty() ? 1.0 : blocks.rowScale[b];
+    add(a, a, blocks.pair[k], scaleA);
+    add(a, b, blocks.pair[k], -scaleA);
+    add(b, a, blocks.pair[k], -scaleB);
+    add(b, b, blocks.pair[k], scaleB);
   }
   SparseMatrix matrix(3 * n, 3 * n);
   matrix.setFromTriplets(entries.begin(), entries.end());

@@ -26,15 +26,18 @@ std::vector<char> pinnedCoordinates(const std::vector<int>& pinned, int points);
 Mat3 toMatrix(const Block3& block);
 
 // Jacobians (3n x 3n for n points) of the accelerations F/mass of all points with respect
-// to all positions and all velocities. Their sparsity pattern is the same for every state and
-// for both: a 3x3 block for every point (the diagonal) and for every pair of points a pair term
-// joins, zeros kept. It is built on the first assembly; later ones only write values.
+// to all positions and all velocities. Their sparsity pattern is the same for both: a 3x3 block
+// for every point (the diagonal) and for every pair of points a pair term joins, zeros kept. It
+// is built on the first assembly, and again when the pairs in contact change (model/term.h
+// pairsMove); other assemblies only write values.
 struct AccelerationJacobian {
   SparseMatrix dAdp, dAdv;
   // Where each block's entries (row-major) are in the value arrays: the 4 blocks (aa, ab, ba,
   // bb) of every pair in order, then the diagonal block of every point. A block's rows are
   // not adjacent in the per-point layout (see coordIndex), so each entry has its own slot.
   std::vector<BlockSlots> blockSlots;
+  // The pairs of the pair terms, in order, as the pattern was made for (model/term.h pairsAt).
+  std::vector<std::pair<int, int>> pairs;
   std::vector<Block3> pointP,
       pointV;  // scratch: each point's diagonal block, summed over the terms
 };
@@ -50,7 +53,10 @@ struct NewtonBlocks {
   std::vector<std::pair<int, int>> pairs;  // (a, b), in the pair terms' order
   std::vector<Block3> pair;                // B of each pair
   std::vector<Block3> point;               // each point's diagonal block, I included
-  std::vector<Block3> pointP, pointV;      // scratch: the point terms' blocks, summed
+  // Empty when every point has the same mass (then B holds 1 / mass); else 1 / each point's mass,
+  // which scales B in the rows of the point (B then in force units).
+  std::vector<double> rowScale;
+  std::vector<Block3> pointP, pointV;  // scratch: the point terms' blocks, summed
   // The model's pinned points: their rows of dA are zero, so their rows of N are the identity's
   // (the blocks above still hold what the terms gave, multiply() and diagonal() override them).
   std::vector<int> pinned;

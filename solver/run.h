@@ -22,6 +22,7 @@ struct RunOptions {
   std::optional<double> dt;  // s
   std::optional<int> n;
   std::optional<std::string> dumpPath;              // --dump FILE
+  std::optional<std::string> saveStatePath;         // --save-state FILE (io/statefile.h)
   Tolerances tolerances;                            // RK45's error control
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
 };

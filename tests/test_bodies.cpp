@@ -192,7 +192,7 @@ TEST(SpringList, OnEveryRangeAndOnTwoThreadsGivesTheWholePassBitForBit) {
   ell.filled[7] = ell.filled[20] = 0;
   for (const Body& body : {latticeBody(16, 4, 4, 0.1), voxelBody(ell, 0.1, "an odd count")}) {
     const int n = body.count();
-    const SpringTerm term(body, {{300, 200, 100}, {0.2, 0.1, 0.05}}, true);
+    const SpringTerm term(body, SpringConstants{{300, 200, 100}, {0.2, 0.1, 0.05}}, true);
     const State s = jostled(body, random, 0.02);
     std::vector<double> whole(3 * n, 0.0);
     term.addForces(s.p(), s.v(), nullptr, whole.data());

@@ -96,7 +96,7 @@ TEST(ForceTerms, EachJacobianMatchesFiniteDifferencesOfItsForce) {
   std::mt19937 random(5);
   for (const auto& term : model.forces.terms) {
     for (bool velocity : {false, true}) {
-      DenseSink sink(term->pairs(), velocity);
+      DenseSink sink(term->pairsAt(p.data()), velocity);
       term->addJacobian(p.data(), v.data(), &sink);
       double worst = 0, scale = 0;
       for (int sample = 0; sample < 40; ++sample) {

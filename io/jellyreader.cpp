@@ -1,0 +1,287 @@
+// io/jellyreader.cpp: a scene's jellies (jellyreader.h; the keys are in docs/scenes.md).
+
+#include "io/jellyreader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/voxels.h"
+#include "model/bodycontact.h"
+#include "model/winding.h"
+
+namespace jello {
+
+namespace {
+
+constexpr std::initializer_list<const char*> kJellyKeys = {
+    "mass",  "total_mass", "stiffness", "damping", "offset", "velocity",
+    "shape", "size",       "spacing",   "radius",  "mesh",   "self_contact"};
+
+// A whole number in [lowest, highest].
+int wholeNumber(const Reader& r, const toml::node& node, const std::string& key, int lowest,
+                int highest) {
+  const std::optional<std::int64_t> value = node.value<std::int64_t>();
+  if (!node.is_integer() || !value || *value < lowest || *value > highest)
+    r.fail(node, key,
+           "expected a whole number from " + std::to_string(lowest) + " to " +
+               std::to_string(highest));
+  return static_cast<int>(*value);
+}
+
+// A lattice's size [nx, ny, nz]: each from 2, except that one may be 1 (a sheet: cloth).
+Body readLattice(const Reader& r, const toml::table& t, const std::string& path, double spacing) {
+  const toml::node* size = t.get("size");
+  if (!size) r.fail(*t.get("shape"), path + "size", "a lattice needs its size = [nx, ny, nz]");
+  const toml::array* array = size->as_array();
+  if (!array || array->size() != 3) r.fail(*size, path + "size", "expected [nx, ny, nz]");
+  int n[3];
+  for (int i = 0; i < 3; ++i)
+    n[i] = wholeNumber(r, *array->get(i), path + "size", 1, kMostBodyPoints);
+  if ((n[0] == 1) + (n[1] == 1) + (n[2] == 1) > 1)
+    r.fail(*size, path + "size", "at most one side may be 1 (a sheet); the others from 2");
+  return latticeBody(n[0], n[1], n[2], spacing);
+}
+
+// The body of a jelly's shape: a lattice (the course's cube when it is 8x8x8 at 1/7 m), or the
+// voxels of a ball or of a mesh (io/voxels.h).
+Body readShape(const Reader& r, const toml::table& t, const std::string& path,
+               const std::string& shape, double spacing) {
+  const toml::node& at = *t.get("shape");
+  if (shape == "lattice") return readLattice(r, t, path, spacing);
+  VoxelGrid grid;
+  std::string why, what;
+  if (shape == "sphere") {
+    const std::optional<double> radius = r.number(t, path, "radius", 0, true);
+    if (!radius) r.fail(at, path + "radius", "a sphere needs its radius (m)");
+    if (!voxeliseSphere(*radius, spacing, &grid, &why))
+      r.fail(*t.get("radius"), path + "radius", why);
+    what = "a ball of radius " + Reader::textOf(*radius) + " m";
+  } else if (shape == "mesh") {
+    const toml::node* node = t.get("mesh");
+    const std::optional<std::string> file = node ? node->value<std::string>() : std::nullopt;
+    if (!node) r.fail(at, path + "mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
+    if (!file || file->empty()) r.fail(*node, path + "mesh", "expected the path of an OBJ file");
+    TriangleMesh mesh;
+    if (!readObjMesh(r.pathFromScene(*file), &mesh, &why) ||
+        !voxeliseMesh(mesh, spacing, &grid, &why))
+      r.fail(*node, path + "mesh", why);
+    keepLargestPiece(&grid);
+    what = "the voxels of " + *file;
+  } else {
+    r.fail(at, path + "shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  }
+  return voxelBody(grid, spacing, what);  // where the voxels lie is the body's placement's
+}
+
+// The jelly's body when the table gives a shape, or null (the course cube). Its spacing is the
+// voxels' edge: 1/7 m, the course's, unless given.
+std::shared_ptr<const Body> readBody(const Reader& r, const toml::table& t,
+                                     const std::string& path) {
+  const toml::node* node = t.get("shape");
+  for (const char* key : {"size", "spacing", "radius", "mesh"})
+    if (!node && t.get(key))
+      r.fail(*t.get(key), path + key,
+             "give the jelly's shape (\"lattice\", \"sphere\" or \"mesh\") with it");
+  if (!node) return nullptr;
+  const std::optional<std::string> shape = node->value<std::string>();
+  if (!shape) r.fail(*node, path + "shape", "expected \"lattice\", \"sphere\" or \"mesh\"");
+  for (const auto& [key, owner] :
+       {std::pair{"size", "lattice"}, {"radius", "sphere"}, {"mesh", "mesh"}})
+    if (t.get(key) && *shape != owner)
+      r.fail(*t.get(key), path + key,
+             "belongs to shape = \"" + std::string(owner) + "\", not \"" + *shape + "\"");
+  const double spacing =
+      r.number(t, path, "spacing", kSmallestSpacing, false).value_or(kRestSpacing);
+  if (spacing > kLargestSpacing)
+    r.fail(*t.get("spacing"), path + "spacing",
+           "must be at most " + Reader::textOf(kLargestSpacing));
+  return std::make_shared<Body>(readShape(r, t, path, *shape, spacing));
+}
+
+// A stiffness or damping: one number for every kind of spring, or a table by kind
+// ({structural = ..., shear = ..., bend = ...}; a kind left out keeps *all, the world's).
+void readByKind(const Reader& r, const toml::table& t, const std::string& path, const char* key,
+                double* all, std::array<double, kSpringKinds>* byKind, bool* perKind) {
+  const toml::node* node = t.get(key);
+  if (!node) return;
+  const std::string full = path + key;
+  if (const toml::table* kinds = node->as_table()) {
+    r.onlyKeys(*kinds, full + ".", {"structural", "shear", "bend"});
+    for (int kind = 0; kind < kSpringKinds; ++kind)
+      if (auto v = r.number(*kinds, full + ".", springKindName(SpringKind(kind)), 0))
+        (*byKind)[kind] = *v;
+    *perKind = true;
+    return;
+  }
+  *all = *r.number(t, path, key, 0);
+  byKind->fill(*all);
+}
+
+// A jelly's rest placement: a shaped body centred on the origin (the middle of its grid); the
+// course cube as the default world has it.
+State placedBody(const Body& body) {
+  const int n = body.count();
+  State state(n);
+  const Vec3 middle =
+      0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
+  for (int q = 0; q < n; ++q) store(state.p(), q, n, body.restPosition(q) - middle);
+  return state;
+}
+
+// One jelly's table: its body (null: the course cube), placed state, mass and springs, starting
+// from the world's.
+struct ReadJelly {
+  std::shared_ptr<const Body> body;
+  State state;
+  JellySpec spec;
+  bool perKind = false;
+  double kElastic = 0, dElastic = 0;
+};
+
+ReadJelly readOne(const Reader& r, const toml::table& t, const std::string& path, const World& w,
+                  const State& courseState) {
+  r.onlyKeys(t, path, kJellyKeys);
+  ReadJelly out;
+  out.body = readBody(r, t, path);
+  out.state = out.body ? placedBody(*out.body) : courseState;
+  const int n = out.state.points();
+  if (t.get("mass") && t.get("total_mass"))
+    r.fail(*t.get("total_mass"), path + "total_mass",
+           "give mass (per point) or total_mass, not both");
+  out.spec.mass = w.mass;
+  if (auto m = r.number(t, path, "mass", 0, true)) out.spec.mass = *m;
+  if (auto m = r.number(t, path, "total_mass", 0, true)) out.spec.mass = *m / n;
+  out.kElastic = w.kElastic, out.dElastic = w.dElastic;
+  out.spec.springs = SpringConstants::same(w.kElastic, w.dElastic);
+  readByKind(r, t, path, "stiffness", &out.kElastic, &out.spec.springs.k, &out.perKind);
+  readByKind(r, t, path, "damping", &out.dElastic, &out.spec.springs.d, &out.perKind);
+  if (const toml::node* self = t.get("self_contact")) {
+    if (!self->is_boolean()) r.fail(*self, path + "self_contact", "expected true or false");
+    out.spec.selfContact = *self->value<bool>();
+  }
+  const Vec3 offset = r.vector(t, path, "offset").value_or(Vec3{});
+  const std::optional<Vec3> velocity = r.vector(t, path, "velocity");
+  for (int q = 0; q < n; ++q) {
+    store(out.state.p(), q, n, load(out.state.p(), q, n) + offset);
+    if (velocity) store(out.state.v(), q, n, *velocity);
+  }
+  return out;
+}
+
+// Several jellies: their bodies joined, their states one after another.
+void readSeveral(const Reader& r, const toml::array& array, WorldFile* file, SceneSpec* spec) {
+  if (array.size() > std::size_t(kMostJellies))
+    r.fail(*array.get(kMostJellies), "jelly",
+           "more than " + std::to_string(kMostJellies) + " jellies");
+  std::vector<std::shared_ptr<const Body>> bodies;
+  std::vector<State> states;
+  std::size_t points = 0;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const std::string path = "jelly[" + std::to_string(i + 1) + "].";
+    ReadJelly one = readOne(r, *array.get(i)->as_table(), path, file->world, file->state);
+    if (!one.body) one.body = std::make_shared<Body>(courseBody());
+    points += one.body->count();
+    if (points > std::size_t(kMostScenePoints))
+      r.fail(*array.get(i), "jelly",
+             "more than " + std::to_string(kMostScenePoints) + " points in all");
+    bodies.push_back(one.body);
+    states.push_back(std::move(one.state));
+    spec->jellies.push_back(one.spec);
+  }
+  spec->body = std::make_shared<Body>(joinBodies(bodies));
+  const int n = spec->body->count();
+  State joined(n);
+  for (std::size_t p = 0; p < states.size(); ++p) {
+    const int first = spec->body->partFirst[p], count = states[p].points();
+    for (int q = 0; q < count; ++q) {
+      store(joined.p(), first + q, n, load(states[p].p(), q, count));
+      store(joined.v(), first + q, n, load(states[p].v(), q, count));
+    }
+  }
+  file->state = std::move(joined);
+  file->world.mass = spec->jellies[0].mass;
+  file->world.kElastic = spec->jellies[0].springs.k[0];
+  file->world.dElastic = spec->jellies[0].springs.d[0];
+}
+
+}  // namespace
+
+void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneSpec* spec) {
+  const toml::node* node = root.get("jelly");
+  if (!node) return;
+  if (const toml::array* array = node->as_array(); array && array->is_array_of_tables()) {
+    if (array->size() > 1) return readSeveral(r, *array, file, spec);
+    node = array->get(0);
+  }
+  if (!node->is_table()) r.fail(*node, "jelly", "expected a [jelly] table or [[jelly]] tables");
+  const std::string path = root.get("jelly")->is_array() ? "jelly[1]." : "jelly.";
+  ReadJelly one = readOne(r, *node->as_table(), path, file->world, file->state);
+  World& w = file->world;
+  spec->body = one.body;
+  file->state = std::move(one.state);
+  w.mass = one.spec.mass;
+  w.kElastic = one.kElastic;
+  w.dElastic = one.dElastic;
+  if (one.perKind) spec->springs = one.spec.springs;
+  spec->selfContact = one.spec.selfContact;
+}
+
+namespace {
+
+// Whether point x is strictly inside the box (an obstacle of shape Container), or [-2, 2]^3.
+bool insideBox(Vec3 x, Vec3 lower, Vec3 upper) {
+  return x.x >= lower.x && x.x <= upper.x && x.y >= lower.y && x.y <= upper.y && x.z >= lower.z &&
+         x.z <= upper.z;
+}
+
+}  // namespace
+
+void checkJellies(const Reader& r, const toml::table& root, const WorldFile& file,
+                  const SceneSpec& spec) {
+  if (spec.jellies.empty()) return;
+  const Body& body = *spec.body;
+  const toml::array& tables = *root.get("jelly")->as_array();
+  const int n = body.count();
+  const double* p = file.state.p();
+  auto fail = [&](int part, const std::string& what) {
+    r.fail(*tables.get(part), "jelly[" + std::to_string(part + 1) + "].offset", what);
+  };
+  if (spec.boundsPresent) {
+    const Vec3 lower =
+        spec.bounds ? spec.bounds->lower : Vec3{-kBoxHalfSize, -kBoxHalfSize, -kBoxHalfSize};
+    const Vec3 upper =
+        spec.bounds ? spec.bounds->upper : Vec3{kBoxHalfSize, kBoxHalfSize, kBoxHalfSize};
+    for (int q = 0; q < n; ++q)
+      if (!insideBox(load(p, q, n), lower, upper))
+        fail(body.partOf(q), "jelly " + std::to_string(body.partOf(q) + 1) +
+                                 " starts outside the bounding box (its point " + body.label(q) +
+                                 ")");
+  }
+  // Closer than the contact distance: the contact's own pairs at the start.
+  std::vector<ContactPart> parts;
+  for (std::size_t i = 0; i < body.parts.size(); ++i) {
+    const double distance = spec.bodyContact->distance;
+    parts.push_back({distance > 0 ? distance / 2 : body.parts[i]->spacing / 2, false});
+  }
+  const BodyContactTerm contact(body, parts, *spec.bodyContact);
+  for (const ContactPair& pair : contact.contacts(p))
+    fail(body.partOf(pair.b),
+         "jelly " + std::to_string(body.partOf(pair.b) + 1) + " starts overlapping jelly " +
+             std::to_string(body.partOf(pair.a) + 1) + ": points " + body.label(pair.a) + " and " +
+             body.label(pair.b) + " are closer than their contact distance " +
+             Reader::textOf(pair.distance) + " m");
+  // Wholly inside another: one of its points inside the other's surface.
+  for (std::size_t a = 0; a < body.parts.size(); ++a)
+    for (std::size_t b = 0; b < body.parts.size(); ++b) {
+      if (a == b || isSheet(*body.parts[b])) continue;
+      const int q = body.partFirst[a];
+      if (std::fabs(windingNumber(body, static_cast<int>(b), p, load(p, q, n))) > 0.5)
+        fail(static_cast<int>(a),
+             "jelly " + std::to_string(a + 1) + " starts inside jelly " + std::to_string(b + 1));
+    }
+}
+
+}  // namespace jello

@@ -1,0 +1,225 @@
+// model/bodycontact.cpp: contact between bodies and of a body with itself (bodycontact.h).
+
+#include "model/bodycontact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+
+#include "core/assert.h"
+
+namespace jello {
+
+namespace {
+
+// A cell coordinate, clamped so that three fit in a 63-bit key (a point that far is diverged; the
+// step's check catches it).
+constexpr std::int64_t kCellReach = std::int64_t(1) << 20;
+std::int64_t cellCoordinate(double x, double cell) {
+  const double c = std::floor(x / cell);
+  if (!(c > -double(kCellReach))) return 0;  // also NaN
+  if (!(c < double(kCellReach - 2))) return 2 * kCellReach - 2;
+  return static_cast<std::int64_t>(c) + kCellReach;
+}
+std::int64_t cellKey(std::int64_t x, std::int64_t y, std::int64_t z) {
+  return (x << 42) | (y << 21) | z;
+}
+
+}  // namespace
+
+BodyContactTerm::BodyContactTerm(const Body& body, std::vector<ContactPart> parts,
+                                 const BodyContactSpec& spec)
+    : ForceTerm(body.count()), parts_(std::move(parts)) {
+  JELLO_ASSERT(parts_.size() == (body.joined() ? body.parts.size() : 1u));
+  law_.shape = ObstacleShape::Sphere;
+  law_.spring = spec.spring;
+  law_.friction = spec.friction;
+  const int n = body.count();
+  partOf_.resize(n);
+  gridOf_.resize(n);
+  radiusOf_.resize(n);
+  for (int q = 0; q < n; ++q) {
+    partOf_[q] = body.partOf(q);
+    gridOf_[q] = body.index(q);
+    radiusOf_[q] = parts_[partOf_[q]].radius;
+    JELLO_ASSERT(radiusOf_[q] > 0);
+  }
+  // A part takes part when there is another, or when it touches itself.
+  for (int q : body.surfacePoints)
+    if (parts_.size() > 1 || parts_[partOf_[q]].selfContact) candidates_.push_back(q);
+  for (const ContactPart& part : parts_) cell_ = std::max(cell_, 2 * part.radius);
+}
+
+bool BodyContactTerm::mayTouch(int a, int b) const {
+  if (partOf_[a] != partOf_[b]) return true;
+  if (!parts_[partOf_[a]].selfContact) return false;
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::abs(gridOf_[a][axis] - gridOf_[b][axis]) > kSelfNeighbourhood) return true;
+  return false;
+}
+
+std::vector<int> BodyContactTerm::activeCandidates(const double* p) const {
+  // Each part's box about its surface points; a point of a part without self-contact may touch
+  // only where another part's box, grown by the cell edge, reaches it.
+  const int n = pointCount();
+  std::vector<Bounds> box(
+      parts_.size(), Bounds{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}});
+  for (int q : candidates_) {
+    const Vec3 x = load(p, q, n);
+    Bounds& b = box[partOf_[q]];
+    b.lower = {std::min(b.lower.x, x.x), std::min(b.lower.y, x.y), std::min(b.lower.z, x.z)};
+    b.upper = {std::max(b.upper.x, x.x), std::max(b.upper.y, x.y), std::max(b.upper.z, x.z)};
+  }
+  std::vector<int> active;
+  for (int q : candidates_) {
+    const int part = partOf_[q];
+    bool near = parts_[part].selfContact;
+    const Vec3 x = load(p, q, n);
+    for (std::size_t other = 0; other < parts_.size() && !near; ++other) {
+      if (int(other) == part) continue;
+      const Bounds& b = box[other];
+      near = x.x >= b.lower.x - cell_ && x.x <= b.upper.x + cell_ && x.y >= b.lower.y - cell_ &&
+             x.y <= b.upper.y + cell_ && x.z >= b.lower.z - cell_ && x.z <= b.upper.z + cell_;
+    }
+    // A point that is not finite goes in too: the step's check reports the divergence.
+    if (near || !std::isfinite(x.x + x.y + x.z)) active.push_back(q);
+  }
+  return active;
+}
+
+std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
+  const int n = pointCount();
+  struct Entry {
+    std::int64_t key;
+    int point;
+    bool operator<(const Entry& o) const {
+      return key < o.key || (key == o.key && point < o.point);
+    }
+  };
+  const std::vector<int> active = activeCandidates(p);
+  std::vector<Entry> sorted;
+  std::vector<std::array<std::int64_t, 3>> cellOf(active.size());
+  sorted.reserve(active.size());
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const Vec3 x = load(p, active[i], n);
+    cellOf[i] = {cellCoordinate(x.x, cell_), cellCoordinate(x.y, cell_),
+                 cellCoordinate(x.z, cell_)};
+    sorted.push_back({cellKey(cellOf[i][0], cellOf[i][1], cellOf[i][2]), active[i]});
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<ContactPair> out;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const int a = active[i];
+    const Vec3 pa = load(p, a, n);
+    // The 27 cells about a's as 9 runs of keys: z - 1 .. z + 1 are consecutive keys.
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const std::int64_t x = cellOf[i][0] + dx, y = cellOf[i][1] + dy, z = cellOf[i][2];
+        const std::int64_t first = cellKey(x, y, z - 1), last = cellKey(x, y, z + 1);
+        for (auto at = std::lower_bound(sorted.begin(), sorted.end(), Entry{first, -1});
+             at != sorted.end() && at->key <= last; ++at) {
+          const int b = at->point;
+          if (b <= a || !mayTouch(a, b)) continue;
+          const double distance = radiusOf_[a] + radiusOf_[b];
+          const Vec3 L = pa - load(p, b, n);
+          if (dot(L, L) < distance * distance) out.push_back({a, b, distance});
+        }
+      }
+  }
+  std::sort(out.begin(), out.end(), [](const ContactPair& x, const ContactPair& y) {
+    return x.a < y.a || (x.a == y.a && x.b < y.b);
+  });
+  return out;
+}
+
+Obstacle BodyContactTerm::ballOf(const ContactPair& pair) const {
+  Obstacle ball = law_;
+  ball.radius = pair.distance;
+  return ball;
+}
+
+Vec3 BodyContactTerm::pairForce(const ContactPair& pair, Vec3 L, Vec3 w) const {
+  return obstacleForce(ballOf(pair), L, w);
+}
+
+double BodyContactTerm::smallestGap(const double* p) const {
+  const int n = pointCount();
+  double smallest = INFINITY;
+  if (parts_.size() < 2) return smallest;
+  // Every pair of candidates of different parts within a cell's reach, as the broad phase finds
+  // them, and beyond it the cell edge is a bound.
+  for (const ContactPair& pair : contacts(p))
+    if (partOf_[pair.a] != partOf_[pair.b])
+      smallest = std::min(smallest, length(load(p, pair.a, n) - load(p, pair.b, n)));
+  return smallest;
+}
+
+std::vector<std::pair<int, int>> BodyContactTerm::pairsAt(const double* p) const {
+  std::vector<std::pair<int, int>> out;
+  for (const ContactPair& pair : contacts(p)) out.emplace_back(pair.a, pair.b);
+  return out;
+}
+
+int BodyContactTerm::pointsInContact(const double* p) const {
+  if (law_.spring.k == 0 && law_.spring.d == 0) return 0;
+  std::vector<int> touching;
+  for (const ContactPair& pair : contacts(p))
+    touching.push_back(pair.a), touching.push_back(pair.b);
+  std::sort(touching.begin(), touching.end());
+  return static_cast<int>(std::unique(touching.begin(), touching.end()) - touching.begin());
+}
+
+void BodyContactTerm::addForcesOn(PointRange points, const double* p, const double* v,
+                                  const Bounds*, double* force) const {
+  // Each pair's force joins its ends in the pairs' order: a point's sum is the same whichever
+  // range asks for it.
+  const int n = pointCount();
+  for (const ContactPair& pair : contacts(p)) {
+    const bool aIn = pair.a >= points.begin && pair.a < points.end;
+    const bool bIn = pair.b >= points.begin && pair.b < points.end;
+    if (!aIn && !bIn) continue;
+    const Vec3 f = pairForce(pair, load(p, pair.a, n) - load(p, pair.b, n),
+                             load(v, pair.a, n) - load(v, pair.b, n));
+    if (aIn) addAt(force, pair.a, f);
+    if (bIn) store(force, pair.b, n, load(force, pair.b, n) - f);
+  }
+}
+
+void BodyContactTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
+  const int n = pointCount();
+  Block3 dFdL, dFdw;
+  for (const ContactPair& pair : contacts(p)) {
+    obstacleJacobian(ballOf(pair), load(p, pair.a, n) - load(p, pair.b, n),
+                     load(v, pair.a, n) - load(v, pair.b, n), &dFdL, &dFdw);
+    sink->addPair(dFdL, dFdw);
+  }
+}
+
+void BodyContactTerm::addEnergy(const double* p, double* energy) const {
+  const int n = pointCount();
+  for (const ContactPair& pair : contacts(p)) {
+    const double depth = pair.distance - length(load(p, pair.a, n) - load(p, pair.b, n));
+    *energy += 0.5 * law_.spring.k * depth * depth;
+  }
+}
+
+void BodyContactTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {
+  bool self = false;
+  for (const ContactPart& part : parts_) self = self || part.selfContact;
+  std::string what = parts_.size() > 1 ? "contact between bodies" : "";
+  if (self) what += std::string(what.empty() ? "" : " and ") + "self-contact";
+  kept->push_back(what + (law_.friction.muStatic > 0 ? " with friction" : ""));
+}
+
+std::vector<TermLine> BodyContactTerm::describe(const double* p) const {
+  std::string text = textf("k %.9g N/m, d %.9g N s/m, %zu surface points", law_.spring.k,
+                           law_.spring.d, candidates_.size());
+  if (law_.friction.muStatic > 0)
+    text += textf(", friction mu_s %.6g, mu_d %.6g (eps %.3g m/s)", law_.friction.muStatic,
+                  law_.friction.muDynamic, law_.friction.speed);
+  text += textf(" (%d points in contact)", pointsInContact(p));
+  return {{"contact", text}};
+}
+
+}  // namespace jello
