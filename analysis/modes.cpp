@@ -469,6 +469,7 @@ Linearisation lineariseAtRest(const World& world) {
     bodyOnly->body = world.scene->body;
     bodyOnly->springs = world.scene->springs;
     bodyOnly->pinned = world.scene->pinned;
+    bodyOnly->jellies = world.scene->jellies;  // each jelly's mass and springs
     bodyOnly->boundsPresent = false;
     springs.scene = bodyOnly;
     springs.hasPlane = false;

@@ -48,9 +48,13 @@ StiffnessSweep sweepStiffness(const World& world, const State& initial, double t
   for (int e = -3; e <= 3; ++e) {
     World w = world;
     w.kElastic = base * std::pow(2.0, e);
-    if (world.scene && world.scene->springs) {  // a scene's springs by kind scale alike
+    // A scene's springs by kind, and each of its jellies' springs, scale alike.
+    if (world.scene && (world.scene->springs || !world.scene->jellies.empty())) {
       auto scaled = std::make_shared<SceneSpec>(*world.scene);
-      for (double& k : scaled->springs->k) k *= std::pow(2.0, e);
+      if (scaled->springs)
+        for (double& k : scaled->springs->k) k *= std::pow(2.0, e);
+      for (JellySpec& jelly : scaled->jellies)
+        for (double& k : jelly.springs.k) k *= std::pow(2.0, e);
       w.scene = scaled;
     }
     Linearisation rest = lineariseAtRest(w);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/modes.h"
 #include "io/inputerror.h"
 #include "io/scenereader.h"
 #include "io/statefile.h"
@@ -453,6 +454,20 @@ friction_dynamic = 0.4
 TEST(BodyContact, OneJellyWithoutSelfContactHasNoContactTerm) {
   const WorldFile file = scene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n");
   EXPECT_EQ(contactTerm(makeModel(file.world, file.state)), nullptr);
+}
+
+// --check's modes at rest: two jellies apart are each jelly's modes; the fastest is the lighter's.
+TEST(SceneJellies, TheModesAtRestAreEachJellysOwn) {
+  const std::string one =
+      "[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\nspacing = 0.1\nstiffness = 500\n";
+  const double alone = lineariseAtRest(scene(one).world).highestFrequency;
+  std::string two = kHeadOn;
+  const double both = lineariseAtRest(scene(two).world).highestFrequency;
+  EXPECT_GT(alone, 100);
+  EXPECT_NEAR(both, alone, 1e-9 * alone);
+  two.replace(two.rfind("stiffness = 500"), 15, "stiffness = 500\nmass = 0.00048828125");
+  // Four times lighter points: twice as fast (omega^2 = k / m).
+  EXPECT_NEAR(lineariseAtRest(scene(two).world).highestFrequency, 2 * alone, 1e-6 * alone);
 }
 
 TEST(StateFiles, ARunSavedAndContinuedIsTheRunThatWentOnBitForBit) {
