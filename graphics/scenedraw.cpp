@@ -29,6 +29,8 @@ constexpr float kPinColour[3] = {0.08f, 0.08f, 0.1f};
 constexpr double kPinRadius = 0.07;  // m: half the lattice's spacing of 1/7 m
 // Tessellation of a ball: enough for a smooth outline at the window's size.
 constexpr int kBallSlices = 48, kBallStacks = 24, kPinSlices = 12, kPinStacks = 6;
+// Solid obstacles are pushed back in depth by this (glPolygonOffset), more than the jelly (1, 1).
+constexpr float kObstacleOffsetFactor = 4.0f, kObstacleOffsetUnits = 16.0f;
 
 void vertex(Vec3 p) { glVertex3d(p.x, p.y, p.z); }
 void normal(Vec3 n) { glNormal3d(n.x, n.y, n.z); }
@@ -154,11 +156,17 @@ void drawSolidObstacles(const Model& model) {
   if (!spec) return;
   glEnable(GL_LIGHTING);
   glShadeModel(GL_SMOOTH);
+  // Pushed back in depth further than the jelly's surface is (showCube.cpp): a surface that
+  // rests on an obstacle, its flat triangles chords within a millimetre of a ball, is drawn over
+  // it instead of the ball showing through in patches.
+  glPolygonOffset(kObstacleOffsetFactor, kObstacleOffsetUnits);
+  glEnable(GL_POLYGON_OFFSET_FILL);
   for (const Obstacle& o : spec->obstacles) {
     glColor3fv(kSolidColour);
     if (o.shape == ObstacleShape::Sphere) drawBall(o.centre, o.radius, kBallSlices, kBallStacks);
     if (o.shape == ObstacleShape::Box) drawSolidBox({o.lower, o.upper});
   }
+  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 void drawHalfSpaces(const Model& model, const std::vector<Edge>& clip) {

@@ -88,44 +88,121 @@ std::vector<int> BodyContactTerm::activeCandidates(const double* p) const {
   return active;
 }
 
+namespace {
+
+// The occupied cells of the broad phase's grid: each cell's run of candidates in the sorted list.
+// Where the candidates' cells span a box of at most kDenseCellsPerRun cells a run (bodies near each
+// other), a dense array over that box finds a cell's run in one read; otherwise an open-addressing
+// table (a power of two, at most half full) by the cell's key.
+constexpr std::size_t kDenseCellsPerRun = 64;
+
+class CellTable {
+ public:
+  struct Run {
+    std::int64_t key;
+    int begin, end;  // in the sorted list
+  };
+  CellTable(const std::vector<std::int64_t>& sortedKeys,
+            const std::vector<std::array<std::int64_t, 3>>& cells) {
+    for (int i = 0; i < static_cast<int>(sortedKeys.size()); ++i)
+      if (runs_.empty() || runs_.back().key != sortedKeys[i])
+        runs_.push_back({sortedKeys[i], i, i + 1});
+      else
+        runs_.back().end = i + 1;
+    if (cells.empty()) return;
+    low_ = high_ = cells[0];
+    for (const auto& c : cells)
+      for (int axis = 0; axis < 3; ++axis)
+        low_[axis] = std::min(low_[axis], c[axis]), high_[axis] = std::max(high_[axis], c[axis]);
+    for (int axis = 0; axis < 3; ++axis) span_[axis] = high_[axis] - low_[axis] + 1;
+    const double volume = double(span_[0]) * double(span_[1]) * double(span_[2]);
+    if (volume <= double(kDenseCellsPerRun * runs_.size() + 4096)) {
+      dense_.assign(static_cast<std::size_t>(volume), -1);
+      for (int r = 0; r < static_cast<int>(runs_.size()); ++r) dense_[denseIndex(runs_[r].key)] = r;
+      return;
+    }
+    std::size_t size = 16;
+    while (size < 2 * runs_.size()) size *= 2, --shift_;
+    slots_.assign(size, -1);
+    mask_ = size - 1;
+    for (int r = 0; r < static_cast<int>(runs_.size()); ++r) {
+      std::size_t at = hash(runs_[r].key);
+      while (slots_[at] >= 0) at = (at + 1) & mask_;
+      slots_[at] = r;
+    }
+  }
+  // The run of cell (x, y, z), or null when no candidate is in it.
+  const Run* find(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    if (!dense_.empty()) {
+      if (x < low_[0] || y < low_[1] || z < low_[2] || x > high_[0] || y > high_[1] || z > high_[2])
+        return nullptr;
+      const int r = dense_[static_cast<std::size_t>(
+          ((x - low_[0]) * span_[1] + (y - low_[1])) * span_[2] + (z - low_[2]))];
+      return r < 0 ? nullptr : &runs_[r];
+    }
+    if (slots_.empty()) return nullptr;
+    const std::int64_t key = cellKey(x, y, z);
+    for (std::size_t at = hash(key);; at = (at + 1) & mask_) {
+      if (slots_[at] < 0) return nullptr;
+      if (runs_[slots_[at]].key == key) return &runs_[slots_[at]];
+    }
+  }
+
+ private:
+  std::size_t denseIndex(std::int64_t key) const {
+    const std::int64_t x = key >> 42, y = (key >> 21) & ((1 << 21) - 1), z = key & ((1 << 21) - 1);
+    return static_cast<std::size_t>(((x - low_[0]) * span_[1] + (y - low_[1])) * span_[2] +
+                                    (z - low_[2]));
+  }
+  // Fibonacci hashing: the top bits of the key times 2^64 / golden ratio.
+  std::size_t hash(std::int64_t key) const {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ull) >>
+                                    shift_);
+  }
+  std::vector<Run> runs_;
+  std::array<std::int64_t, 3> low_{}, high_{}, span_{};
+  std::vector<int> dense_, slots_;
+  std::size_t mask_ = 0;
+  int shift_ = 60;
+};
+
+}  // namespace
+
 std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
   const int n = pointCount();
-  struct Entry {
-    std::int64_t key;
-    int point;
-    bool operator<(const Entry& o) const {
-      return key < o.key || (key == o.key && point < o.point);
-    }
-  };
   const std::vector<int> active = activeCandidates(p);
-  std::vector<Entry> sorted;
+  // The candidates by cell key, then point: (key, point) pairs sorted.
+  std::vector<std::pair<std::int64_t, int>> sorted;
   std::vector<std::array<std::int64_t, 3>> cellOf(active.size());
   sorted.reserve(active.size());
   for (std::size_t i = 0; i < active.size(); ++i) {
     const Vec3 x = load(p, active[i], n);
     cellOf[i] = {cellCoordinate(x.x, cell_), cellCoordinate(x.y, cell_),
                  cellCoordinate(x.z, cell_)};
-    sorted.push_back({cellKey(cellOf[i][0], cellOf[i][1], cellOf[i][2]), active[i]});
+    sorted.emplace_back(cellKey(cellOf[i][0], cellOf[i][1], cellOf[i][2]), active[i]);
   }
   std::sort(sorted.begin(), sorted.end());
+  std::vector<std::int64_t> keys(sorted.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) keys[i] = sorted[i].first;
+  const CellTable cells(keys, cellOf);
   std::vector<ContactPair> out;
   for (std::size_t i = 0; i < active.size(); ++i) {
     const int a = active[i];
     const Vec3 pa = load(p, a, n);
-    // The 27 cells about a's as 9 runs of keys: z - 1 .. z + 1 are consecutive keys.
     for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy) {
-        const std::int64_t x = cellOf[i][0] + dx, y = cellOf[i][1] + dy, z = cellOf[i][2];
-        const std::int64_t first = cellKey(x, y, z - 1), last = cellKey(x, y, z + 1);
-        for (auto at = std::lower_bound(sorted.begin(), sorted.end(), Entry{first, -1});
-             at != sorted.end() && at->key <= last; ++at) {
-          const int b = at->point;
-          if (b <= a || !mayTouch(a, b)) continue;
-          const double distance = radiusOf_[a] + radiusOf_[b];
-          const Vec3 L = pa - load(p, b, n);
-          if (dot(L, L) < distance * distance) out.push_back({a, b, distance});
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const CellTable::Run* run =
+              cells.find(cellOf[i][0] + dx, cellOf[i][1] + dy, cellOf[i][2] + dz);
+          if (!run) continue;
+          for (int at = run->begin; at < run->end; ++at) {
+            const int b = sorted[at].second;
+            if (b <= a || !mayTouch(a, b)) continue;
+            const double distance = radiusOf_[a] + radiusOf_[b];
+            const Vec3 L = pa - load(p, b, n);
+            if (dot(L, L) < distance * distance) out.push_back({a, b, distance});
+          }
         }
-      }
   }
   std::sort(out.begin(), out.end(), [](const ContactPair& x, const ContactPair& y) {
     return x.a < y.a || (x.a == y.a && x.b < y.b);

@@ -451,6 +451,40 @@ friction_dynamic = 0.4
   EXPECT_LT(deepest, 0.02);
 }
 
+// The broad phase against every pair, on points scattered far apart (its hashed cells) and
+// packed close (its dense array of cells), in two jellies and one with self-contact.
+TEST(BodyContact, TheBroadPhaseFindsEveryPairThatEveryPairCheckFinds) {
+  std::string text = kHeadOn;
+  text.replace(text.find("stiffness = 500"), 15, "stiffness = 500\nself_contact = true");
+  const WorldFile file = scene(text);
+  const Model model = makeModel(file.world, file.state);
+  const BodyContactTerm& term = *contactTerm(model);
+  const Body& body = model.body();
+  const int n = body.count();
+  std::mt19937 random(17);
+  for (double size : {40.0, 0.6}) {
+    std::uniform_real_distribution<double> where(-size / 2, size / 2);
+    State s = file.state;
+    for (int c = 0; c < 3 * n; ++c) s.p()[c] = where(random);
+    // A few points put next to others, so that the scattered case has pairs too.
+    for (int q = 0; q < 64; q += 3)
+      store(s.p(), q + 64, n, load(s.p(), q, n) + Vec3{0.03, -0.02, 0.05});
+    std::vector<std::pair<int, int>> expected;
+    for (int a : body.surfacePoints)
+      for (int b : body.surfacePoints) {
+        if (b <= a) continue;
+        const auto i = body.index(a), j = body.index(b);
+        const bool near = std::max({std::abs(i[0] - j[0]), std::abs(i[1] - j[1]),
+                                    std::abs(i[2] - j[2])}) <= kSelfNeighbourhood;
+        const bool self = body.partOf(a) == body.partOf(b);
+        if (self && (body.partOf(a) == 1 || near)) continue;
+        if (length(load(s.p(), a, n) - load(s.p(), b, n)) < 0.1) expected.emplace_back(a, b);
+      }
+    EXPECT_EQ(term.pairsAt(s.p()), expected) << size;
+    EXPECT_GT(expected.size(), size > 1 ? 10u : 40u);
+  }
+}
+
 TEST(BodyContact, OneJellyWithoutSelfContactHasNoContactTerm) {
   const WorldFile file = scene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n");
   EXPECT_EQ(contactTerm(makeModel(file.world, file.state)), nullptr);
