@@ -208,6 +208,12 @@ void checkSceneText(const std::uint8_t* data, std::size_t size) {
     if (spec.pinned[i] < 0 || spec.pinned[i] >= points ||
         (i > 0 && spec.pinned[i] <= spec.pinned[i - 1]))
       failed("pins", "not sorted, distinct points");
+  // Several jellies: each with a mass above 0, and the joined body's parts cover every point.
+  for (const JellySpec& jelly : spec.jellies)
+    if (!(jelly.mass > 0)) failed("a jelly's mass", "not above 0");
+  if (!spec.jellies.empty() &&
+      (spec.body->parts.size() != spec.jellies.size() || spec.body->partFirst.back() != points))
+    failed("several jellies", "their parts are not the body's points");
   const Model model = makeModel(file.world, file.state);
   if (model.points() != points) failed("a scene's model", "not as many points as its state");
   std::vector<double> force(3 * std::size_t(points));

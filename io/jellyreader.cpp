@@ -237,6 +237,17 @@ bool insideBox(Vec3 x, Vec3 lower, Vec3 upper) {
          x.z <= upper.z;
 }
 
+// The bounds of points [first, end) of a per-point array of n points.
+Bounds partBounds(const double* p, int first, int end, int n) {
+  Bounds b{load(p, first, n), load(p, first, n)};
+  for (int q = first; q < end; ++q) {
+    const Vec3 x = load(p, q, n);
+    b.lower = {std::min(b.lower.x, x.x), std::min(b.lower.y, x.y), std::min(b.lower.z, x.z)};
+    b.upper = {std::max(b.upper.x, x.x), std::max(b.upper.y, x.y), std::max(b.upper.z, x.z)};
+  }
+  return b;
+}
+
 }  // namespace
 
 void checkJellies(const Reader& r, const toml::table& root, const WorldFile& file,
@@ -273,12 +284,18 @@ void checkJellies(const Reader& r, const toml::table& root, const WorldFile& fil
              std::to_string(body.partOf(pair.a) + 1) + ": points " + body.label(pair.a) + " and " +
              body.label(pair.b) + " are closer than their contact distance " +
              Reader::textOf(pair.distance) + " m");
-  // Wholly inside another: one of its points inside the other's surface.
+  // Wholly inside another: one of its points inside the other's surface (where it is inside the
+  // other's bounding box at all).
+  std::vector<Bounds> box;
+  for (std::size_t b = 0; b < body.parts.size(); ++b)
+    box.push_back(partBounds(p, body.partFirst[b], body.partFirst[b + 1], n));
   for (std::size_t a = 0; a < body.parts.size(); ++a)
     for (std::size_t b = 0; b < body.parts.size(); ++b) {
       if (a == b || isSheet(*body.parts[b])) continue;
       const int q = body.partFirst[a];
-      if (std::fabs(windingNumber(body, static_cast<int>(b), p, load(p, q, n))) > 0.5)
+      const Vec3 x = load(p, q, n);
+      if (!insideBox(x, box[b].lower, box[b].upper)) continue;
+      if (std::fabs(windingNumber(body, static_cast<int>(b), p, x)) > 0.5)
         fail(static_cast<int>(a),
              "jelly " + std::to_string(a + 1) + " starts inside jelly " + std::to_string(b + 1));
     }

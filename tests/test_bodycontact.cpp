@@ -110,6 +110,8 @@ TEST(BodyContact, HeadOnJelliesKeepTheirMomentumAndNeverEnterEachOther) {
     gap = std::min(gap, contactTerm(model)->smallestGap(run.state().p()));
     touching += contactTerm(model)->pointsInContact(run.state().p()) > 0;
   }
+  RecordProperty("momentum_drift", textf("%.3g", drift));
+  RecordProperty("smallest_gap_m", textf("%.6g", gap));
   EXPECT_LT(drift, 1e-9);
   EXPECT_LT(inside, 0.5);
   EXPECT_GT(touching, 50);  // they met
@@ -518,6 +520,73 @@ TEST(StateFiles, ARunSavedAndContinuedIsTheRunThatWentOnBitForBit) {
   Simulation second(model, saved, Integrator::RK4, 0.0002);
   ASSERT_TRUE(second.advance(300).ran());
   EXPECT_EQ(second.state().y, whole.state().y);
+}
+
+// From the command line: --save-state, then a scene that starts from the file, runs on as the
+// one run did, byte for byte in the saved file.
+TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
+  const std::string dir = test::makeTempDir();
+  test::writeText(dir + "/two.toml", kHeadOn);
+  test::writeText(dir + "/more.toml", std::string("state = \"half.csv\"\n") + kHeadOn);
+  const auto run = [&](const std::string& scene, const char* steps, const std::string& out) {
+    return test::runJelloArgs(
+        {"--headless", "--steps", steps, "--save-state", dir + "/" + out, dir + "/" + scene});
+  };
+  ASSERT_EQ(run("two.toml", "400", "whole.csv").status, 0);
+  ASSERT_EQ(run("two.toml", "200", "half.csv").status, 0);
+  ASSERT_EQ(run("more.toml", "200", "end.csv").status, 0);
+  const std::string whole = test::readText(dir + "/whole.csv");
+  EXPECT_EQ(test::readText(dir + "/end.csv"), whole);
+  EXPECT_EQ(std::count(whole.begin(), whole.end(), '\n'), 129);  // the header and 128 points
+  // A state of another body is refused with its line and field, exit status 2.
+  test::writeText(dir + "/other.toml",
+                  "state = \"half.csv\"\n[jelly]\nshape = \"lattice\"\n"
+                  "size = [3, 3, 3]\n");
+  const test::CommandResult other = test::runJelloArgs({"--headless", dir + "/other.toml"});
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.err.find("other.toml:1: " + dir +
+                           "/half.csv:29: more points than the scene's "
+                           "body has (27) (body) (state)"),
+            std::string::npos)
+      << other.err;
+  test::removeTree(dir);
+}
+
+// Overlapping jellies from the command line: one line, exit status 2, nothing run.
+TEST(SceneJellies, OverlappingJelliesAreRefusedByJelloWithExitStatusTwo) {
+  const std::string dir = test::makeTempDir();
+  std::string text = kHeadOn;
+  text.replace(text.find("offset = [0.2"), 13, "offset = [0.1");
+  test::writeText(dir + "/overlap.toml", text);
+  const test::CommandResult r = test::runJelloArgs({"--headless", dir + "/overlap.toml"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("overlap.toml:16: jelly 2 starts overlapping jelly 1"), std::string::npos);
+  EXPECT_EQ(r.out, "");
+  test::removeTree(dir);
+}
+
+// IMPLICIT through the collision, its Jacobian's pattern following the pairs in contact: the
+// jellies part, keeping their momentum to the Newton solve's tolerance.
+TEST(BodyContact, ImplicitStepsThroughTheCollision) {
+  const WorldFile file = scene(kHeadOn);
+  const Model model = makeModel(file.world, file.state);
+  Simulation run(model, file.state, Integrator::Implicit, 0.001);
+  const Vec3 before = momentum(model, file.state);
+  const double scale = 0.5 * model.points() * model.pointMass[0];
+  double drift = 0, inside = 0;
+  for (int step = 0; step < 400; ++step) {
+    ASSERT_TRUE(run.advance(1).ran());
+    drift = std::max(drift, length(momentum(model, run.state()) - before) / scale);
+    if (step % 5 == 0) inside = std::max(inside, deepestInside(model, run.state()));
+  }
+  const Body& body = model.body();
+  Vec3 first;
+  for (int q = 0; q < body.partFirst[1]; ++q) first += load(run.state().v(), q, body.count());
+  RecordProperty("momentum_drift", textf("%.3g", drift));
+  EXPECT_LT(first.x / body.partFirst[1], -0.1);  // parted
+  EXPECT_LT(inside, 0.5);
+  EXPECT_LT(drift, 1e-6);
 }
 
 std::string refusal(const std::string& text) {
