@@ -194,10 +194,12 @@ Outcome checkDump(const RunOptions& options, const World& world) {
       return failed("--save-state " + *options.saveStatePath + ": " + why);
   if (!options.dumpPath) return succeeded();
   // A course world file holds the 8x8x8 cube and nothing else.
-  if (!bodyOf(world).courseLattice)
+  const Body& body = bodyOf(world);
+  if (!body.courseLattice)
     return failed("--dump " + *options.dumpPath + ": a world file holds only the course's " +
-                  "8x8x8 cube, and this scene's jelly is " + bodyOf(world).what +
-                  "; use --export for its meshes");
+                  "8x8x8 cube, and this scene " +
+                  (body.joined() ? "has " + body.what : "'s jelly is " + body.what) +
+                  "; use --save-state for every point or --export for the surface");
   std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
   if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
   return succeeded();

@@ -419,6 +419,8 @@ friction_dynamic = 0.4
   EXPECT_LT(deepest, 0.02);
 }
 
+// The broad phase against every pair, on points scattered far apart (its hashed cells) and
+// packed close (its dense array of cells), in two jellies and one with self-contact.
 TEST(BodyContact, TheBroadPhaseFindsEveryPairThatEveryPairCheckFinds) {
   std::string text = kHeadOn;
   text.replace(text.find("stiffness = 500"), 15, "stiffness = 500\nself_contact = true");
@@ -456,6 +458,8 @@ TEST(BodyContact, OneJellyWithoutSelfContactHasNoContactTerm) {
   EXPECT_EQ(contactTerm(makeModel(file.world, file.state)), nullptr);
 }
 
+// IMPLICIT through the collision, its Jacobian's pattern following the pairs in contact: the
+// jellies part, keeping their momentum to the Newton solve's tolerance.
 TEST(BodyContact, ImplicitStepsThroughTheCollision) {
   const WorldFile file = scene(kHeadOn);
   const Model model = makeModel(file.world, file.state);

@@ -30,6 +30,7 @@ std::string refusal(const std::string& text) {
   return "accepted";
 }
 
+// --check's modes at rest: two jellies apart are each jelly's modes; the fastest is the lighter's.
 TEST(SceneJellies, TheModesAtRestAreEachJellysOwn) {
   const std::string one =
       "[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\nspacing = 0.1\nstiffness = 500\n";
@@ -59,6 +60,8 @@ TEST(StateFiles, ARunSavedAndContinuedIsTheRunThatWentOnBitForBit) {
   EXPECT_EQ(second.state().y, whole.state().y);
 }
 
+// From the command line: --save-state, then a scene that starts from the file, runs on as the
+// one run did, byte for byte in the saved file.
 TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
   const std::string dir = test::makeTempDir();
   test::writeText(dir + "/two.toml", kHeadOn);
@@ -87,6 +90,21 @@ TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
   test::removeTree(dir);
 }
 
+// --dump writes a course world, which holds one cube: several jellies are refused, pointing to
+// --save-state.
+TEST(StateFiles, DumpRefusesSeveralJelliesAndNamesSaveState) {
+  const std::string dir = test::makeTempDir();
+  test::writeText(dir + "/two.toml", kHeadOn);
+  const test::CommandResult r = test::runJelloArgs(
+      {"--headless", "--steps", "1", "--dump", dir + "/out.w", dir + "/two.toml"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("this scene has 2 jellies; use --save-state for every point"),
+            std::string::npos)
+      << r.err;
+  test::removeTree(dir);
+}
+
+// Overlapping jellies from the command line: one line, exit status 2, nothing run.
 TEST(SceneJellies, OverlappingJelliesAreRefusedByJelloWithExitStatusTwo) {
   const std::string dir = test::makeTempDir();
   std::string text = kHeadOn;
