@@ -97,12 +97,18 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
   const double* v = y + 3 * n;
   double* a = dydt + 3 * n;
   computeForcesOn(model, points, p, v, reach, a, pull, springForce);
-  const double* mass = model.pointMass.data();
   JELLO_ASSERT(model.pointMass.size() == std::size_t(n));
   for (int axis = 0; axis < 3; ++axis) {
     const int first = axis * n + points.begin, end = axis * n + points.end;
     std::copy(v + first, v + end, dydt + first);
-    for (int c = first, q = points.begin; c < end; ++c, ++q) a[c] /= mass[q];
+    if (model.commonMass > 0) {  // one mass for every point: a division by one number
+      const double mass = model.commonMass;
+      for (int c = first; c < end; ++c) a[c] /= mass;
+    } else {
+      const double* mass = model.pointMass.data();
+      double* along = a + axis * n;
+      for (int q = points.begin; q < points.end; ++q) along[q] /= mass[q];
+    }
   }
   // A pinned point neither moves nor accelerates: every integrator keeps it exactly where it is.
   for (int q : model.pinned)

@@ -162,6 +162,9 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   model.forces = buildForceTerms(model.world, initial, choice);
   if (world.scene) model.pinned = world.scene->pinned;
   model.pointMass = pointMassesOf(model.world);
+  const auto& mass = model.pointMass;
+  if (std::all_of(mass.begin(), mass.end(), [&](double m) { return m == mass[0]; }))
+    model.commonMass = mass.empty() ? 0 : mass[0];
   JELLO_ASSERT(model.forces.terms.size() <= kMaxTerms);
   return model;
 }

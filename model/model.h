@@ -66,8 +66,10 @@ struct Model {
   ForceTerms forces;
   std::vector<int>
       pinned;  // the scene's pinned points (scenespec.h), sorted; none for a course world
-  // Each point's mass, kg: the world's mass for one jelly, each jelly's own for several.
+  // Each point's mass, kg: the world's mass for one jelly, each jelly's own for several; and
+  // that mass when every point has it (0 when they differ).
   std::vector<double> pointMass;
+  double commonMass = 0;
 
   Model() = default;
   Model(Model&&) = default;
