@@ -6,9 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "grader/sandbox.h"
 #include "test_support.h"
 
 namespace jello::test {
+
+// The fixtures of submissions (tests/data/submissions), one folder each.
+inline const std::string kSubmissions = std::string(JELLO_TEST_DATA) + "/submissions";
+
+// Whether the sandbox can be made on this machine (bubblewrap and its namespaces).
+inline bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
 
 // Runs ./grade; a whole class of fixtures takes a minute on two cores, more under sanitizers.
 inline CommandResult grade(const std::vector<std::string>& args) {

@@ -26,7 +26,7 @@
 namespace jello {
 namespace {
 
-WorldFile scene(const std::string& text) {
+WorldFile bodyScene(const std::string& text) {
   return parseScene(text, "test.toml", std::string(JELLO_SOURCE_DIR));
 }
 
@@ -267,10 +267,10 @@ TEST(SceneBodies, TheEightByEightLatticeOfASceneIsTheCourseCubeBitForBit) {
   // given as a lattice of 8 points of 1/7 m, over 1000 steps of a spinning start.
   const std::string rest =
       "gravity = [0, 0, -9.81]\n[[sphere]]\ncentre = [0, 0, -1.2]\nradius = 0.6\n";
-  const WorldFile given = scene(rest + "[jelly]\nvelocity = [0.5, 0, 1]\n");
-  const WorldFile lattice = scene(rest +
-                                  "[jelly]\nshape = \"lattice\"\nsize = [8, 8, 8]\n"
-                                  "velocity = [0.5, 0, 1]\n");
+  const WorldFile given = bodyScene(rest + "[jelly]\nvelocity = [0.5, 0, 1]\n");
+  const WorldFile lattice = bodyScene(rest +
+                                      "[jelly]\nshape = \"lattice\"\nsize = [8, 8, 8]\n"
+                                      "velocity = [0.5, 0, 1]\n");
   ASSERT_TRUE(lattice.world.scene->body && lattice.world.scene->body->courseLattice);
   const Model a = makeModel(given.world, given.state), b = makeModel(lattice.world, lattice.state);
   EXPECT_TRUE(b.forces.springs->rowKernel());
@@ -291,7 +291,7 @@ TEST(SceneBodies, TheEightByEightLatticeOfASceneIsTheCourseCubeBitForBit) {
 // (IMPLICIT with heavy damping: at rest within 3 s.)
 TEST(SceneBodies, ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK) {
   auto settle = [](double k, Vec3* pinForce, double* weight) {
-    const WorldFile f = scene(
+    const WorldFile f = bodyScene(
         "gravity = [0, 0, -9.81]\ndt = 5e-4\n[bounds]\npresent = false\n"
         "[jelly]\nshape = \"lattice\"\nsize = [16, 4, 4]\nspacing = 0.1\ntotal_mass = 1\n"
         "damping = 2\nstiffness = " +
@@ -331,7 +331,7 @@ TEST(SceneBodies, ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK) {
 TEST(SceneBodies, APointThatIsNotFiniteIsNamedByItsOwnGridIndex) {
   for (const char* jelly : {"shape = \"sphere\"\nradius = 0.4\nspacing = 0.2\n",
                             "shape = \"lattice\"\nsize = [4, 4, 32]\n"}) {
-    WorldFile f = scene(std::string("[jelly]\n") + jelly);
+    WorldFile f = bodyScene(std::string("[jelly]\n") + jelly);
     const Body& body = *f.world.scene->body;
     const int q = body.count() - 1;
     f.state.v()[coordIndex(q, 1, body.count())] = NAN;
@@ -346,7 +346,7 @@ TEST(SceneBodies, APointThatIsNotFiniteIsNamedByItsOwnGridIndex) {
 }
 
 TEST(SceneBodies, EveryIntegratorKeepsItsOrderOnAPinnedSphereJelly) {
-  const WorldFile f = scene(
+  const WorldFile f = bodyScene(
       "gravity = [0, 0, -9.81]\n[bounds]\npresent = false\n[jelly]\nshape = \"sphere\"\n"
       "radius = 0.4\nspacing = 0.2\nstiffness = {structural = 600, shear = 300, bend = 100}\n"
       "[[pin]]\nk = [0, 0]\n");
@@ -369,9 +369,10 @@ TEST(SceneBodies, EveryIntegratorKeepsItsOrderOnAPinnedSphereJelly) {
 TEST(SceneBodies, ALargeBodysDivergenceSuggestsAStepBelowTheAnalysedLimitWithoutAnalysing) {
   for (const char* pin : {"", "[[pin]]\ni = [0, 0]\n"}) {
     SCOPED_TRACE(*pin ? "pinned face" : "free");
-    WorldFile f = scene(std::string("dt = 0.01\n[jelly]\nshape = \"lattice\"\nsize = [9, 9, 9]\n"
-                                    "spacing = 0.125\nstiffness = 1000\ndamping = 1\n") +
-                        pin);
+    WorldFile f =
+        bodyScene(std::string("dt = 0.01\n[jelly]\nshape = \"lattice\"\nsize = [9, 9, 9]\n"
+                              "spacing = 0.125\nstiffness = 1000\ndamping = 1\n") +
+                  pin);
     const int n = f.state.points();
     ASSERT_GT(n, kNumPoints);
     for (int q = 0; q < n; ++q) f.state.p()[coordIndex(q, 0, n)] *= 1.1;

@@ -22,7 +22,6 @@ namespace {
 
 using test::contactTerm;
 using test::kHeadOn;
-using test::scene;
 
 Vec3 momentum(const Model& model, const State& s) {
   Vec3 total;
@@ -61,7 +60,7 @@ double smallestSelfGap(const Body& body, const State& s) {
 }
 
 TEST(BodyContact, HeadOnJelliesKeepTheirMomentumAndNeverEnterEachOther) {
-  const WorldFile file = scene(kHeadOn);
+  const WorldFile file = test::scene(kHeadOn);
   const Model model = makeModel(file.world, file.state);
   ASSERT_NE(contactTerm(model), nullptr);
   Simulation run(model, file.state, Integrator::Verlet, 0.0002);
@@ -94,7 +93,7 @@ TEST(BodyContact, JacobianMatchesCentralDifferencesWithFriction) {
   text.replace(
       text.find("damping = 0.3\n["), 13,
       "damping = 0.3\nfriction_static = 0.6\nfriction_dynamic = 0.4\nfriction_speed = 0.05");
-  WorldFile file = scene(text);
+  WorldFile file = test::scene(text);
   // Jelly 2 moved 2 cm into jelly 1's reach, and everything shaken so that contacts are at every
   // angle and slide at every speed.
   std::mt19937 random(3);
@@ -158,7 +157,7 @@ TEST(BodyContact, JacobianMatchesCentralDifferencesWithFriction) {
 }
 
 TEST(BodyContact, ItsStoredEnergyIsThePotentialOfItsForce) {
-  WorldFile file = scene(kHeadOn);
+  WorldFile file = test::scene(kHeadOn);
   const int n = file.state.points();
   for (int q = file.world.scene->body->partFirst[1]; q < n; ++q) file.state.p()[q] -= 0.025;
   const Model model = makeModel(file.world, file.state);
@@ -201,7 +200,7 @@ damping = 2
         "[[jelly]]\nshape = \"lattice\"\nsize = [4, 4, 4]\nspacing = 0.1\nstiffness = 800\n"
         "damping = 1.5\ntotal_mass = 0.5\noffset = [0.0, 0.0, " +
         std::to_string(z) + "]\n";
-  const WorldFile file = scene(text);
+  const WorldFile file = test::scene(text);
   const Model model = makeModel(file.world, file.state);
   Simulation run(model, file.state, Integrator::RK4, 0.0005);
   double inside = 0;
@@ -228,7 +227,7 @@ damping = 2
 }
 
 TEST(BodyContact, ABarFallingOntoABallFoldsWithoutPassingThroughItself) {
-  const WorldFile file = scene(R"(
+  const WorldFile file = test::scene(R"(
 dt = 0.0005
 gravity = [0.0, 0.0, -9.81]
 [bounds]
@@ -303,7 +302,7 @@ self_contact = true
   for (bool self : {true, false}) {
     std::string withOrWithout = text;
     if (!self) withOrWithout.replace(withOrWithout.find("self_contact = true"), 19, "");
-    WorldFile file = scene(withOrWithout);
+    WorldFile file = test::scene(withOrWithout);
     const Body& body = *file.world.scene->body;
     const int n = body.count();
     const double hinge = 0.05 * 9.5 - 0.5 * 0.05 * 19;
@@ -329,7 +328,7 @@ self_contact = true
 
 TEST(BodyContact, SelfContactPushesApartFarPointsOfOneJellyAndLeavesItsNeighboursToTheSprings) {
   // A sheet folded in two by hand: its rows j and 9 - j face each other 0.05 m apart.
-  const WorldFile file = scene(
+  const WorldFile file = test::scene(
       "[bounds]\npresent = false\n[jelly]\nshape = \"lattice\"\nsize = [4, 10, 1]\n"
       "spacing = 0.1\nself_contact = true\n");
   State folded = file.state;
@@ -361,7 +360,7 @@ TEST(BodyContact, SelfContactPushesApartFarPointsOfOneJellyAndLeavesItsNeighbour
 }
 
 TEST(BodyContact, ClothPinnedAtTwoCornersDrapesOverABallWithoutCrossingItself) {
-  const WorldFile file = scene(R"(
+  const WorldFile file = test::scene(R"(
 dt = 0.0005
 gravity = [0.0, 0.0, -9.81]
 [bounds]
@@ -424,7 +423,7 @@ friction_dynamic = 0.4
 TEST(BodyContact, TheBroadPhaseFindsEveryPairThatEveryPairCheckFinds) {
   std::string text = kHeadOn;
   text.replace(text.find("stiffness = 500"), 15, "stiffness = 500\nself_contact = true");
-  const WorldFile file = scene(text);
+  const WorldFile file = test::scene(text);
   const Model model = makeModel(file.world, file.state);
   const BodyContactTerm& term = *contactTerm(model);
   const Body& body = model.body();
@@ -454,14 +453,14 @@ TEST(BodyContact, TheBroadPhaseFindsEveryPairThatEveryPairCheckFinds) {
 }
 
 TEST(BodyContact, OneJellyWithoutSelfContactHasNoContactTerm) {
-  const WorldFile file = scene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n");
+  const WorldFile file = test::scene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n");
   EXPECT_EQ(contactTerm(makeModel(file.world, file.state)), nullptr);
 }
 
 // IMPLICIT through the collision, its Jacobian's pattern following the pairs in contact: the
 // jellies part, keeping their momentum to the Newton solve's tolerance.
 TEST(BodyContact, ImplicitStepsThroughTheCollision) {
-  const WorldFile file = scene(kHeadOn);
+  const WorldFile file = test::scene(kHeadOn);
   const Model model = makeModel(file.world, file.state);
   Simulation run(model, file.state, Integrator::Implicit, 0.001);
   const Vec3 before = momentum(model, file.state);
@@ -479,15 +478,6 @@ TEST(BodyContact, ImplicitStepsThroughTheCollision) {
   EXPECT_LT(first.x / body.partFirst[1], -0.1);  // parted
   EXPECT_LT(inside, 0.5);
   EXPECT_LT(drift, 1e-6);
-}
-
-std::string refusal(const std::string& text) {
-  try {
-    scene(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 }  // namespace

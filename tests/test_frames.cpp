@@ -17,6 +17,7 @@
 namespace jello {
 namespace {
 
+using test::centroid;
 using test::dataPath;
 
 struct Rgb {
@@ -55,12 +56,6 @@ void projectToPixel(const Camera& camera, Vec3 point, int width, int height, dou
   double ndcY = f * dot(d, up) / dot(d, forward);
   *x = (ndcX + 1) / 2 * width;
   *y = (1 - ndcY) / 2 * height;
-}
-
-Vec3 centroid(const State& s) {
-  Vec3 c;
-  for (int q = 0; q < kNumPoints; ++q) c += load(s.p(), q);
-  return (1.0 / kNumPoints) * c;
 }
 
 TEST(Offscreen, FrameOfAKnownStateIsAGreyPictureWithTheCubeWhereTheCameraPutsIt) {

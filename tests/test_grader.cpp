@@ -21,10 +21,7 @@ using namespace jello::test;
 
 namespace {
 
-const std::string kSubmissions = std::string(JELLO_TEST_DATA) + "/submissions";
 const std::string kSeed = "5";
-
-bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
 
 // mutants.txt's expectations: the checks each mutant must fail (or be near, marked ~).
 std::map<std::string, std::set<std::string>> expectedFailures() {

@@ -25,11 +25,8 @@ using namespace jello::test;
 
 namespace {
 
-const std::string kSubmissions = std::string(JELLO_TEST_DATA) + "/submissions";
 const std::string kEntry =
     "void computeAcceleration(struct world* jello, struct point a[8][8][8]) {";
-
-bool haveSandbox() { return jello::grader::sandboxProblem().empty(); }
 
 // The correct solution with `hook` run after its own computeAcceleration (a and jello in scope)
 // and `top` before everything: a submission folder `name` under `root`.

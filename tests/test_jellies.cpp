@@ -19,11 +19,10 @@ namespace jello {
 namespace {
 
 using test::kHeadOn;
-using test::scene;
 
 std::string refusal(const std::string& text) {
   try {
-    scene(text);
+    test::scene(text);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -34,18 +33,18 @@ std::string refusal(const std::string& text) {
 TEST(SceneJellies, TheModesAtRestAreEachJellysOwn) {
   const std::string one =
       "[jelly]\nshape = \"lattice\"\nsize = [4, 4, 4]\nspacing = 0.1\nstiffness = 500\n";
-  const double alone = lineariseAtRest(scene(one).world).highestFrequency;
+  const double alone = lineariseAtRest(test::scene(one).world).highestFrequency;
   std::string two = kHeadOn;
-  const double both = lineariseAtRest(scene(two).world).highestFrequency;
+  const double both = lineariseAtRest(test::scene(two).world).highestFrequency;
   EXPECT_GT(alone, 100);
   EXPECT_NEAR(both, alone, 1e-9 * alone);
   two.replace(two.rfind("stiffness = 500"), 15, "stiffness = 500\nmass = 0.00048828125");
   // Four times lighter points: twice as fast (omega^2 = k / m).
-  EXPECT_NEAR(lineariseAtRest(scene(two).world).highestFrequency, 2 * alone, 1e-6 * alone);
+  EXPECT_NEAR(lineariseAtRest(test::scene(two).world).highestFrequency, 2 * alone, 1e-6 * alone);
 }
 
 TEST(StateFiles, ARunSavedAndContinuedIsTheRunThatWentOnBitForBit) {
-  const WorldFile file = scene(kHeadOn);
+  const WorldFile file = test::scene(kHeadOn);
   const Model model = makeModel(file.world, file.state);
   Simulation whole(model, file.state, Integrator::RK4, 0.0002);
   ASSERT_TRUE(whole.advance(600).ran());
@@ -119,7 +118,7 @@ TEST(SceneJellies, OverlappingJelliesAreRefusedByJelloWithExitStatusTwo) {
 }
 
 TEST(StateFiles, AMalformedStateIsRefusedWithItsLineAndField) {
-  const WorldFile file = scene(kHeadOn);
+  const WorldFile file = test::scene(kHeadOn);
   const Body& body = *file.world.scene->body;
   std::string text = formatState(body, file.state);
   auto refused = [&](const std::string& bad) {
@@ -184,7 +183,7 @@ spacing = 0.1
 TEST(SceneJellies, EachJellyKeepsItsOwnMassAndSprings) {
   std::string text = kHeadOn;
   text.replace(text.rfind("stiffness = 500"), 15, "stiffness = 900\nmass = 0.01");
-  const WorldFile file = scene(text);
+  const WorldFile file = test::scene(text);
   const Model model = makeModel(file.world, file.state);
   EXPECT_EQ(model.pointMass.front(), 1.0 / kNumPoints);
   EXPECT_EQ(model.pointMass.back(), 0.01);

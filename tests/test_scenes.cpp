@@ -24,14 +24,10 @@
 namespace jello {
 namespace {
 
+using test::centroid;
+
 WorldFile scene(const std::string& text) {
   return parseScene(text, "test.toml", std::string(JELLO_SOURCE_DIR));
-}
-
-Vec3 centroid(const State& s) {
-  Vec3 sum;
-  for (int q = 0; q < kNumPoints; ++q) sum += load(s.p(), q);
-  return (1.0 / kNumPoints) * sum;
 }
 
 TEST(SceneFile, ACourseWorldThroughASceneIsTheCourseWorldBitForBit) {

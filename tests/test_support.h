@@ -37,6 +37,13 @@ double rmsDistance(const double* a, const double* b);
 // RMS over the points of two states (of any body) of the distance between their positions (m).
 double rmsDistance(const State& a, const State& b);
 
+// The mean position of the course cube's 512 points (m).
+inline Vec3 centroid(const State& s) {
+  Vec3 sum;
+  for (int q = 0; q < kNumPoints; ++q) sum += load(s.p(), q);
+  return (1.0 / kNumPoints) * sum;
+}
+
 // Fits each integrator's order (RK45 aside: adaptive, its error follows its tolerance) from its
 // errors at dt and dt/2 (dt 1e-3 for order 4 and above, 2e-4 below) against RK4 at 1e-6, over
 // `time` seconds of `model` from `start`, printing the fits, and expects each within 0.35 of
