@@ -59,19 +59,21 @@ bool BodyContactTerm::mayTouch(int a, int b) const {
   return false;
 }
 
-std::vector<int> BodyContactTerm::activeCandidates(const double* p) const {
+void BodyContactTerm::activeCandidates(const double* p, std::vector<Bounds>* boxes,
+                                       std::vector<int>* active) const {
   // Each part's box about its surface points; a point of a part without self-contact may touch
   // only where another part's box, grown by the cell edge, reaches it.
   const int n = pointCount();
-  std::vector<Bounds> box(
-      parts_.size(), Bounds{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}});
+  std::vector<Bounds>& box = *boxes;
+  box.assign(parts_.size(),
+             Bounds{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}});
   for (int q : candidates_) {
     const Vec3 x = load(p, q, n);
     Bounds& b = box[partOf_[q]];
     b.lower = {std::min(b.lower.x, x.x), std::min(b.lower.y, x.y), std::min(b.lower.z, x.z)};
     b.upper = {std::max(b.upper.x, x.x), std::max(b.upper.y, x.y), std::max(b.upper.z, x.z)};
   }
-  std::vector<int> active;
+  active->clear();
   for (int q : candidates_) {
     const int part = partOf_[q];
     bool near = parts_[part].selfContact;
@@ -83,9 +85,8 @@ std::vector<int> BodyContactTerm::activeCandidates(const double* p) const {
              x.y <= b.upper.y + cell_ && x.z >= b.lower.z - cell_ && x.z <= b.upper.z + cell_;
     }
     // A point that is not finite goes in too: the step's check reports the divergence.
-    if (near || !std::isfinite(x.x + x.y + x.z)) active.push_back(q);
+    if (near || !std::isfinite(x.x + x.y + x.z)) active->push_back(q);
   }
-  return active;
 }
 
 namespace {
@@ -102,8 +103,14 @@ class CellTable {
     std::int64_t key;
     int begin, end;  // in the sorted list
   };
-  CellTable(const std::vector<std::int64_t>& sortedKeys,
-            const std::vector<std::array<std::int64_t, 3>>& cells) {
+  // Made again for these keys (sorted) and cells; the buffers are kept (no allocation once they
+  // are large enough).
+  void rebuild(const std::vector<std::int64_t>& sortedKeys,
+               const std::vector<std::array<std::int64_t, 3>>& cells) {
+    runs_.clear();
+    dense_.clear();
+    slots_.clear();
+    shift_ = 60;
     for (int i = 0; i < static_cast<int>(sortedKeys.size()); ++i)
       if (runs_.empty() || runs_.back().key != sortedKeys[i])
         runs_.push_back({sortedKeys[i], i, i + 1});
@@ -168,13 +175,19 @@ class CellTable {
 
 }  // namespace
 
-std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
+void BodyContactTerm::findContacts(const double* p, std::vector<ContactPair>* found) const {
+  // This thread's buffers, kept from call to call: a step allocates nothing once they are grown.
+  thread_local std::vector<Bounds> boxes;
+  thread_local std::vector<int> active;
+  thread_local std::vector<std::pair<std::int64_t, int>> sorted;
+  thread_local std::vector<std::array<std::int64_t, 3>> cellOf;
+  thread_local std::vector<std::int64_t> keys;
+  thread_local CellTable cells;
   const int n = pointCount();
-  const std::vector<int> active = activeCandidates(p);
+  activeCandidates(p, &boxes, &active);
   // The candidates by cell key, then point: (key, point) pairs sorted.
-  std::vector<std::pair<std::int64_t, int>> sorted;
-  std::vector<std::array<std::int64_t, 3>> cellOf(active.size());
-  sorted.reserve(active.size());
+  sorted.clear();
+  cellOf.resize(active.size());
   for (std::size_t i = 0; i < active.size(); ++i) {
     const Vec3 x = load(p, active[i], n);
     cellOf[i] = {cellCoordinate(x.x, cell_), cellCoordinate(x.y, cell_),
@@ -182,10 +195,11 @@ std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
     sorted.emplace_back(cellKey(cellOf[i][0], cellOf[i][1], cellOf[i][2]), active[i]);
   }
   std::sort(sorted.begin(), sorted.end());
-  std::vector<std::int64_t> keys(sorted.size());
+  keys.resize(sorted.size());
   for (std::size_t i = 0; i < sorted.size(); ++i) keys[i] = sorted[i].first;
-  const CellTable cells(keys, cellOf);
-  std::vector<ContactPair> out;
+  cells.rebuild(keys, cellOf);
+  std::vector<ContactPair>& out = *found;
+  out.clear();
   for (std::size_t i = 0; i < active.size(); ++i) {
     const int a = active[i];
     const Vec3 pa = load(p, a, n);
@@ -207,7 +221,18 @@ std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
   std::sort(out.begin(), out.end(), [](const ContactPair& x, const ContactPair& y) {
     return x.a < y.a || (x.a == y.a && x.b < y.b);
   });
+}
+
+std::vector<ContactPair> BodyContactTerm::contacts(const double* p) const {
+  std::vector<ContactPair> out;
+  findContacts(p, &out);
   return out;
+}
+
+const std::vector<ContactPair>& BodyContactTerm::contactsNow(const double* p) const {
+  thread_local std::vector<ContactPair> pairs;
+  findContacts(p, &pairs);
+  return pairs;
 }
 
 Obstacle BodyContactTerm::ballOf(const ContactPair& pair) const {
@@ -252,7 +277,7 @@ void BodyContactTerm::addForcesOn(PointRange points, const double* p, const doub
   // Each pair's force joins its ends in the pairs' order: a point's sum is the same whichever
   // range asks for it.
   const int n = pointCount();
-  for (const ContactPair& pair : contacts(p)) {
+  for (const ContactPair& pair : contactsNow(p)) {
     const bool aIn = pair.a >= points.begin && pair.a < points.end;
     const bool bIn = pair.b >= points.begin && pair.b < points.end;
     if (!aIn && !bIn) continue;
@@ -266,7 +291,7 @@ void BodyContactTerm::addForcesOn(PointRange points, const double* p, const doub
 void BodyContactTerm::addJacobian(const double* p, const double* v, JacobianSink* sink) const {
   const int n = pointCount();
   Block3 dFdL, dFdw;
-  for (const ContactPair& pair : contacts(p)) {
+  for (const ContactPair& pair : contactsNow(p)) {
     obstacleJacobian(ballOf(pair), load(p, pair.a, n) - load(p, pair.b, n),
                      load(v, pair.a, n) - load(v, pair.b, n), &dFdL, &dFdw);
     sink->addPair(dFdL, dFdw);
@@ -275,7 +300,7 @@ void BodyContactTerm::addJacobian(const double* p, const double* v, JacobianSink
 
 void BodyContactTerm::addEnergy(const double* p, double* energy) const {
   const int n = pointCount();
-  for (const ContactPair& pair : contacts(p)) {
+  for (const ContactPair& pair : contactsNow(p)) {
     const double depth = pair.distance - length(load(p, pair.a, n) - load(p, pair.b, n));
     *energy += 0.5 * law_.spring.k * depth * depth;
   }

@@ -58,6 +58,8 @@ class BodyContactTerm final : public ForceTerm {
 
   // The pairs in contact at positions p, sorted.
   std::vector<ContactPair> contacts(const double* p) const;
+  // The same into `found` (its storage reused).
+  void findContacts(const double* p, std::vector<ContactPair>* found) const;
   // The force on a of a pair at (L, w) and its derivatives.
   Vec3 pairForce(const ContactPair& pair, Vec3 L, Vec3 w) const;
   // The pairs' closest approach at p: the smallest |p_a - p_b| over candidate points of different
@@ -81,8 +83,12 @@ class BodyContactTerm final : public ForceTerm {
   Obstacle ballOf(const ContactPair& pair) const;
   bool mayTouch(int a, int b) const;
   // The candidates that may touch at p: every point of a part with self-contact, and the points
-  // of the others within reach of another part's bounding box.
-  std::vector<int> activeCandidates(const double* p) const;
+  // of the others within reach of another part's bounding box (`boxes`: each part's, scratch).
+  void activeCandidates(const double* p, std::vector<Bounds>* boxes,
+                        std::vector<int>* active) const;
+  // contacts(p) in this thread's buffer, valid until its next call on this thread: what the force,
+  // Jacobian and energy go through, allocating nothing once the buffer is grown.
+  const std::vector<ContactPair>& contactsNow(const double* p) const;
 
   std::vector<ContactPart> parts_;
   Obstacle law_;                            // the spring and the friction

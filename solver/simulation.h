@@ -73,7 +73,8 @@ class Simulation {
   // Takes `steps` steps, each with the pull when one is given (nullptr: none), checking each
   // as the rule above says; stops at the first that fails. Once a run has failed it takes no
   // more steps and returns the same outcome, until restart() or restore(). Allocates nothing
-  // once the stepper's buffers are sized (IMPLICIT's solver excepted), unless it fails.
+  // once the stepper's buffers are sized (IMPLICIT's solver excepted; contact between bodies
+  // grows its buffers when more pairs touch than ever before), unless it fails.
   RunOutcome advance(long long steps, const Pull* pull = nullptr);
   // Runs on to `time` s: stepsForTime(time, dt) steps from the start in all, the last one
   // shortened to end on `time` exactly when dt does not divide it (--report compares runs of

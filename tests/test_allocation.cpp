@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "jellyscenes.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -60,6 +61,27 @@ TEST(Allocation, ASimulationAdvancesWithoutAllocatingOnceStarted) {
     EXPECT_EQ(allocations.load() - before, 0) << integratorName(integrator);
     EXPECT_TRUE(ran) << integratorName(integrator);
   }
+}
+
+// Two jellies pressed together: the contact between them (its broad phase, its pairs) reuses its
+// buffers, so that steps and the run's checks allocate nothing once they have grown to the most
+// pairs in contact yet.
+TEST(Allocation, ContactBetweenJelliesAllocatesNothingOnceStarted) {
+  WorldFile f = test::scene(test::kHeadOn);
+  const int n = f.state.points();
+  for (int q = f.world.scene->body->partFirst[1]; q < n; ++q) {
+    f.state.p()[q] -= 0.12;  // 2 cm into the first jelly's reach, at rest
+    f.state.v()[q] = 0;
+  }
+  for (int q = 0; q < f.world.scene->body->partFirst[1]; ++q) f.state.v()[q] = 0;
+  Model model = makeModel(f.world, f.state);
+  Simulation simulation(model, f.state, Integrator::RK4, 2e-4);
+  // The buffers grow while the touching spreads (more pairs than ever before), then hold.
+  ASSERT_TRUE(simulation.advance(30).ran());
+  const long long before = allocations.load();
+  EXPECT_TRUE(simulation.advance(50).ran());
+  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_GT(test::contactTerm(model)->contacts(simulation.state().p()).size(), 10u);
 }
 
 }  // namespace
