@@ -273,6 +273,8 @@ Outcome chooseMode(const Given& g, JelloCommand* c) {
         "or --bench");
   if (*g.saveStateOption && analysis)
     return refuse("--save-state goes with a headless run, not with --check, --report or --bench");
+  if (*g.saveStateOption && !c->headless)
+    return refuse("--save-state goes with --headless (the window writes no state at its end)");
   if (*g.framesOption && (*g.checkOption || *g.benchOption))
     return refuse("--frames goes with a run (headless or the window), not with --check or --bench");
   if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) > 1)

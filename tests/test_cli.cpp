@@ -241,6 +241,8 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"inf_time", "--headless --time inf", "--time"},
         UsageCase{"zero_n", "--headless --n 0", "--n"},
         UsageCase{"word_steps", "--headless --steps many", "--steps"},
+        UsageCase{"save_state_with_window", "--save-state /tmp/never.csv",
+                  "--save-state goes with --headless"},
         UsageCase{"newline_in_number", "--headless --time '0.\nx'", "--time: '0.\\x0Ax' is not"},
         UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
         UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open",
