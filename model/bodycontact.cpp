@@ -249,9 +249,7 @@ double BodyContactTerm::smallestGap(const double* p) const {
   const int n = pointCount();
   double smallest = INFINITY;
   if (parts_.size() < 2) return smallest;
-  // Every pair of candidates of different parts within a cell's reach, as the broad phase finds
-  // them, and beyond it the cell edge is a bound.
-  for (const ContactPair& pair : contacts(p))
+  for (const ContactPair& pair : contactsNow(p))
     if (partOf_[pair.a] != partOf_[pair.b])
       smallest = std::min(smallest, length(load(p, pair.a, n) - load(p, pair.b, n)));
   return smallest;
@@ -259,14 +257,14 @@ double BodyContactTerm::smallestGap(const double* p) const {
 
 std::vector<std::pair<int, int>> BodyContactTerm::pairsAt(const double* p) const {
   std::vector<std::pair<int, int>> out;
-  for (const ContactPair& pair : contacts(p)) out.emplace_back(pair.a, pair.b);
+  for (const ContactPair& pair : contactsNow(p)) out.emplace_back(pair.a, pair.b);
   return out;
 }
 
 int BodyContactTerm::pointsInContact(const double* p) const {
   if (law_.spring.k == 0 && law_.spring.d == 0) return 0;
   std::vector<int> touching;
-  for (const ContactPair& pair : contacts(p))
+  for (const ContactPair& pair : contactsNow(p))
     touching.push_back(pair.a), touching.push_back(pair.b);
   std::sort(touching.begin(), touching.end());
   return static_cast<int>(std::unique(touching.begin(), touching.end()) - touching.begin());

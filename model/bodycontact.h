@@ -62,8 +62,9 @@ class BodyContactTerm final : public ForceTerm {
   void findContacts(const double* p, std::vector<ContactPair>* found) const;
   // The force on a of a pair at (L, w) and its derivatives.
   Vec3 pairForce(const ContactPair& pair, Vec3 L, Vec3 w) const;
-  // The pairs' closest approach at p: the smallest |p_a - p_b| over candidate points of different
-  // parts (infinity with one part), m.
+  // The closest approach of two parts at p: the smallest |p_a - p_b| over the pairs in contact of
+  // points of different parts, m; infinity when none touch (every such pair is then at least its
+  // contact distance apart) and with one part.
   double smallestGap(const double* p) const;
 
   bool isPairTerm() const override { return true; }
