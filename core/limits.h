@@ -36,6 +36,10 @@ constexpr int kMostObstacles = 64;
 constexpr double kLargestMeshCoordinate = 1e6;
 constexpr std::size_t kMostMeshTriangles = 1000000;
 constexpr std::size_t kMostObjBytes = std::size_t(64) << 20;
+// A TetGen mesh's limits (io/tetmesh.h): each of its .node and .ele files at most this long, and
+// at most this many tetrahedra (a body's points are kMostScenePoints at most, model/body.h).
+constexpr std::size_t kMostTetMeshBytes = std::size_t(256) << 20;
+constexpr std::size_t kMostMeshTetrahedra = 6000000;
 
 // ---- Runs ------------------------------------------------------------------------------------
 

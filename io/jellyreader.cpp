@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/tetmesh.h"
 #include "io/voxels.h"
 #include "model/bodycontact.h"
 #include "model/winding.h"
@@ -17,8 +18,9 @@ namespace jello {
 namespace {
 
 constexpr std::initializer_list<const char*> kJellyKeys = {
-    "mass",  "total_mass", "stiffness", "damping", "offset", "velocity",
-    "shape", "size",       "spacing",   "radius",  "mesh",   "self_contact"};
+    "mass",     "total_mass",     "stiffness",     "damping", "offset",       "velocity",
+    "shape",    "size",           "spacing",       "radius",  "mesh",         "self_contact",
+    "material", "youngs_modulus", "poisson_ratio", "density", "mass_damping", "stiffness_damping"};
 
 // A whole number in [lowest, highest].
 int wholeNumber(const Reader& r, const toml::node& node, const std::string& key, int lowest,
@@ -63,7 +65,16 @@ Body readShape(const Reader& r, const toml::table& t, const std::string& path,
     const toml::node* node = t.get("mesh");
     const std::optional<std::string> file = node ? node->value<std::string>() : std::nullopt;
     if (!node) r.fail(at, path + "mesh", "a mesh jelly needs its mesh = \"FILE.obj\"");
-    if (!file || file->empty()) r.fail(*node, path + "mesh", "expected the path of an OBJ file");
+    if (!file || file->empty())
+      r.fail(*node, path + "mesh", "expected the path of an OBJ file or a TetGen .node file");
+    if (file->size() > 5 && file->compare(file->size() - 5, 5, ".node") == 0) {
+      if (t.get("spacing"))
+        r.fail(*t.get("spacing"), path + "spacing",
+               "a TetGen mesh has its own points; spacing is for voxels");
+      Body body = readTetMesh(r.pathFromScene(*file));
+      body.what = "the tetrahedra of " + *file;
+      return body;
+    }
     TriangleMesh mesh;
     if (!readObjMesh(r.pathFromScene(*file), &mesh, &why) ||
         !voxeliseMesh(mesh, spacing, &grid, &why))
@@ -120,15 +131,91 @@ void readByKind(const Reader& r, const toml::table& t, const std::string& path, 
   byKind->fill(*all);
 }
 
-// A jelly's rest placement: a shaped body centred on the origin (the middle of its grid); the
-// course cube as the default world has it.
+// A jelly's rest placement: a shaped body centred on the origin (the middle of its grid, or of a
+// mesh's bounding box); the course cube as the default world has it.
 State placedBody(const Body& body) {
   const int n = body.count();
   State state(n);
-  const Vec3 middle =
+  Vec3 middle =
       0.5 * body.spacing * Vec3{double(body.nx - 1), double(body.ny - 1), double(body.nz - 1)};
+  if (body.gridless()) {
+    Vec3 lower = body.rest[0], upper = body.rest[0];
+    for (const Vec3& x : body.rest) {
+      lower = {std::min(lower.x, x.x), std::min(lower.y, x.y), std::min(lower.z, x.z)};
+      upper = {std::max(upper.x, x.x), std::max(upper.y, x.y), std::max(upper.z, x.z)};
+    }
+    middle = 0.5 * (lower + upper);
+  }
   for (int q = 0; q < n; ++q) store(state.p(), q, n, body.restPosition(q) - middle);
   return state;
+}
+
+// The jelly's material: springs unless `material` names elements, which then need Young's modulus,
+// Poisson's ratio and the density, and take no spring constants and no mass (theirs is lumped).
+Material readMaterial(const Reader& r, const toml::table& t, const std::string& path) {
+  Material m;
+  const toml::node* node = t.get("material");
+  const char* kElementKeys[] = {"youngs_modulus", "poisson_ratio", "density", "mass_damping",
+                                "stiffness_damping"};
+  if (node) {
+    const std::optional<std::string> name = node->value<std::string>();
+    const MaterialInfo* found = nullptr;
+    for (const MaterialInfo& info : kMaterials)
+      if (name && *name == info.name) found = &info;
+    if (!found)
+      r.fail(*node, path + "material", "expected \"springs\", \"corotated\" or \"neohookean\"");
+    m.kind = found->kind;
+  }
+  if (!m.elements()) {
+    for (const char* key : kElementKeys)
+      if (t.get(key))
+        r.fail(*t.get(key), path + key,
+               "belongs to a jelly of finite elements (material = \"corotated\" or "
+               "\"neohookean\")");
+    return m;
+  }
+  for (const char* key : {"mass", "total_mass", "stiffness", "damping"})
+    if (t.get(key))
+      r.fail(
+          *t.get(key), path + key,
+          std::string("a jelly of finite elements takes ") +
+              (key[0] == 'm' || key[0] == 't' ? "its mass from its density"
+                                              : "youngs_modulus and poisson_ratio, not springs"));
+  for (const char* key : {"youngs_modulus", "poisson_ratio", "density"})
+    if (!t.get(key))
+      r.fail(*node, path + key, std::string("a jelly of finite elements needs its ") + key);
+  m.youngsModulus = *r.number(t, path, "youngs_modulus", 0, true);
+  m.poissonRatio = *r.number(t, path, "poisson_ratio", 0, false);
+  if (m.poissonRatio > kLargestPoissonRatio)
+    r.fail(*t.get("poisson_ratio"), path + "poisson_ratio",
+           "must be from 0 to " + Reader::textOf(kLargestPoissonRatio) +
+               " (at 0.5 a solid could not change its volume at all)");
+  m.density = *r.number(t, path, "density", 0, true);
+  m.massDamping = r.number(t, path, "mass_damping", 0, false).value_or(0);
+  m.stiffnessDamping = r.number(t, path, "stiffness_damping", 0, false).value_or(0);
+  return m;
+}
+
+// The body of a jelly of elements: its shape's (the course cube's without one), without springs.
+std::shared_ptr<const Body> elementBody(const Reader& r, const toml::table& t,
+                                        const std::string& path,
+                                        std::shared_ptr<const Body> shaped) {
+  Body body = shaped ? *shaped : courseBody();
+  if (isSheet(body))
+    r.fail(*t.get("material"), path + "material",
+           "a sheet has no volume to make elements of: a cloth is made of springs");
+  body.springs.clear();
+  body.courseLattice = false;
+  return std::make_shared<Body>(std::move(body));
+}
+
+// The mass of a jelly of elements at rest, kg: its density times its tetrahedra's volume.
+double elementMass(const Body& body, const Material& m) {
+  std::vector<double> rest(3 * std::size_t(body.count()));
+  for (int q = 0; q < body.count(); ++q) store(rest.data(), q, body.count(), body.restPosition(q));
+  double volume = 0;
+  for (const Tet& tet : tetrahedraOf(body)) volume += tetVolume(tet, rest.data(), body.count());
+  return m.density * volume;
 }
 
 // One jelly's table: its body (null: the course cube), placed state, mass and springs, starting
@@ -146,12 +233,17 @@ ReadJelly readOne(const Reader& r, const toml::table& t, const std::string& path
   r.onlyKeys(t, path, kJellyKeys);
   ReadJelly out;
   out.body = readBody(r, t, path);
+  out.spec.material = readMaterial(r, t, path);
+  if (out.spec.material.elements()) out.body = elementBody(r, t, path, out.body);
   out.state = out.body ? placedBody(*out.body) : courseState;
   const int n = out.state.points();
+  if (const toml::node* self = t.get("self_contact"); self && out.body && out.body->gridless())
+    r.fail(*self, path + "self_contact", "self-contact needs a jelly on a grid, not a TetGen mesh");
   if (t.get("mass") && t.get("total_mass"))
     r.fail(*t.get("total_mass"), path + "total_mass",
            "give mass (per point) or total_mass, not both");
   out.spec.mass = w.mass;
+  if (out.spec.material.elements()) out.spec.mass = elementMass(*out.body, out.spec.material) / n;
   if (auto m = r.number(t, path, "mass", 0, true)) out.spec.mass = *m;
   if (auto m = r.number(t, path, "total_mass", 0, true)) out.spec.mass = *m / n;
   out.kElastic = w.kElastic, out.dElastic = w.dElastic;
@@ -227,6 +319,7 @@ void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneS
   w.dElastic = one.dElastic;
   if (one.perKind) spec->springs = one.spec.springs;
   spec->selfContact = one.spec.selfContact;
+  spec->material = one.spec.material;
 }
 
 namespace {

@@ -39,6 +39,7 @@ std::array<int, 3> Body::index(int q) const {
     const int p = partOf(q);
     return parts[p]->index(q - partFirst[p]);
   }
+  if (gridless()) return {q, 0, 0};
   const int node = nodeOf[q];
   return {node / (ny * nz), (node / nz) % ny, node % nz};
 }
@@ -48,18 +49,23 @@ Vec3 Body::restPosition(int q) const {
     const int p = partOf(q);
     return parts[p]->restPosition(q - partFirst[p]);
   }
+  if (gridless()) return rest[q];
   const std::array<int, 3> i = index(q);
   return spacing * Vec3{double(i[0]), double(i[1]), double(i[2])};
 }
 
 std::string Body::label(int q) const {
   const std::array<int, 3> i = index(q);
+  const Body& own = joined() ? *parts[partOf(q)] : *this;
+  if (own.gridless())
+    return "#" + std::to_string(i[0]) +
+           (joined() ? " of jelly " + std::to_string(partOf(q) + 1) : std::string());
   return "[" + std::to_string(i[0]) + "][" + std::to_string(i[1]) + "][" + std::to_string(i[2]) +
          "]" + (joined() ? " of jelly " + std::to_string(partOf(q) + 1) : std::string());
 }
 
 int Body::pointAtIndex(int i, int j, int k) const {
-  if (joined() || i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
+  if (joined() || gridless() || i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return -1;
   return pointAt[node(i, j, k)];
 }
 
@@ -186,6 +192,7 @@ Body voxelBody(const VoxelMask& mask, double spacing, std::string what) {
   JELLO_ASSERT(body.count() > 0);
   addSprings(&body);
   addSurface(mask, &body);
+  body.voxels = mask;
   return body;
 }
 
@@ -263,6 +270,43 @@ Body joinBodies(std::vector<std::shared_ptr<const Body>> parts) {
   joined.spacing = parts[0]->spacing;
   joined.parts = std::move(parts);
   return joined;
+}
+
+std::vector<Tet> tetrahedraOf(const Body& body) {
+  JELLO_ASSERT(!body.joined());
+  if (body.gridless()) return body.meshTets;
+  std::vector<Tet> tets;
+  const VoxelMask& mask = body.voxels;
+  // Kuhn's split: the paths from corner (0,0,0) to (1,1,1) one axis at a time, one per order of
+  // the axes; a tetrahedron per path.
+  static const int kOrders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                    {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int i = 0; i < mask.nx; ++i)
+    for (int j = 0; j < mask.ny; ++j)
+      for (int k = 0; k < mask.nz; ++k) {
+        if (!mask.at(i, j, k)) continue;
+        for (const auto& order : kOrders) {
+          int corner[3] = {i, j, k};
+          Tet t;
+          t[0] = body.pointAtIndex(i, j, k);
+          for (int step = 0; step < 3; ++step) {
+            ++corner[order[step]];
+            t[step + 1] = body.pointAtIndex(corner[0], corner[1], corner[2]);
+          }
+          // An odd order of the axes winds the path the other way: swap to keep volumes positive.
+          const bool odd = (order[0] == 0 && order[1] == 2) || (order[0] == 1 && order[1] == 0) ||
+                           (order[0] == 2 && order[1] == 1);
+          if (odd) std::swap(t[2], t[3]);
+          JELLO_ASSERT(t[0] >= 0 && t[1] >= 0 && t[2] >= 0 && t[3] >= 0);
+          tets.push_back(t);
+        }
+      }
+  return tets;
+}
+
+double tetVolume(const Tet& t, const double* p, int n) {
+  const Vec3 x0 = load(p, t[0], n);
+  return dot(load(p, t[1], n) - x0, cross(load(p, t[2], n) - x0, load(p, t[3], n) - x0)) / 6;
 }
 
 const Body& courseBody() {

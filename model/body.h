@@ -72,6 +72,9 @@ struct Spring {
 };
 
 using Triangle = std::array<int, 3>;  // three point numbers, counter-clockwise from outside
+// Four point numbers, ordered so that the tetrahedron's volume at rest,
+// (x1 - x0) . ((x2 - x0) x (x3 - x0)) / 6, is positive.
+using Tet = std::array<int, 4>;
 
 // The most points along an edge of a body's grid (the 2..48).
 constexpr int kMostBodyPoints = 48;
@@ -100,6 +103,11 @@ struct Body {
   std::vector<int> surfacePoints;    // the points on the surface, ascending
   std::vector<int> surfaceVertexOf;  // point -> its place in surfacePoints, or -1
   bool courseLattice = false;        // the 8x8x8 lattice of spacing 1/7: the course's cube
+  VoxelMask voxels;                  // a grid body's filled voxels (none for a sheet)
+  // A body of no grid (a tetrahedral mesh, io/tetmesh.h): each point's rest position, m, and its
+  // tetrahedra; `spacing` is then its tetrahedra's mean edge. Empty for a grid body.
+  std::vector<Vec3> rest;
+  std::vector<Tet> meshTets;
   // A scene's several jellies joined into one body (joinBodies): part p's points are
   // [partFirst[p], partFirst[p + 1]), numbered as in parts[p], its springs and triangles those of
   // parts[p] renumbered, in the order of the parts. Empty for one body. A joined body has no grid
@@ -110,15 +118,17 @@ struct Body {
   int count() const { return static_cast<int>(nodeOf.size()); }
   int coords() const { return 3 * count(); }
   bool joined() const { return !parts.empty(); }
+  bool gridless() const { return !rest.empty(); }
   // The part point q belongs to (0 for a body that is not joined).
   int partOf(int q) const;
   // Grid node (i, j, k)'s number: (i * ny + j) * nz + k.
   int node(int i, int j, int k) const { return (i * ny + j) * nz + k; }
-  // The grid index of point q.
+  // The grid index of point q; (q, 0, 0) in a body of no grid.
   std::array<int, 3> index(int q) const;
   // Point q at rest, m: spacing * its grid index (node (0, 0, 0) at the origin).
   Vec3 restPosition(int q) const;
-  // "[i][j][k]" for point q; in a joined body "[i][j][k] of jelly P" (P from 1).
+  // "[i][j][k]" for point q ("#q" in a body of no grid); in a joined body "[i][j][k] of jelly P"
+  // (P from 1).
   std::string label(int q) const;
   // The point at grid node (i, j, k), or -1 (also outside the grid, and in a joined body).
   int pointAtIndex(int i, int j, int k) const;
@@ -139,6 +149,15 @@ bool isSheet(const Body& body);
 Body joinBodies(std::vector<std::shared_ptr<const Body>> parts);
 // The course's cube, built once (the 8x8x8 lattice of spacing kRestSpacing).
 const Body& courseBody();
+
+// The tetrahedra of a body that is not joined, for finite elements: each filled voxel of a grid
+// body split into the 6 of Kuhn's split along its diagonal from corner (0,0,0) to (1,1,1), the
+// same in every voxel so that neighbours' faces match (a conforming mesh), in voxel order; a
+// mesh's own. None for a sheet.
+std::vector<Tet> tetrahedraOf(const Body& body);
+// A tetrahedron's volume at positions p (a per-point array of n points), m^3: positive when it is
+// oriented as at rest, negative when inverted.
+double tetVolume(const Tet& t, const double* p, int n);
 
 // Unit normals of the body's surface at `positions` (a per-point array of the body's), one per
 // point: each surface point's is the sum of its triangles' cross(b - a, c - a) (twice the

@@ -46,7 +46,7 @@ void addField(const World& world, int n, KernelChoice choice, ForceTerms* forces
 // course world does): gravity, then the obstacles in the file's order.
 void addSceneTerms(const World& world, int n, const SceneSpec& spec, ForceTerms* forces) {
   if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0) {
-    if (spec.jellies.empty())
+    if (spec.jellies.empty() && !hasElements(world))
       forces->terms.push_back(std::make_unique<GravityTerm>(n, spec.gravity, world.mass));
     else
       forces->terms.push_back(std::make_unique<GravityTerm>(spec.gravity, pointMassesOf(world)));
@@ -89,6 +89,11 @@ ForceTerms buildForceTerms(const World& world, const State& initial, KernelChoic
   auto springs = std::make_unique<SpringTerm>(body, std::move(byPart), general || damping);
   forces.springs = springs.get();
   forces.terms.push_back(std::move(springs));
+  if (hasElements(world)) {
+    auto elements = std::make_unique<ElementTerm>(body, materialsOf(world), pointMassesOf(world));
+    forces.elements = elements.get();
+    forces.terms.push_back(std::move(elements));
+  }
   if (spec && spec->bodyContact) addBodyContact(body, *spec, &forces);
   const ContactSpring contact{world.kCollision, world.dCollision};
   if (hasCourseWalls(spec))
@@ -143,11 +148,38 @@ SpringConstants springConstantsOf(const World& world) {
   return SpringConstants::same(world.kElastic, world.dElastic);
 }
 
+std::vector<Material> materialsOf(const World& world) {
+  if (!world.scene) return {Material{}};
+  if (world.scene->jellies.empty()) return {world.scene->material};
+  std::vector<Material> out;
+  for (const JellySpec& jelly : world.scene->jellies) out.push_back(jelly.material);
+  return out;
+}
+
+bool hasElements(const World& world) {
+  for (const Material& m : materialsOf(world))
+    if (m.elements()) return true;
+  return false;
+}
+
 std::vector<double> pointMassesOf(const World& world) {
   const Body& body = bodyOf(world);
   std::vector<double> mass(body.count(), world.mass);
   if (world.scene && !world.scene->jellies.empty())
     for (int q = 0; q < body.count(); ++q) mass[q] = world.scene->jellies[body.partOf(q)].mass;
+  const std::vector<Material> materials = materialsOf(world);
+  for (std::size_t part = 0; part < materials.size(); ++part) {
+    if (!materials[part].elements()) continue;
+    const Body& own = body.joined() ? *body.parts[part] : body;
+    const int first = body.joined() ? body.partFirst[part] : 0;
+    for (int q = first; q < first + own.count(); ++q) mass[q] = 0;
+    std::vector<double> rest(3 * std::size_t(own.count()));
+    for (int q = 0; q < own.count(); ++q) store(rest.data(), q, own.count(), own.restPosition(q));
+    for (const Tet& t : tetrahedraOf(own)) {
+      const double share = materials[part].density * tetVolume(t, rest.data(), own.count()) / 4;
+      for (int q : t) mass[first + q] += share;
+    }
+  }
   return mass;
 }
 

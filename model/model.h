@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/bodycontact.h"
+#include "model/elements.h"
 #include "model/field.h"
 #include "model/plane.h"
 #include "model/scenespec.h"
@@ -45,8 +46,9 @@ struct ForceTerms {
   std::vector<std::unique_ptr<ForceTerm>> terms;  // owned; pair terms first
   std::vector<std::string> leftOut;               // what the world does not need, and why
   bool culling = true;
-  const SpringTerm* springs = nullptr;  // in terms, always there
-  const PlaneTerm* plane = nullptr;     // in terms, or null without a plane
+  const SpringTerm* springs = nullptr;    // in terms, always there
+  const PlaneTerm* plane = nullptr;       // in terms, or null without a plane
+  const ElementTerm* elements = nullptr;  // in terms when a jelly is made of elements, else null
 };
 // What a list of terms computes ("springs", "plane (when the bounding box reaches it)", ...) and
 // what it leaves out, and why: its terms' parts, then the terms it does not have.
@@ -92,7 +94,12 @@ const Body& bodyOf(const World& world);
 // The springs' constants: a scene's per kind, or the world's kElastic and dElastic for all (for
 // several jellies, the first's).
 SpringConstants springConstantsOf(const World& world);
-// Each point's mass, kg (Model::pointMass).
+// Each part's material (one for a body that is not joined): springs for a course world.
+std::vector<Material> materialsOf(const World& world);
+// Whether some jelly of the world is made of finite elements.
+bool hasElements(const World& world);
+// Each point's mass, kg (Model::pointMass): a jelly of springs gives each point its mass; a jelly
+// of elements lumps each tetrahedron's density * volume, a quarter to each of its points.
 std::vector<double> pointMassesOf(const World& world);
 // Whether the world's jelly is the course cube with the course's springs (courseSprings).
 bool hasCourseSprings(const World& world);

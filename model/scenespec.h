@@ -11,6 +11,7 @@
 
 #include "core/limits.h"
 #include "model/body.h"
+#include "model/material.h"
 #include "model/obstacle.h"
 #include "model/springs.h"
 #include "model/vec3.h"
@@ -20,9 +21,10 @@ namespace jello {
 // One jelly of a scene with several ([[jelly]]): its points are body->parts[p]'s in the joined
 // body, its mass and springs its own.
 struct JellySpec {
-  double mass = 0;  // kg a point, > 0
+  double mass = 0;  // kg a point, > 0 (a jelly of elements: its points' masses are lumped)
   SpringConstants springs;
   bool selfContact = false;  // its surface kept from passing through itself
+  Material material;         // springs, or finite elements (model/elements.h)
 };
 
 // Contact between jellies, and of a jelly with itself (model/bodycontact.h): every surface point a
@@ -44,6 +46,8 @@ struct SceneSpec {
   std::vector<JellySpec> jellies;
   // Whether the one jelly keeps from passing through itself ([jelly] self_contact).
   bool selfContact = false;
+  // What the one jelly is made of ([jelly] material).
+  Material material;
   // Contact between bodies: there for several jellies or self-contact, else none.
   std::optional<BodyContactSpec> bodyContact;
   Vec3 gravity;                     // m/s^2, on every point, everywhere

@@ -59,6 +59,10 @@ class JacobianSink {
   virtual void addPair(const Block3& dFdL, const Block3& dFdw) = 0;
   // The derivatives of a point force on q with respect to q's own position and velocity.
   virtual void addPoint(int q, const Block3& dFdp, const Block3& dFdv) = 0;
+  // Adds to block k of the term's couplings() (the derivatives of the force on its row point with
+  // respect to its column point's position and velocity), for terms whose forces join several
+  // points at once (finite elements); a block may be added to many times.
+  virtual void addCoupling(std::size_t k, const Block3& dFdp, const Block3& dFdv) = 0;
 };
 
 // One line of the scene's description: a label ("springs", "plane", ...) and the text after it.
@@ -74,10 +78,10 @@ class ForceTerm {
   int pointCount() const { return points_; }
   PointRange allPoints() const { return {0, points_}; }
 
-  // Pair terms (the springs) join two points; point terms (walls, plane, field) act on each
-  // point alone, from its own position and velocity. The kernel sums the pair terms' forces
-  // first, then adds the point terms' forces summed among themselves (the order docs/physics.md
-  // gives, which every result reproduces bit for bit).
+  // Pair terms (the springs, the finite elements) join points; point terms (walls, plane, field)
+  // act on each point alone, from its own position and velocity. The kernel sums the pair terms'
+  // forces first, then adds the point terms' forces summed among themselves (the order
+  // docs/physics.md gives, which every result reproduces bit for bit).
   virtual bool isPairTerm() const { return false; }
   // The pairs (a, b) a pair term joins, in the order of its Jacobian blocks; none for a point term.
   virtual std::vector<std::pair<int, int>> pairs() const { return {}; }
@@ -88,6 +92,12 @@ class ForceTerm {
   // Jacobian blocks addJacobian(p, ...) gives.
   virtual bool pairsMove() const { return false; }
   virtual std::vector<std::pair<int, int>> pairsAt(const double* /*p*/) const { return pairs(); }
+
+  // The blocks (row, column) of the Jacobian of a term whose forces join several points at once
+  // (finite elements), each once, fixed; none for the others. Its addJacobian gives them through
+  // JacobianSink::addCoupling by their place in this list.
+  virtual std::vector<std::pair<int, int>> couplings() const { return {}; }
+  virtual std::size_t couplingCount() const { return 0; }
 
   // Whether the term may act on some point inside `box`. Conservative: true when unsure.
   virtual bool mayReach(const Bounds& box) const = 0;

@@ -38,6 +38,22 @@ std::vector<std::pair<int, int>> pairsOf(const Model& model, const double* p) {
   return pairs;
 }
 
+// Every block of the model's coupling terms (finite elements), in the terms' order.
+std::vector<std::pair<int, int>> couplingsOf(const Model& model) {
+  std::vector<std::pair<int, int>> blocks;
+  for (const auto& term : model.forces.terms) {
+    const std::vector<std::pair<int, int>> own = term->couplings();
+    blocks.insert(blocks.end(), own.begin(), own.end());
+  }
+  return blocks;
+}
+
+std::size_t couplingCountOf(const Model& model) {
+  std::size_t count = 0;
+  for (const auto& term : model.forces.terms) count += term->couplingCount();
+  return count;
+}
+
 // Whether `cached` (pairsOf at some positions) is the model's pairs at p: the terms whose pairs
 // are fixed are checked by their count alone, those whose pairs move pair by pair.
 bool samePairs(const Model& model, const double* p,
@@ -56,12 +72,14 @@ bool samePairs(const Model& model, const double* p,
 
 // Every (row, column) block of the pattern, in the order of AccelerationJacobian::blockSlots.
 std::vector<std::pair<int, int>> patternBlocks(const std::vector<std::pair<int, int>>& pairs,
+                                               const std::vector<std::pair<int, int>>& couplings,
                                                int points) {
   std::vector<std::pair<int, int>> blocks;
-  blocks.reserve(4 * pairs.size() + points);
+  blocks.reserve(4 * pairs.size() + couplings.size() + points);
   for (auto [a, b] : pairs)
     for (auto [row, column] : {std::pair{a, a}, {a, b}, {b, a}, {b, b}})
       blocks.push_back({row, column});
+  blocks.insert(blocks.end(), couplings.begin(), couplings.end());
   for (int q = 0; q < points; ++q) blocks.push_back({q, q});
   return blocks;
 }
@@ -148,8 +166,12 @@ class PointSums : public JacobianSink {
     accumulate(&pointP_[q], dFdp);
     accumulate(&pointV_[q], dFdv);
   }
+  // The place of the next term's first coupling block among all the terms'.
+  void startTerm(std::size_t couplingOffset) { couplingOffset_ = couplingOffset; }
 
  protected:
+  std::size_t couplingOffset_ = 0;
+
   // Point q's blocks by position (the pull included) and by velocity; once per point.
   const Block3& byPosition(int q, const Pull* pull) {
     if (pull && pull->point == q)
@@ -179,8 +201,17 @@ class Assembly final : public PointSums {
       ++slot_;
     }
   }
+  void addCoupling(std::size_t k, const Block3& dFdp, const Block3& dFdv) override {
+    const std::size_t block = 4 * out_.pairs.size() + couplingOffset_ + k;
+    JELLO_ASSERT(couplingOffset_ + k < out_.couplings);
+    const int row = patternRow(block);
+    addBlock(out_.dAdp.valuePtr(), out_.blockSlots[block], dFdp, perMass_[row]);
+    addBlock(out_.dAdv.valuePtr(), out_.blockSlots[block], dFdv, perMass_[row]);
+  }
   void finish(const Pull* pull) {
     // Every pair term gave as many pairs as it listed when the pattern was built.
+    JELLO_ASSERT(slot_ == 4 * out_.pairs.size());
+    slot_ += out_.couplings;
     JELLO_ASSERT(slot_ + points() == out_.blockSlots.size());
     for (int q = 0; q < points(); ++q, ++slot_) {
       addBlock(out_.dAdp.valuePtr(), out_.blockSlots[slot_], byPosition(q, pull), perMass_[q]);
@@ -189,6 +220,11 @@ class Assembly final : public PointSums {
   }
 
  private:
+  // The row point of pattern block `block` (a coupling's).
+  int patternRow(std::size_t block) const {
+    return out_.couplingRows[block - 4 * out_.pairs.size()];
+  }
+
   AccelerationJacobian& out_;
   std::vector<double> perMass_;
   std::size_t slot_ = 0;
@@ -209,10 +245,15 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
                           AccelerationJacobian* out) {
   // The pattern is made once per model shape and pairs in contact; later calls only check that
   // it still fits.
-  if (out->blockSlots.size() != 4 * out->pairs.size() + model.points() ||
-      !samePairs(model, p, out->pairs)) {
+  if (out->blockSlots.size() != 4 * out->pairs.size() + out->couplings + model.points() ||
+      out->couplings != couplingCountOf(model) || !samePairs(model, p, out->pairs)) {
     out->pairs = pairsOf(model, p);
-    const std::vector<std::pair<int, int>> blocks = patternBlocks(out->pairs, model.points());
+    const std::vector<std::pair<int, int>> couplings = couplingsOf(model);
+    out->couplings = couplings.size();
+    out->couplingRows.clear();
+    for (auto [row, column] : couplings) out->couplingRows.push_back(row);
+    const std::vector<std::pair<int, int>> blocks =
+        patternBlocks(out->pairs, couplings, model.points());
     out->dAdp = patternMatrix(blocks, model.points());
     out->dAdv = out->dAdp;
     out->blockSlots = findSlots(blocks, out->dAdp, model.points());
@@ -220,7 +261,12 @@ void accelerationJacobian(const Model& model, const double* p, const double* v, 
   std::fill(out->dAdp.valuePtr(), out->dAdp.valuePtr() + out->dAdp.nonZeros(), 0.0);
   std::fill(out->dAdv.valuePtr(), out->dAdv.valuePtr() + out->dAdv.nonZeros(), 0.0);
   Assembly assembly(model.points(), out, perMassOf(model));
-  for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
+  std::size_t offset = 0;
+  for (const auto& term : model.forces.terms) {
+    assembly.startTerm(offset);
+    term->addJacobian(p, v, &assembly);
+    offset += term->couplingCount();
+  }
   assembly.finish(pull);
   if (!model.pinned.empty()) zeroPinnedRows(model.pinned, model.points(), out);
 }
@@ -240,9 +286,9 @@ class BlockAssembly final : public PointSums {
     mass_ = mass;
     out_.rowScale.clear();
     if (uniform) {
-      byPosition_ = -cp / model.world.mass;
-      byVelocity_ = -cv / model.world.mass;
-      JELLO_ASSERT(mass.empty() || mass[0] == model.world.mass);
+      const double common = mass.empty() ? model.world.mass : mass[0];
+      byPosition_ = -cp / common;
+      byVelocity_ = -cv / common;
     } else {
       byPosition_ = -cp;
       byVelocity_ = -cv;
@@ -253,6 +299,11 @@ class BlockAssembly final : public PointSums {
     JELLO_ASSERT(pair_ < out_.pair.size());
     Block3& b = out_.pair[pair_++];
     for (int e = 0; e < 9; ++e) b.m[e] = byPosition_ * dFdL.m[e] + byVelocity_ * dFdw.m[e];
+  }
+  void addCoupling(std::size_t k, const Block3& dFdp, const Block3& dFdv) override {
+    JELLO_ASSERT(couplingOffset_ + k < out_.coupling.size());
+    Block3& b = out_.coupling[couplingOffset_ + k];
+    for (int e = 0; e < 9; ++e) b.m[e] += byPosition_ * dFdp.m[e] + byVelocity_ * dFdv.m[e];
   }
   // The diagonal blocks: the identity and the point terms' (the pull's included).
   void finish(const Pull* pull) {
@@ -297,6 +348,11 @@ void NewtonBlocks::multiply(const double* x, double* y) const {
       store(y, b, n, load(y, b, n) - rowScale[b] * f);
     }
   }
+  for (std::size_t k = 0; k < couplings.size(); ++k) {
+    const auto [row, column] = couplings[k];
+    const Vec3 f = times(coupling[k], load(x, column, n));
+    store(y, row, n, load(y, row, n) + (rowScale.empty() ? f : rowScale[row] * f));
+  }
   for (int q : pinned) store(y, q, n, load(x, q, n));
 }
 
@@ -313,6 +369,13 @@ void NewtonBlocks::diagonal(double* d) const {
       d[coordIndex(b, axis, n)] += scaleB * pair[k].m[4 * axis];
     }
   }
+  for (std::size_t k = 0; k < couplings.size(); ++k) {
+    const auto [row, column] = couplings[k];
+    if (row != column) continue;
+    const double scale = rowScale.empty() ? 1.0 : rowScale[row];
+    for (int axis = 0; axis < 3; ++axis)
+      d[coordIndex(row, axis, n)] += scale * coupling[k].m[4 * axis];
+  }
   for (int q : pinned) store(d, q, n, Vec3{1, 1, 1});
 }
 
@@ -325,9 +388,19 @@ void newtonBlocks(const Model& model, const double* p, const double* v, const Pu
     out->pair.resize(out->pairs.size());
     out->point.resize(model.points());
   }
+  if (out->coupling.size() != couplingCountOf(model)) {
+    out->couplings = couplingsOf(model);
+    out->coupling.resize(out->couplings.size());
+  }
+  std::fill(out->coupling.begin(), out->coupling.end(), Block3{});
   // -cp dA/dp - cv dA/dv, dA = dF / mass.
   BlockAssembly assembly(model, out, cv, cp);
-  for (const auto& term : model.forces.terms) term->addJacobian(p, v, &assembly);
+  std::size_t offset = 0;
+  for (const auto& term : model.forces.terms) {
+    assembly.startTerm(offset);
+    term->addJacobian(p, v, &assembly);
+    offset += term->couplingCount();
+  }
   assembly.finish(pull);
   out->pinned = model.pinned;
 }
@@ -355,6 +428,10 @@ SparseMatrix sparseOf(const NewtonBlocks& blocks) {
     add(a, b, blocks.pair[k], -scaleA);
     add(b, a, blocks.pair[k], -scaleB);
     add(b, b, blocks.pair[k], scaleB);
+  }
+  for (std::size_t k = 0; k < blocks.couplings.size(); ++k) {
+    const auto [row, column] = blocks.couplings[k];
+    add(row, column, blocks.coupling[k], blocks.rowScale.empty() ? 1.0 : blocks.rowScale[row]);
   }
   SparseMatrix matrix(3 * n, 3 * n);
   matrix.setFromTriplets(entries.begin(), entries.end());

@@ -33,11 +33,16 @@ Mat3 toMatrix(const Block3& block);
 struct AccelerationJacobian {
   SparseMatrix dAdp, dAdv;
   // Where each block's entries (row-major) are in the value arrays: the 4 blocks (aa, ab, ba,
-  // bb) of every pair in order, then the diagonal block of every point. A block's rows are
-  // not adjacent in the per-point layout (see coordIndex), so each entry has its own slot.
+  // bb) of every pair in order, then every coupling block, then the diagonal block of every point.
+  // A block's rows are not adjacent in the per-point layout (see coordIndex), so each entry has its
+  // own slot.
   std::vector<BlockSlots> blockSlots;
   // The pairs of the pair terms, in order, as the pattern was made for (model/term.h pairsAt).
   std::vector<std::pair<int, int>> pairs;
+  // How many coupling blocks the terms have (model/term.h couplings; after the pairs' blocks in
+  // blockSlots), and each one's row point.
+  std::size_t couplings = 0;
+  std::vector<int> couplingRows;
   std::vector<Block3> pointP,
       pointV;  // scratch: each point's diagonal block, summed over the terms
 };
@@ -53,6 +58,10 @@ struct NewtonBlocks {
   std::vector<std::pair<int, int>> pairs;  // (a, b), in the pair terms' order
   std::vector<Block3> pair;                // B of each pair
   std::vector<Block3> point;               // each point's diagonal block, I included
+  // The coupling terms' blocks (model/term.h couplings): N's block (row, column), in the terms'
+  // order, scaled as B is.
+  std::vector<std::pair<int, int>> couplings;
+  std::vector<Block3> coupling;
   // Empty when every point has the same mass (then B holds 1 / mass); else 1 / each point's mass,
   // which scales B in the rows of the point (B then in force units).
   std::vector<double> rowScale;

@@ -125,6 +125,7 @@ TEST(BodyContact, JacobianMatchesCentralDifferencesWithFriction) {
                 sign * block.m[3 * i + j];
     }
     void addPoint(int, const Block3&, const Block3&) override {}
+    void addCoupling(std::size_t, const Block3&, const Block3&) override {}
   };
   double worst = 0, largest = 0;
   for (bool velocity : {false, true}) {

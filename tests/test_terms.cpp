@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "io/scenereader.h"
 #include "solver/physics.h"
 #include "test_support.h"
 
@@ -46,11 +47,15 @@ State contactState() {
   return s;
 }
 
-// The term's blocks as a dense matrix of dF/dp (or dF/dv), kNumCoords square.
+// The term's blocks as a dense matrix of dF/dp (or dF/dv), 3n square for n points.
 class DenseSink final : public JacobianSink {
  public:
-  DenseSink(std::vector<std::pair<int, int>> pairs, bool velocity)
-      : pairs_(std::move(pairs)), velocity_(velocity), m_(kNumCoords * kNumCoords, 0.0) {}
+  DenseSink(const ForceTerm& term, const double* p, bool velocity)
+      : n_(term.pointCount()),
+        pairs_(term.pairsAt(p)),
+        couplings_(term.couplings()),
+        velocity_(velocity),
+        m_(std::size_t(3 * n_) * (3 * n_), 0.0) {}
   void addPair(const Block3& dFdL, const Block3& dFdw) override {
     auto [a, b] = pairs_[next_++];
     const Block3& block = velocity_ ? dFdw : dFdL;
@@ -61,18 +66,23 @@ class DenseSink final : public JacobianSink {
   void addPoint(int q, const Block3& dFdp, const Block3& dFdv) override {
     add(q, q, velocity_ ? dFdv : dFdp, 1.0);
   }
+  void addCoupling(std::size_t k, const Block3& dFdp, const Block3& dFdv) override {
+    ASSERT_LT(k, couplings_.size());
+    add(couplings_[k].first, couplings_[k].second, velocity_ ? dFdv : dFdp, 1.0);
+  }
   double at(int row, int column) const {
-    return m_[static_cast<std::size_t>(row) * kNumCoords + column];
+    return m_[static_cast<std::size_t>(row) * 3 * n_ + column];
   }
 
  private:
   void add(int row, int column, const Block3& block, double sign) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        m_[static_cast<std::size_t>(coordIndex(row, i)) * kNumCoords + coordIndex(column, j)] +=
+        m_[static_cast<std::size_t>(coordIndex(row, i, n_)) * 3 * n_ + coordIndex(column, j, n_)] +=
             sign * block.m[3 * i + j];
   }
-  std::vector<std::pair<int, int>> pairs_;
+  int n_;
+  std::vector<std::pair<int, int>> pairs_, couplings_;
   bool velocity_;
   std::size_t next_ = 0;
   std::vector<double> m_;
@@ -80,9 +90,36 @@ class DenseSink final : public JacobianSink {
 
 std::vector<double> termForce(const ForceTerm& term, const std::vector<double>& p,
                               const std::vector<double>& v) {
-  std::vector<double> f(kNumCoords, 0.0);
+  std::vector<double> f(p.size(), 0.0);
   term.addForces(p.data(), v.data(), nullptr, f.data());
   return f;
+}
+
+// The largest difference between the term's blocks and central differences of its force, for
+// `samples` coordinates of the positions (or velocities) at random, and the largest block entry.
+std::pair<double, double> jacobianError(const ForceTerm& term, std::vector<double> p,
+                                        std::vector<double> v, bool velocity, int samples,
+                                        std::mt19937* random) {
+  const int coords = static_cast<int>(p.size());
+  DenseSink sink(term, p.data(), velocity);
+  term.addJacobian(p.data(), v.data(), &sink);
+  double worst = 0, scale = 0;
+  for (int sample = 0; sample < samples; ++sample) {
+    const int c = std::uniform_int_distribution<int>(0, coords - 1)(*random);
+    std::vector<double>& x = velocity ? v : p;
+    const double saved = x[c], h = 1e-6 * std::max(1.0, std::fabs(saved));
+    x[c] = saved + h;
+    std::vector<double> plus = termForce(term, p, v);
+    x[c] = saved - h;
+    std::vector<double> minus = termForce(term, p, v);
+    x[c] = saved;
+    for (int r = 0; r < coords; ++r) {
+      const double numeric = (plus[r] - minus[r]) / (2 * h), analytic = sink.at(r, c);
+      worst = std::max(worst, std::fabs(numeric - analytic));
+      scale = std::max(scale, std::fabs(analytic));
+    }
+  }
+  return {worst, scale};
 }
 
 // Every term's blocks against central differences of its own force, for 40 coordinates of
@@ -94,29 +131,48 @@ TEST(ForceTerms, EachJacobianMatchesFiniteDifferencesOfItsForce) {
   ASSERT_EQ(model.forces.terms.size(), 4u);
   std::vector<double> p(s.p(), s.p() + kNumCoords), v(s.v(), s.v() + kNumCoords);
   std::mt19937 random(5);
-  for (const auto& term : model.forces.terms) {
+  for (const auto& term : model.forces.terms)
     for (bool velocity : {false, true}) {
-      DenseSink sink(term->pairsAt(p.data()), velocity);
-      term->addJacobian(p.data(), v.data(), &sink);
-      double worst = 0, scale = 0;
-      for (int sample = 0; sample < 40; ++sample) {
-        const int c = std::uniform_int_distribution<int>(0, kNumCoords - 1)(random);
-        const double h = 1e-6;
-        std::vector<double>& x = velocity ? v : p;
-        const double saved = x[c];
-        x[c] = saved + h;
-        std::vector<double> plus = termForce(*term, p, v);
-        x[c] = saved - h;
-        std::vector<double> minus = termForce(*term, p, v);
-        x[c] = saved;
-        for (int r = 0; r < kNumCoords; ++r) {
-          const double numeric = (plus[r] - minus[r]) / (2 * h), analytic = sink.at(r, c);
-          worst = std::max(worst, std::fabs(numeric - analytic));
-          scale = std::max(scale, std::fabs(analytic));
-        }
-      }
+      const auto [worst, scale] = jacobianError(*term, p, v, velocity, 40, &random);
       EXPECT_LE(worst, 1e-5 * std::max(scale, 1.0))
           << term->describe(p.data())[0].label << (velocity ? " dF/dv" : " dF/dp");
+    }
+}
+
+// A jelly of finite elements of each material, bent and moving: its term's blocks (elastic,
+// viscous and mass damping) against central differences of its force.
+TEST(ForceTerms, ElementJacobiansMatchFiniteDifferencesOfTheirForce) {
+  for (const char* material : {"corotated", "neohookean"}) {
+    const WorldFile file = parseScene(std::string(R"(
+[bounds]
+present = false
+[jelly]
+shape = "lattice"
+size = [3, 3, 3]
+spacing = 0.1
+youngs_modulus = 1e4
+poisson_ratio = 0.3
+density = 1000
+mass_damping = 0.5
+stiffness_damping = 0.01
+material = ")") + material + "\"\n",
+                                      "elements.toml", "");
+    State s = file.state;
+    const int n = s.points();
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-1, 1);
+    for (int q = 0; q < n; ++q) {
+      store(s.p(), q, n, load(s.p(), q, n) + Vec3{jitter(random), jitter(random), jitter(random)});
+      store(s.v(), q, n, Vec3{speed(random), speed(random), speed(random)});
+    }
+    const Model model = makeModel(file.world, s, KernelChoice::General);
+    ASSERT_NE(model.forces.elements, nullptr);
+    std::vector<double> p(s.p(), s.p() + 3 * n), v(s.v(), s.v() + 3 * n);
+    for (bool velocity : {false, true}) {
+      const auto [worst, scale] =
+          jacobianError(*model.forces.elements, p, v, velocity, 3 * n, &random);
+      EXPECT_GT(scale, 1.0);
+      EXPECT_LE(worst, 1e-6 * scale) << material << (velocity ? " dF/dv" : " dF/dp");
     }
   }
 }

@@ -1,0 +1,87 @@
+// model/mat3.cpp: the polar decomposition (mat3.h).
+
+#include "model/mat3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace jello {
+
+namespace {
+
+// The eigenvalues of the symmetric a (into d) and its eigenvectors (the columns of v, a rotation),
+// by cyclic Jacobi rotations until the off-diagonal part is below 1e-15 of the matrix (at most 20
+// sweeps; 3x3 matrices take 3 to 5).
+void symmetricEigen(Mat3x3 a, Vec3* d, Mat3x3* v) {
+  *v = identity3();
+  const double scale = std::sqrt(contract(a, a));
+  for (int sweep = 0; sweep < 20; ++sweep) {
+    const double off = a(0, 1) * a(0, 1) + a(0, 2) * a(0, 2) + a(1, 2) * a(1, 2);
+    if (!(off > 1e-30 * scale * scale)) break;
+    for (auto [p, q] : {std::pair{0, 1}, {0, 2}, {1, 2}}) {
+      if (a(p, q) == 0) continue;
+      // The rotation in the (p, q) plane that zeroes a(p, q).
+      const double theta = (a(q, q) - a(p, p)) / (2 * a(p, q));
+      const double t =
+          (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
+      const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+      Mat3x3 g = identity3();
+      g(p, p) = c, g(q, q) = c, g(p, q) = s, g(q, p) = -s;
+      a = transpose(g) * a * g;
+      *v = *v * g;
+    }
+  }
+  *d = {a(0, 0), a(1, 1), a(2, 2)};
+}
+
+}  // namespace
+
+PolarDecomposition polarDecomposition(const Mat3x3& f) {
+  Vec3 eigen;
+  Mat3x3 v;
+  symmetricEigen(transpose(f) * f, &eigen, &v);
+  // Largest first.
+  double values[3] = {eigen.x, eigen.y, eigen.z};
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int a, int b) { return values[a] > values[b]; });
+  Mat3x3 sorted = fromColumns(v.column(order[0]), v.column(order[1]), v.column(order[2]));
+  if (determinant(sorted) < 0) sorted.setColumn(2, -1.0 * sorted.column(2));
+  double sigma[3];
+  for (int i = 0; i < 3; ++i) sigma[i] = std::sqrt(std::max(values[order[i]], 0.0));
+  // U's first two columns from F v_i / sigma_i (the largest stretches, the best defined), the third
+  // their cross product so that det U = +1; sigma_3 then takes F's orientation's sign.
+  Vec3 u[3];
+  const Vec3 fallback[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int i = 0; i < 2; ++i) {
+    const Vec3 w = f * sorted.column(i);
+    double len;
+    u[i] = direction(w, &len);
+    if (len <= 1e-12 * (sigma[0] + 1e-300)) {
+      // A collapsed direction: any unit vector orthogonal to the ones before.
+      Vec3 pick = fallback[0];
+      for (const Vec3& candidate : fallback)
+        if (i == 0 || std::fabs(dot(candidate, u[0])) < 0.9) {
+          pick = candidate;
+          break;
+        }
+      if (i == 1) pick = pick - dot(pick, u[0]) * u[0];
+      u[i] = direction(pick, &len);
+    } else if (i == 1) {
+      const Vec3 w1 = u[1] - dot(u[1], u[0]) * u[0];
+      u[1] = direction(w1, &len);
+    }
+  }
+  u[2] = cross(u[0], u[1]);
+  if (determinant(f) < 0) sigma[2] = -sigma[2];
+  const Mat3x3 uu = fromColumns(u[0], u[1], u[2]);
+  PolarDecomposition out;
+  out.rotation = uu * transpose(sorted);
+  Mat3x3 diagonal;
+  diagonal.m[0] = sigma[0], diagonal.m[4] = sigma[1], diagonal.m[8] = sigma[2];
+  out.stretch = sorted * diagonal * transpose(sorted);
+  out.singular = {sigma[0], sigma[1], sigma[2]};
+  return out;
+}
+
+}  // namespace jello

@@ -1,0 +1,111 @@
+// model/material.cpp: the materials' stress and energy (material.h).
+
+#include "model/material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/assert.h"
+
+namespace jello {
+
+const MaterialInfo& materialInfo(MaterialKind kind) {
+  JELLO_ASSERT(int(kind) < int(kMaterials.size()));
+  return kMaterials[int(kind)];
+}
+
+Lame lameOf(const Material& m) {
+  const double e = m.youngsModulus, nu = m.poissonRatio;
+  return {e / (2 * (1 + nu)), e * nu / ((1 + nu) * (1 - 2 * nu))};
+}
+
+namespace {
+
+double neoHookeanLambda(Lame lame) { return lame.lambda + lame.mu; }
+
+}  // namespace
+
+double energyDensity(MaterialKind kind, Lame lame, const Mat3x3& f) {
+  const double j = determinant(f);
+  if (kind == MaterialKind::Corotated) {
+    const Mat3x3 d = f - polarDecomposition(f).rotation;
+    return lame.mu * contract(d, d) + 0.5 * lame.lambda * (j - 1) * (j - 1);
+  }
+  JELLO_ASSERT(kind == MaterialKind::NeoHookean);
+  const double ic = contract(f, f);
+  return 0.5 * lame.mu * (ic - 3) - lame.mu * (j - 1) +
+         0.5 * neoHookeanLambda(lame) * (j - 1) * (j - 1);
+}
+
+Mat3x3 firstPiola(MaterialKind kind, Lame lame, const Mat3x3& f) {
+  const double j = determinant(f);
+  const Mat3x3 cof = cofactor(f);
+  if (kind == MaterialKind::Corotated)
+    return 2 * lame.mu * (f - polarDecomposition(f).rotation) + lame.lambda * (j - 1) * cof;
+  JELLO_ASSERT(kind == MaterialKind::NeoHookean);
+  return lame.mu * f + (neoHookeanLambda(lame) * (j - 1) - lame.mu) * cof;
+}
+
+StressDerivative::StressDerivative(MaterialKind kind, Lame lame, const Mat3x3& f)
+    : kind_(kind), lame_(lame), f_(f), cof_(cofactor(f)), j_(determinant(f)) {
+  if (kind != MaterialKind::Corotated) return;
+  const PolarDecomposition polar = polarDecomposition(f);
+  rotation_ = polar.rotation;
+  // (tr S I - S) has eigenvalues s1 + s2, s0 + s2, s0 + s1 on S's eigenvectors.
+  const double s[3] = {polar.singular.x, polar.singular.y, polar.singular.z};
+  const double floor = 1e-6 * std::max(std::fabs(s[0]), 1e-300);
+  Mat3x3 m = trace(polar.stretch) * identity3() - polar.stretch;
+  const double smallest = s[1] + s[2];
+  if (smallest < floor) {
+    // The smallest eigenvalue belongs to S's eigenvector e0 (S e0 = s0 e0): the direction of the
+    // largest column of (S - s1 I)(S - s2 I). Lift it to the floor.
+    const Mat3x3 p = (polar.stretch - s[1] * identity3()) * (polar.stretch - s[2] * identity3());
+    Vec3 e0 = p.column(0);
+    for (int c = 1; c < 3; ++c)
+      if (length(p.column(c)) > length(e0)) e0 = p.column(c);
+    double len;
+    e0 = direction(e0, &len);
+    const double v[3] = {e0.x, e0.y, e0.z};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m(r, c) += (floor - smallest) * v[r] * v[c];
+  }
+  solve_ = inverse(m);
+}
+
+Mat3x3 StressDerivative::apply(const Mat3x3& df) const {
+  const double dj = contract(cof_, df);
+  const Mat3x3 dcof = cofactorChange(f_, df);
+  if (kind_ == MaterialKind::Corotated) {
+    // W S + S W = R^T dF - dF^T R for W = R^T dR = skew(w): (tr S I - S) w = 2 axial(R^T dF).
+    const Vec3 w = solve_ * (2.0 * axial(transpose(rotation_) * df));
+    const Mat3x3 dr = rotation_ * skew(w);
+    return 2 * lame_.mu * (df - dr) + lame_.lambda * dj * cof_ + lame_.lambda * (j_ - 1) * dcof;
+  }
+  const double lambda = neoHookeanLambda(lame_);
+  return lame_.mu * df + lambda * dj * cof_ + (lambda * (j_ - 1) - lame_.mu) * dcof;
+}
+
+namespace {
+
+// S_d of a Green strain rate e: beta (2 mu e + lambda tr(e) I).
+Mat3x3 viscousSecond(Lame lame, double beta, const Mat3x3& e) {
+  return beta * (2 * lame.mu * e + lame.lambda * trace(e) * identity3());
+}
+
+}  // namespace
+
+Mat3x3 viscousStress(Lame lame, double beta, const Mat3x3& f, const Mat3x3& fdot) {
+  return f * viscousSecond(lame, beta, symmetric(transpose(f) * fdot));
+}
+
+Mat3x3 viscousStressByF(Lame lame, double beta, const Mat3x3& f, const Mat3x3& fdot,
+                        const Mat3x3& df) {
+  return df * viscousSecond(lame, beta, symmetric(transpose(f) * fdot)) +
+         f * viscousSecond(lame, beta, symmetric(transpose(df) * fdot));
+}
+
+Mat3x3 viscousStressByRate(Lame lame, double beta, const Mat3x3& f, const Mat3x3& dfdot) {
+  return f * viscousSecond(lame, beta, symmetric(transpose(f) * dfdot));
+}
+
+}  // namespace jello

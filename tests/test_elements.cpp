@@ -1,0 +1,420 @@
+// Finite elements (model/elements.h, model/material.h, docs/physics.md "Finite elements"): the
+// materials' stresses against their energies, the patch test, rotations, Poisson's contraction, a
+// cantilever against beam theory, energy conservation, an inverted element restored, TetGen
+// meshes and the refusals of bad ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/inputerror.h"
+#include "io/scenereader.h"
+#include "io/tetmesh.h"
+#include "model/model.h"
+#include "solver/integrators.h"
+#include "solver/physics.h"
+#include "solver/simulation.h"
+#include "solver/statics.h"
+
+namespace jello {
+namespace {
+
+constexpr Lame kLame{3.0e3, 7.0e3};  // Pa
+
+Mat3x3 randomMatrix(std::mt19937* random, double spread) {
+  std::uniform_real_distribution<double> d(-spread, spread);
+  Mat3x3 m = identity3();
+  for (double& e : m.m) e += d(*random);
+  return m;
+}
+
+Mat3x3 rotationAbout(Vec3 axis, double angle) {
+  double len;
+  const Vec3 u = direction(axis, &len);
+  // Rodrigues: I + sin K + (1 - cos) K^2.
+  const Mat3x3 k = skew(u);
+  return identity3() + std::sin(angle) * k + (1 - std::cos(angle)) * (k * k);
+}
+
+// P against central differences of Psi, and dP against central differences of P, for both
+// materials at random deformations (the Neo-Hookean's also inverted ones).
+TEST(Materials, StressIsTheGradientOfTheEnergyAndItsDerivativeExact) {
+  std::mt19937 random(4);
+  for (MaterialKind kind : {MaterialKind::Corotated, MaterialKind::NeoHookean})
+    for (int sample = 0; sample < 20; ++sample) {
+      Mat3x3 f = randomMatrix(&random, 0.4);
+      if (kind == MaterialKind::NeoHookean && sample % 4 == 0) f.setColumn(2, -1.0 * f.column(2));
+      const Mat3x3 p = firstPiola(kind, kLame, f);
+      const StressDerivative derivative(kind, kLame, f);
+      const double h = 1e-6;
+      for (int e = 0; e < 9; ++e) {
+        Mat3x3 plus = f, minus = f;
+        plus.m[e] += h, minus.m[e] -= h;
+        const double numeric =
+            (energyDensity(kind, kLame, plus) - energyDensity(kind, kLame, minus)) / (2 * h);
+        EXPECT_NEAR(p.m[e], numeric, 1e-5 * kLame.lambda) << materialInfo(kind).name;
+        const Mat3x3 dp = derivative.apply(unitMatrix(e / 3, e % 3));
+        const Mat3x3 change =
+            (1 / (2 * h)) * (firstPiola(kind, kLame, plus) - firstPiola(kind, kLame, minus));
+        for (int k = 0; k < 9; ++k)
+          EXPECT_NEAR(dp.m[k], change.m[k], 1e-4 * kLame.lambda) << materialInfo(kind).name;
+      }
+    }
+}
+
+// At rest and under any rotation both materials store nothing and pull nothing; at small strain
+// both give Lame's stress, 2 mu eps + lambda tr(eps) I.
+TEST(Materials, RotationsAreFreeAndSmallStrainIsLames) {
+  for (MaterialKind kind : {MaterialKind::Corotated, MaterialKind::NeoHookean}) {
+    const Mat3x3 r = rotationAbout({0.3, -1, 0.5}, 2.1);
+    EXPECT_NEAR(energyDensity(kind, kLame, r), 0, 1e-9);
+    for (double e : firstPiola(kind, kLame, r).m) EXPECT_NEAR(e, 0, 1e-8);
+    Mat3x3 eps;
+    eps(0, 0) = 1e-6, eps(1, 1) = -3e-7, eps(0, 1) = eps(1, 0) = 2e-7, eps(2, 2) = 5e-7;
+    const Mat3x3 p = firstPiola(kind, kLame, identity3() + eps);
+    const Mat3x3 lame = 2 * kLame.mu * eps + kLame.lambda * trace(eps) * identity3();
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(p.m[k], lame.m[k], 1e-7) << materialInfo(kind).name;
+  }
+}
+
+// A scene of one jelly of elements: `size` points along each axis of spacing h, the material's
+// keys, and `extra` lines (gravity, pins).
+WorldFile elementScene(const std::string& material, const std::string& size, double h,
+                       const std::string& extra = "", double e = 1e4, double nu = 0.3) {
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "dt = 0.0001\n%s\n[bounds]\npresent = false\n[jelly]\nshape = \"lattice\"\n"
+                "size = %s\nspacing = %.17g\nmaterial = \"%s\"\nyoungs_modulus = %.17g\n"
+                "poisson_ratio = %.17g\ndensity = 1000\n",
+                extra.c_str(), size.c_str(), h, material.c_str(), e, nu);
+  return parseScene(text, "elements.toml", "");
+}
+
+std::vector<double> forcesAt(const Model& model, const std::vector<double>& p) {
+  std::vector<double> v(p.size(), 0.0), f(p.size(), 0.0);
+  computeForces(model, p.data(), v.data(), f.data());
+  return f;
+}
+
+// The patch test: positions x = A X + c, a uniform strain, give every element the deformation A
+// exactly and leave every point inside the body without force.
+TEST(Elements, AUniformStrainIsReproducedExactly) {
+  const WorldFile file = elementScene("corotated", "[4, 4, 4]", 0.1);
+  const Model model = makeModel(file.world, file.state);
+  const Body& body = model.body();
+  const int n = model.points();
+  std::mt19937 random(2);
+  const Mat3x3 a = randomMatrix(&random, 0.05);
+  std::vector<double> p(3 * n);
+  for (int q = 0; q < n; ++q) store(p.data(), q, n, a * body.restPosition(q) + Vec3{0.2, -1, 0.4});
+  const ElementTerm& elements = *model.forces.elements;
+  ASSERT_EQ(elements.elementCount(), 6 * 27);
+  for (int e = 0; e < elements.elementCount(); ++e) {
+    const Mat3x3 f = elements.deformation(e, p.data());
+    for (int k = 0; k < 9; ++k) ASSERT_NEAR(f.m[k], a.m[k], 1e-13);
+  }
+  const std::vector<double> f = forcesAt(model, p);
+  double inside = 0, outside = 0;
+  for (int q = 0; q < n; ++q) {
+    const auto i = body.index(q);
+    const bool interior = i[0] > 0 && i[0] < 3 && i[1] > 0 && i[1] < 3 && i[2] > 0 && i[2] < 3;
+    (interior ? inside : outside) =
+        std::max(interior ? inside : outside, length(load(f.data(), q, n)));
+  }
+  EXPECT_GT(outside, 1.0);
+  EXPECT_LT(inside, 1e-12 * outside);
+}
+
+// Any rigid rotation and translation of the rest shape: no force and no energy, both materials.
+TEST(Elements, RigidMotionsExertNoForce) {
+  for (const char* material : {"corotated", "neohookean"}) {
+    const WorldFile file = elementScene(material, "[3, 4, 3]", 0.1);
+    const Model model = makeModel(file.world, file.state);
+    const int n = model.points();
+    const Mat3x3 r = rotationAbout({1, 2, -0.5}, 2.7);
+    std::vector<double> p(3 * n);
+    for (int q = 0; q < n; ++q)
+      store(p.data(), q, n, r * model.body().restPosition(q) + Vec3{1, 0.5, -0.3});
+    double energy = 0;
+    model.forces.elements->addEnergy(p.data(), &energy);
+    EXPECT_NEAR(energy, 0, 1e-12) << material;
+    for (double force : forcesAt(model, p)) EXPECT_NEAR(force, 0, 1e-10) << material;
+  }
+}
+
+// Uniaxial stress: a bar stretched by eps along x contracts by nu eps across when its sides are
+// free. The bar is stretched uniformly and its width chosen so that the forces on its side faces
+// sum to zero; width change over length change is -nu.
+TEST(Elements, UniaxialStretchContractsByPoissonsRatio) {
+  for (const char* material : {"corotated", "neohookean"})
+    for (double nu : {0.0, 0.3, 0.45}) {
+      const WorldFile file = elementScene(material, "[5, 3, 3]", 0.1, "", 1e4, nu);
+      const Model model = makeModel(file.world, file.state);
+      const Body& body = model.body();
+      const int n = model.points();
+      const double eps = 1e-5;
+      // The y forces on the face y = its largest, for a lateral strain delta.
+      auto sideForce = [&](double delta) {
+        std::vector<double> p(3 * n);
+        for (int q = 0; q < n; ++q) {
+          const Vec3 x = body.restPosition(q);
+          store(p.data(), q, n, Vec3{(1 + eps) * x.x, (1 + delta) * x.y, (1 + delta) * x.z});
+        }
+        const std::vector<double> f = forcesAt(model, p);
+        double sum = 0;
+        for (int q = 0; q < n; ++q)
+          if (body.index(q)[1] == 2) sum += load(f.data(), q, n).y;
+        return sum;
+      };
+      // The side force is linear in delta to rounding at this strain: one secant step.
+      const double a = sideForce(0), b = sideForce(-eps);
+      const double delta = eps * a / (b - a);
+      EXPECT_NEAR(-delta / eps, nu, 2e-4) << material;
+    }
+}
+
+// Beam theory's sag of a cantilever under its own weight, q L^4 / (8 E I), q = rho g A,
+// I = h^4 / 12 for a square section h: the static sag of the tip (the mean of its face's
+// points) at n elements through the thickness.
+double cantileverSag(int n, double* beamTheory) {
+  const double length = 0.5, h = 0.1, e = 1e9, rho = 1000, g = 9.81;
+  char size[64];
+  std::snprintf(size, sizeof size, "[%d, %d, %d]", 5 * n + 1, n + 1, n + 1);
+  const WorldFile file = elementScene("corotated", size, h / n,
+                                      "gravity = [0, 0, -9.81]\n[[pin]]\ni = [0, 0]", e, 0.0);
+  const Model model = makeModel(file.world, file.state);
+  const StaticSolution rest = solveStatic(model, file.state);
+  EXPECT_TRUE(rest.converged);
+  const int points = model.points();
+  double sag = 0;
+  int tip = 0;
+  for (int q = 0; q < points; ++q)
+    if (model.body().index(q)[0] == 5 * n) {
+      sag += load(file.state.p(), q, points).z - load(rest.state.p(), q, points).z;
+      ++tip;
+    }
+  *beamTheory = rho * g * h * h * std::pow(length, 4) / (8 * e * std::pow(h, 4) / 12);
+  return sag / tip;
+}
+
+TEST(Elements, ACantileverSagsAsBeamTheorySaysAndConvergesAsTheMeshRefines) {
+  double theory = 0;
+  double previous = 0;
+  for (int n : {1, 2, 4, 8}) {
+    const double sag = cantileverSag(n, &theory);
+    const double error = std::fabs(sag - theory) / theory;
+    if (n > 1) {
+      EXPECT_LT(error, previous) << n;
+    }
+    previous = error;
+    if (n == 8) {
+      EXPECT_LT(error, 0.05);
+    }
+    std::printf("cantilever n = %d: sag %.6g m, beam theory %.6g m, error %.2f%%\n", n, sag, theory,
+                100 * error);
+  }
+}
+
+// Kinetic plus elastic energy, J.
+double totalEnergy(const Model& model, const State& s) {
+  const int n = model.points();
+  double energy = 0;
+  model.forces.elements->addEnergy(s.p(), &energy);
+  for (int q = 0; q < n; ++q)
+    energy += 0.5 * model.pointMass[q] * dot(load(s.v(), q, n), load(s.v(), q, n));
+  return energy;
+}
+
+// Without damping, a jelly of elements set spinning and stretching keeps its energy: RK4's drift
+// falls as dt^4 (a sixteenth for half the step), and is under 1e-6 of it at the small step.
+TEST(Elements, EnergyIsConservedWithoutDamping) {
+  for (const char* material : {"corotated", "neohookean"}) {
+    const WorldFile file = elementScene(material, "[4, 4, 4]", 0.1);
+    State start = file.state;
+    const int n = start.points();
+    for (int q = 0; q < n; ++q) {
+      const Vec3 x = load(start.p(), q, n);
+      store(start.v(), q, n, Vec3{-2 * x.y + 0.5 * x.x, 2 * x.x, 0.3 * x.z});
+    }
+    const Model model = makeModel(file.world, start);
+    const double before = totalEnergy(model, start);
+    double drift[2];
+    for (int k = 0; k < 2; ++k) {
+      const double dt = 4e-3 / (1 << k);
+      Simulation sim(model, start, Integrator::RK4, dt);
+      ASSERT_TRUE(sim.advance(std::llround(0.2 / dt)).ran()) << material;
+      drift[k] = std::fabs(totalEnergy(model, sim.state()) - before) / before;
+    }
+    std::printf("%s: energy drift %.3g at dt = 4 ms, %.3g at 2 ms\n", material, drift[0], drift[1]);
+    EXPECT_LT(drift[1], 1e-6) << material;
+    EXPECT_GT(drift[0], 1e-11) << material;  // the steps' error, not rounding
+    EXPECT_LT(drift[1], drift[0] / 10) << material;
+  }
+}
+
+// An element turned inside out (one corner pushed through the opposite face) is pushed back by
+// the Neo-Hookean material: a damped run ends with every element the right way out, nothing NaN.
+TEST(Elements, AnInvertedElementIsPushedBack) {
+  for (const char* material : {"neohookean", "corotated"}) {
+    WorldFile file = elementScene(material, "[2, 2, 2]", 0.1);
+    const Model model = makeModel(file.world, file.state);
+    State start = file.state;
+    const int n = start.points();
+    // Corner (1,1,1) pushed through to beyond corner (0,0,0).
+    const int corner = model.body().pointAtIndex(1, 1, 1);
+    store(start.p(), corner, n, load(start.p(), corner, n) - Vec3{0.15, 0.15, 0.15});
+    int inverted = 0;
+    const ElementTerm& elements = *model.forces.elements;
+    for (int e = 0; e < elements.elementCount(); ++e)
+      inverted += tetVolume(elements.element(e), start.p(), n) < 0;
+    ASSERT_GT(inverted, 0);
+    World w = file.world;
+    std::shared_ptr<SceneSpec> spec = std::make_shared<SceneSpec>(*w.scene);
+    spec->material.stiffnessDamping = 0.01;
+    w.scene = spec;
+    const Model damped = makeModel(w, start);
+    Simulation sim(damped, start, Integrator::Implicit, 1e-3);
+    ASSERT_TRUE(sim.advance(500).ran()) << material;
+    for (int e = 0; e < elements.elementCount(); ++e)
+      EXPECT_GT(tetVolume(elements.element(e), sim.state().p(), n), 0) << material;
+    for (int c = 0; c < 3 * n; ++c) ASSERT_TRUE(std::isfinite(sim.state().p()[c]));
+  }
+}
+
+// A jelly of elements weighs its density times its volume, each tetrahedron's mass shared by
+// its four corners.
+TEST(Elements, MassesAreLumpedFromTheDensity) {
+  const WorldFile file = elementScene("corotated", "[3, 4, 5]", 0.1);
+  const Model model = makeModel(file.world, file.state);
+  double total = 0;
+  for (double m : model.pointMass) total += m;
+  EXPECT_NEAR(total, 1000 * 0.2 * 0.3 * 0.4, 1e-9);
+  // A corner of the lattice belongs to 1 or 3 of the voxel's 6 tetrahedra; a middle point to 24.
+  const double tet = 1000 * 0.001 / 6 / 4;
+  const Body& body = model.body();
+  EXPECT_NEAR(model.pointMass[body.pointAtIndex(1, 1, 1)], 24 * tet, 1e-12);
+  EXPECT_NEAR(model.pointMass[body.pointAtIndex(0, 0, 0)], 6 * tet, 1e-12);
+  EXPECT_NEAR(model.pointMass[body.pointAtIndex(2, 0, 0)], 2 * tet, 1e-12);
+}
+
+// A unit cube in five tetrahedra, numbered from 1, with comments, and its .ele.
+const char* const kCubeNodes = R"(# a unit cube
+8 3 0 0
+1 0 0 0
+2 1 0 0
+3 0 1 0
+4 1 1 0
+5 0 0 1
+6 1 0 1
+7 0 1 1
+8 1 1 1   # the far corner
+)";
+const char* const kCubeElements = R"(5 4 0
+1 1 2 3 5
+2 4 2 3 8
+3 6 2 5 8
+4 7 3 5 8
+5 2 3 5 8
+)";
+
+TEST(TetMeshes, ATetGenCubeIsReadAsABody) {
+  const Body body = parseTetMesh(kCubeNodes, "cube.1.node", kCubeElements, "cube.1.ele");
+  EXPECT_EQ(body.count(), 8);
+  ASSERT_EQ(body.meshTets.size(), 5u);
+  EXPECT_TRUE(body.gridless());
+  std::vector<double> rest(24);
+  for (int q = 0; q < 8; ++q) store(rest.data(), q, 8, body.restPosition(q));
+  double volume = 0;
+  for (const Tet& t : body.meshTets) {
+    EXPECT_GT(tetVolume(t, rest.data(), 8), 0);
+    volume += tetVolume(t, rest.data(), 8);
+  }
+  EXPECT_NEAR(volume, 1, 1e-15);
+  EXPECT_EQ(body.surface.size(), 12u);  // two triangles a face
+  EXPECT_EQ(body.springs.size(), 18u);  // 12 edges and 6 face diagonals
+  EXPECT_EQ(body.surfacePoints.size(), 8u);
+  EXPECT_EQ(body.label(7), "#7");
+  // Every surface triangle faces out: its normal points away from the cube's middle.
+  for (const Triangle& t : body.surface) {
+    const Vec3 a = body.rest[t[0]], b = body.rest[t[1]], c = body.rest[t[2]];
+    EXPECT_GT(dot(cross(b - a, c - a), (1.0 / 3) * (a + b + c) - Vec3{0.5, 0.5, 0.5}), 0);
+  }
+}
+
+std::string refusal(const std::string& nodes, const std::string& elements) {
+  try {
+    parseTetMesh(nodes, "cube.1.node", elements, "cube.1.ele");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(TetMeshes, MalformedFilesAreRefusedWithTheirLineAndField) {
+  const std::string nodes = kCubeNodes, elements = kCubeElements;
+  auto replace = [](std::string text, const std::string& from, const std::string& to) {
+    return text.replace(text.find(from), from.size(), to);
+  };
+  EXPECT_EQ(refusal(replace(nodes, "8 3 0 0", "8 2 0 0"), elements),
+            "cube.1.node:2: expected a whole number from 3 to 3, got '2' (dimension)");
+  EXPECT_EQ(refusal(replace(nodes, "6 1 0 1", "6 1 nan 1"), elements),
+            "cube.1.node:8: expected a coordinate (m) of at most 1000000 in magnitude, got 'nan' "
+            "(point 6 y)");
+  EXPECT_EQ(refusal(replace(nodes, "8 1 1 1   # the far corner\n", ""), elements),
+            "cube.1.node:9: the file ends after 7 of its 8 points (point 8)");
+  EXPECT_EQ(refusal(replace(nodes, "5 0 0 1", "6 0 0 1"), elements),
+            "cube.1.node:7: expected a whole number from 5 to 5, got '6' (point 5 number)");
+  EXPECT_EQ(
+      refusal(nodes, replace(elements, "5 4 0", "5 10 0")),
+      "cube.1.ele:1: only linear tetrahedra (4 nodes) are read, not 10 (nodes per tetrahedron)");
+  EXPECT_EQ(refusal(nodes, replace(elements, "3 6 2 5 8", "3 6 2 5 9")),
+            "cube.1.ele:4: expected a whole number from 1 to 8, got '9' (tetrahedron 3 node 4)");
+  EXPECT_EQ(refusal(nodes, replace(elements, "3 6 2 5 8", "3 6 2 6 8")),
+            "cube.1.ele:4: node 6 twice (tetrahedron 3)");
+  EXPECT_EQ(refusal(nodes, replace(elements, "3 6 2 5 8", "3 1 2 3 4")),
+            "cube.1.ele:4: a tetrahedron of no volume (its four points lie in a plane) "
+            "(tetrahedron 3)");
+  EXPECT_EQ(refusal(nodes, replace(elements, "5 2 3 5 8\n", "5 2 3 5 8\n6 1 2 3 5\n")),
+            "cube.1.ele:7: more tetrahedra than the header's 5 (header)");
+  EXPECT_EQ(refusal(replace(replace(nodes, "8 3 0 0", "9 3 0 0"), "8 1 1 1", "8 1 1 1\n9 2 2 2"),
+                    elements),
+            "cube.1.node: point 9 belongs to no tetrahedron of cube.1.ele (point 9)");
+  EXPECT_EQ(refusal("", elements),
+            "cube.1.node:0: no header: expected <points> 3 <attributes> <markers> (header)");
+}
+
+std::string sceneRefusal(const std::string& jellyKeys) {
+  try {
+    parseScene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n" + jellyKeys, "s.toml", "");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// Impossible materials, and keys that belong to the other kind of jelly.
+TEST(TetMeshes, ImpossibleMaterialsAreRefused) {
+  const std::string fem = "material = \"corotated\"\nyoungs_modulus = 1e4\ndensity = 1000\n";
+  EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = 0.5\n"),
+            "s.toml:7: must be from 0 to 0.49 (at 0.5 a solid could not change its volume at all) "
+            "(jelly.poisson_ratio)");
+  EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = -0.1\n"),
+            "s.toml:7: must be at least 0 (jelly.poisson_ratio)");
+  EXPECT_EQ(sceneRefusal("material = \"corotated\"\nyoungs_modulus = 0\npoisson_ratio = 0.3\n"
+                         "density = 1000\n"),
+            "s.toml:5: must be above 0 (jelly.youngs_modulus)");
+  EXPECT_EQ(sceneRefusal("material = \"corotated\"\nyoungs_modulus = 1e4\npoisson_ratio = 0.3\n"),
+            "s.toml:4: a jelly of finite elements needs its density (jelly.density)");
+  EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = 0.3\nmass = 2\n"),
+            "s.toml:8: a jelly of finite elements takes its mass from its density (jelly.mass)");
+  EXPECT_EQ(sceneRefusal("material = \"rubber\"\n"),
+            "s.toml:4: expected \"springs\", \"corotated\" or \"neohookean\" (jelly.material)");
+  EXPECT_EQ(sceneRefusal("youngs_modulus = 1e4\n"),
+            "s.toml:4: belongs to a jelly of finite elements (material = \"corotated\" or "
+            "\"neohookean\") (jelly.youngs_modulus)");
+}
+
+}  // namespace
+}  // namespace jello
