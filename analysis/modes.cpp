@@ -405,9 +405,24 @@ RowSumBound rowSumBound(const Model& model, const State& state, Integrator integ
   return {criticalStep(integrator, grid), std::sqrt(std::max(0.0, stiffness.upper))};
 }
 
+// M^(1/2) A M^(-1/2) for the acceleration Jacobian A = M^-1 dF: the same eigenvalues, and
+// symmetric where dF is (M^-1/2 dF M^-1/2), so that its symmetric part keeps them when the points'
+// masses differ (a jelly of finite elements, jellies of different masses). Unchanged when every
+// point has one mass.
+SparseMatrix massSymmetric(const Model& model, SparseMatrix a) {
+  if (model.commonMass != 0) return a;
+  const int n = model.points();
+  for (int column = 0; column < a.outerSize(); ++column)
+    for (SparseMatrix::InnerIterator it(a, column); it; ++it)
+      it.valueRef() *= std::sqrt(model.pointMass[it.row() % n] / model.pointMass[column % n]);
+  return a;
+}
+
 Linearisation linearise(const Model& model, const State& state) {
   AccelerationJacobian jacobian;
   accelerationJacobian(model, state.p(), state.v(), nullptr, &jacobian);
+  jacobian.dAdp = massSymmetric(model, std::move(jacobian.dAdp));
+  jacobian.dAdv = massSymmetric(model, std::move(jacobian.dAdv));
   // An eigensolver on an inf or a NaN takes minutes to say nothing.
   if (!allFinite(jacobian.dAdp) || !allFinite(jacobian.dAdv)) {
     Linearisation out;
@@ -469,7 +484,8 @@ Linearisation lineariseAtRest(const World& world) {
     bodyOnly->body = world.scene->body;
     bodyOnly->springs = world.scene->springs;
     bodyOnly->pinned = world.scene->pinned;
-    bodyOnly->jellies = world.scene->jellies;  // each jelly's mass and springs
+    bodyOnly->jellies = world.scene->jellies;  // each jelly's mass, springs and material
+    bodyOnly->material = world.scene->material;
     bodyOnly->boundsPresent = false;
     springs.scene = bodyOnly;
     springs.hasPlane = false;

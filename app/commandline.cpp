@@ -100,6 +100,7 @@ struct Given {
   CLI::Option *framesOption, *sizeOption, *reportOption, *integratorsOption, *toleranceOption,
       *checkOption;
   CLI::Option *jsonOption, *mapOption, *benchOption, *fpsOption, *worldOption;
+  CLI::Option *staticOption, *compareOption;
   CLI::Option *exportOption, *exportFormatOption, *cameraOption, *colouringOption;
 };
 
@@ -223,6 +224,15 @@ void addAnalysisOptions(CLI::App& app, JelloCommand* c, Given* g) {
              "DIR (CSV, plot)")
           ->type_name("DIR")
           ->check(kNonEmpty);
+  g->staticOption = app.add_flag(
+      "--static",
+      "the body at rest under its forces (Newton's method with the exact stiffness): how far it "
+      "sags; with --save-state FILE, the state at rest; then exit");
+  g->compareOption = app.add_flag(
+      "--compare-materials",
+      "a jelly of finite elements against the springs fitted to its material, each at the "
+      "scene's spacing and at half of it, with errors against the elements at half the spacing "
+      "and run times (--time T, default 1 s); then exit");
   g->benchOption = app.add_flag(
       "--bench",
       "microseconds per step of every integrator and force evaluations per second, with "
@@ -255,7 +265,8 @@ Outcome chooseMode(const Given& g, JelloCommand* c) {
     return refuse("--json goes with --check alone, not with --map");
   if (*g.integratorsOption && !*g.reportOption) return refuse("--integrators goes with --report");
   if (*g.toleranceOption && !*g.reportOption) return refuse("--tolerance goes with --report");
-  const bool analysis = *g.benchOption || *g.checkOption || *g.reportOption;
+  const bool analysis =
+      *g.benchOption || *g.checkOption || *g.reportOption || *g.staticOption || *g.compareOption;
   if (*g.fpsOption && (analysis || (c->headless && !*g.framesOption && !*g.exportOption)))
     return refuse("--fps goes with --frames or --export (or the window, where space records)");
   if ((*g.cameraOption || *g.colouringOption) && (analysis || (c->headless && !*g.framesOption)))
@@ -271,15 +282,29 @@ Outcome chooseMode(const Given& g, JelloCommand* c) {
     return refuse(
         "--dump goes with a run (headless or the window), not with --check, --report "
         "or --bench");
-  if (*g.saveStateOption && analysis)
-    return refuse("--save-state goes with a headless run, not with --check, --report or --bench");
-  if (*g.saveStateOption && !c->headless)
+  if (*g.saveStateOption && analysis && !*g.staticOption)
+    return refuse(
+        "--save-state goes with a headless run or --static, not with --check, --report, --bench "
+        "or --compare-materials");
+  if (*g.saveStateOption && !c->headless && !*g.staticOption)
     return refuse("--save-state goes with --headless (the window writes no state at its end)");
   if (*g.framesOption && (*g.checkOption || *g.benchOption))
     return refuse("--frames goes with a run (headless or the window), not with --check or --bench");
-  if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) > 1)
-    return refuse("--check, --report and --bench are each a command of its own: give one");
-  if (*g.benchOption)
+  if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) +
+          (*g.staticOption ? 1 : 0) + (*g.compareOption ? 1 : 0) >
+      1)
+    return refuse(
+        "--check, --report, --bench, --static and --compare-materials are each a command of its "
+        "own: give one");
+  if ((*g.staticOption || *g.compareOption) && (*g.framesOption || *g.stepsOption))
+    return refuse(std::string(*g.staticOption ? "--static" : "--compare-materials") +
+                  " takes no --frames or --steps");
+  if (*g.staticOption && *g.timeOption) return refuse("--static takes no --time: it has none");
+  if (*g.staticOption)
+    c->mode = JelloCommand::Mode::Static;
+  else if (*g.compareOption)
+    c->mode = JelloCommand::Mode::Materials;
+  else if (*g.benchOption)
     c->mode = JelloCommand::Mode::Bench;
   else if (*g.checkOption)
     c->mode = *g.mapOption ? JelloCommand::Mode::Map : JelloCommand::Mode::Check;

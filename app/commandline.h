@@ -15,7 +15,7 @@ constexpr const char* kDefaultWorld = "world/rotate.w";
 constexpr double kDefaultMapTime = 0.1;  // s: each observed run of --check --map
 
 struct JelloCommand {
-  enum class Mode { Run, Check, Map, Report, Bench };
+  enum class Mode { Run, Check, Map, Report, Bench, Static, Materials };
   Mode mode = Mode::Run;
   RunOptions run;            // the world, its overrides, --dump, RK45's tolerances
   PictureOptions pictures;   // --frames, --size, --max-frames, --overwrite

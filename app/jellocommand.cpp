@@ -11,6 +11,7 @@
 #include <string>
 
 #include "analysis/bench.h"
+#include "analysis/materials.h"
 #include "analysis/report.h"
 #include "analysis/stability.h"
 #include "analysis/stabilitymap.h"
@@ -19,6 +20,8 @@
 #include "app/headless.h"
 #include "core/memory.h"
 #include "core/output.h"
+#include "io/statefile.h"
+#include "solver/statics.h"
 
 namespace jello {
 
@@ -34,6 +37,48 @@ Outcome check(const JelloCommand& c) {
                      : stabilityText(c.run.worldPath, file.run, analysis))
                  .c_str(),
              stdout);
+  return succeeded();
+}
+
+// jello --static: the body at rest, how far it moved to get there, and its state when asked.
+Outcome staticRest(const JelloCommand& c) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(c.run, &file); !loaded.ok()) return loaded;
+  if (c.run.saveStatePath)
+    if (const std::string why = whyNotDumpable(*c.run.saveStatePath, c.run.worldPath); !why.empty())
+      return failed("--save-state " + *c.run.saveStatePath + ": " + why);
+  const Model model = makeModel(file.world, file.state);
+  const StaticSolution rest = solveStatic(model, file.state);
+  const int n = model.points();
+  if (!rest.converged || findDivergedPoint(rest.state) >= 0)
+    return diverged(c.run.worldPath + ": no rest found after " + std::to_string(rest.steps) +
+                    " Newton steps (largest force left " + textf("%.3g", rest.largestForce) +
+                    " N): the body may have no rest under these forces (nothing holds it)");
+  int farthest = 0;
+  double moved = 0;
+  Vec3 mean;
+  for (int q = 0; q < n; ++q) {
+    const Vec3 d = load(rest.state.p(), q, n) - load(file.state.p(), q, n);
+    mean += (1.0 / n) * d;
+    if (length(d) > moved) moved = length(d), farthest = q;
+  }
+  const Vec3 d = load(rest.state.p(), farthest, n) - load(file.state.p(), farthest, n);
+  std::printf("%s: at rest after %d Newton steps (largest force left %.3g N)\n",
+              c.run.worldPath.c_str(), rest.steps, rest.largestForce);
+  std::printf("  farthest moved: point %s, by %.6g m (%.6g, %.6g, %.6g)\n",
+              model.body().label(farthest).c_str(), moved, d.x, d.y, d.z);
+  std::printf("  mean displacement of the points: (%.6g, %.6g, %.6g) m\n", mean.x, mean.y, mean.z);
+  if (c.run.saveStatePath) {
+    writeStateFile(*c.run.saveStatePath, model.body(), rest.state);
+    std::printf("  the state at rest in %s\n", c.run.saveStatePath->c_str());
+  }
+  return succeeded();
+}
+
+Outcome materials(const JelloCommand& c) {
+  MaterialComparison comparison;
+  if (Outcome done = compareMaterials(c.run, &comparison); !done.ok()) return done;
+  std::fputs(materialComparisonText(c.run.worldPath, comparison).c_str(), stdout);
   return succeeded();
 }
 
@@ -113,6 +158,10 @@ Outcome runJelloCommand(const JelloCommand& command) {
       return check(command);
     case JelloCommand::Mode::Report:
       return runReport(command.run, command.report);
+    case JelloCommand::Mode::Static:
+      return staticRest(command);
+    case JelloCommand::Mode::Materials:
+      return materials(command);
     case JelloCommand::Mode::Run:
       return simulate(command);
   }

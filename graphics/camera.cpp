@@ -43,14 +43,16 @@ Camera defaultCamera(const Model& model) {
   const Vec3 up = direction((-1.0) * spec->gravity, &g);
   if (g > 0) camera.up = up;
   // The default distance sees the course's box whole: as far back again as a larger box's
-  // farthest corner is beyond the course box's.
+  // farthest corner is beyond the course box's. A box less than half the course's (a scene in
+  // centimetres) is seen as closely as a box half the course's: the camera comes nearer.
   if (const std::optional<BoxExtent> box = drawnBox(model)) {
     const Vec3 corner{std::max(std::fabs(box->lower.x), std::fabs(box->upper.x)),
                       std::max(std::fabs(box->lower.y), std::fabs(box->upper.y)),
                       std::max(std::fabs(box->lower.z), std::fabs(box->upper.z))};
     const double courseCorner = kBoxHalfSize * std::sqrt(3.0);
-    camera.radius = std::clamp(camera.radius * length(corner) / courseCorner, camera.radius,
-                               kMaxCameraDistance);
+    const double ratio = length(corner) / courseCorner;
+    const double scale = ratio >= 0.5 ? std::max(ratio, 1.0) : 2 * ratio;
+    camera.radius = std::min(camera.radius * scale, kMaxCameraDistance);
   }
   return camera;
 }

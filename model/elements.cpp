@@ -80,8 +80,17 @@ ElementTerm::ElementTerm(const Body& body, std::vector<Material> byPart,
 }
 
 Mat3x3 ElementTerm::gradientOf(const Element& el, const double* a) const {
+  const int n = pointCount();
   Mat3x3 f;
-  for (int k = 0; k < 4; ++k) f = f + outer(at(a, el.t[k]), el.b[k]);
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 b = el.b[k];
+    for (int i = 0; i < 3; ++i) {
+      const double x = a[coordIndex(el.t[k], i, n)];
+      f.m[3 * i] += x * b.x;
+      f.m[3 * i + 1] += x * b.y;
+      f.m[3 * i + 2] += x * b.z;
+    }
+  }
   return f;
 }
 

@@ -15,21 +15,30 @@ namespace {
 // sweeps; 3x3 matrices take 3 to 5).
 void symmetricEigen(Mat3x3 a, Vec3* d, Mat3x3* v) {
   *v = identity3();
-  const double scale = std::sqrt(contract(a, a));
+  const double scale = contract(a, a);
   for (int sweep = 0; sweep < 20; ++sweep) {
     const double off = a(0, 1) * a(0, 1) + a(0, 2) * a(0, 2) + a(1, 2) * a(1, 2);
-    if (!(off > 1e-30 * scale * scale)) break;
+    if (!(off > 1e-30 * scale)) break;
     for (auto [p, q] : {std::pair{0, 1}, {0, 2}, {1, 2}}) {
-      if (a(p, q) == 0) continue;
-      // The rotation in the (p, q) plane that zeroes a(p, q).
-      const double theta = (a(q, q) - a(p, p)) / (2 * a(p, q));
+      const double apq = a(p, q);
+      if (apq == 0) continue;
+      // The rotation in the (p, q) plane that zeroes a(p, q), applied to rows and columns p, q.
+      const double theta = (a(q, q) - a(p, p)) / (2 * apq);
       const double t =
           (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
       const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-      Mat3x3 g = identity3();
-      g(p, p) = c, g(q, q) = c, g(p, q) = s, g(q, p) = -s;
-      a = transpose(g) * a * g;
-      *v = *v * g;
+      const int r = 3 - p - q;  // the third index
+      const double arp = a(r, p), arq = a(r, q);
+      a(p, p) -= t * apq;
+      a(q, q) += t * apq;
+      a(p, q) = a(q, p) = 0;
+      a(r, p) = a(p, r) = c * arp - s * arq;
+      a(r, q) = a(q, r) = s * arp + c * arq;
+      for (int k = 0; k < 3; ++k) {
+        const double vkp = (*v)(k, p), vkq = (*v)(k, q);
+        (*v)(k, p) = c * vkp - s * vkq;
+        (*v)(k, q) = s * vkp + c * vkq;
+      }
     }
   }
   *d = {a(0, 0), a(1, 1), a(2, 2)};
@@ -82,6 +91,25 @@ PolarDecomposition polarDecomposition(const Mat3x3& f) {
   out.stretch = sorted * diagonal * transpose(sorted);
   out.singular = {sigma[0], sigma[1], sigma[2]};
   return out;
+}
+
+Mat3x3 rotationOf(const Mat3x3& f) {
+  double det = determinant(f);
+  const double size = contract(f, f);
+  if (!(det > 1e-6 * size * std::sqrt(size))) return polarDecomposition(f).rotation;
+  Mat3x3 r = f;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    // Scaled while det R is far from 1 (where it speeds the first steps); near it, plain.
+    const double g = std::fabs(det - 1) < 0.1 ? 1.0 : std::cbrt(1 / det);
+    // R^-T = cof(R) / det R.
+    const Mat3x3 next = 0.5 * (g * r + (1 / (g * det)) * cofactor(r));
+    const Mat3x3 change = next - r;
+    r = next;
+    // Quadratic convergence: after a change below 1e-12 the iterate is exact to rounding.
+    if (contract(change, change) < 1e-24) break;
+    det = determinant(r);
+  }
+  return r;
 }
 
 }  // namespace jello

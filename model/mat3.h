@@ -117,5 +117,10 @@ struct PolarDecomposition {
   Vec3 singular;
 };
 PolarDecomposition polarDecomposition(const Mat3x3& f);
+// R of F = R S alone, the same rotation: for det F > 0 by Higham's scaled Newton iteration
+// R <- (g R + R^-T / g) / 2 (g = |det R|^(-1/3) while det R is beyond 1 +- 0.1, else 1), to
+// convergence (a few iterations for a jelly's
+// strains); otherwise from polarDecomposition.
+Mat3x3 rotationOf(const Mat3x3& f);
 
 }  // namespace jello

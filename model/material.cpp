@@ -28,7 +28,7 @@ double neoHookeanLambda(Lame lame) { return lame.lambda + lame.mu; }
 double energyDensity(MaterialKind kind, Lame lame, const Mat3x3& f) {
   const double j = determinant(f);
   if (kind == MaterialKind::Corotated) {
-    const Mat3x3 d = f - polarDecomposition(f).rotation;
+    const Mat3x3 d = f - rotationOf(f);
     return lame.mu * contract(d, d) + 0.5 * lame.lambda * (j - 1) * (j - 1);
   }
   JELLO_ASSERT(kind == MaterialKind::NeoHookean);
@@ -41,7 +41,7 @@ Mat3x3 firstPiola(MaterialKind kind, Lame lame, const Mat3x3& f) {
   const double j = determinant(f);
   const Mat3x3 cof = cofactor(f);
   if (kind == MaterialKind::Corotated)
-    return 2 * lame.mu * (f - polarDecomposition(f).rotation) + lame.lambda * (j - 1) * cof;
+    return 2 * lame.mu * (f - rotationOf(f)) + lame.lambda * (j - 1) * cof;
   JELLO_ASSERT(kind == MaterialKind::NeoHookean);
   return lame.mu * f + (neoHookeanLambda(lame) * (j - 1) - lame.mu) * cof;
 }
@@ -95,7 +95,17 @@ Mat3x3 viscousSecond(Lame lame, double beta, const Mat3x3& e) {
 }  // namespace
 
 Mat3x3 viscousStress(Lame lame, double beta, const Mat3x3& f, const Mat3x3& fdot) {
-  return f * viscousSecond(lame, beta, symmetric(transpose(f) * fdot));
+  // E' = sym(F^T Fdot), written out: the kernel computes it for every element.
+  double e[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      e[3 * i + j] = f.m[i] * fdot.m[j] + f.m[3 + i] * fdot.m[3 + j] + f.m[6 + i] * fdot.m[6 + j];
+  Mat3x3 sd;
+  const double volumetric = beta * lame.lambda * (e[0] + e[4] + e[8]);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      sd.m[3 * i + j] = beta * lame.mu * (e[3 * i + j] + e[3 * j + i]) + (i == j ? volumetric : 0);
+  return f * sd;
 }
 
 Mat3x3 viscousStressByF(Lame lame, double beta, const Mat3x3& f, const Mat3x3& fdot,

@@ -402,6 +402,10 @@ void SpringTerm::addEnergy(const double* p, double* energy) const {
 
 void SpringTerm::summarise(std::vector<std::string>* kept,
                            std::vector<std::string>* leftOut) const {
+  if (springs().empty()) {
+    leftOut->push_back("springs (the jelly is made of finite elements)");
+    return;
+  }
   kept->push_back("springs");
   if (dampers_)
     kept->push_back("dampers");
@@ -425,6 +429,7 @@ std::string constantsText(const SpringConstants& c, std::size_t springs) {
 }  // namespace
 
 std::vector<TermLine> SpringTerm::describe(const double*) const {
+  if (springs().empty()) return {{"springs", "none: the jelly is made of finite elements"}};
   if (c_.size() == 1) return {{"springs", constantsText(c_[0], springs().size())}};
   std::vector<std::size_t> count(c_.size(), 0);
   for (const Spring& s : springs()) ++count[s.part];
