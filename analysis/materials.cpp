@@ -2,8 +2,10 @@
 
 #include "analysis/materials.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <memory>
 
 #include "model/model.h"
@@ -136,66 +138,39 @@ MaterialRun runVariant(const Variant& v, Integrator integrator, int samples,
   return out;
 }
 
-}  // namespace
-
-Outcome compareMaterials(const RunOptions& options, MaterialComparison* out) {
-  WorldFile file;
-  if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
+// Why the world cannot be compared (empty when it can).
+std::string whyNotComparable(const WorldFile& file, const std::string& name) {
   const SceneSpec* spec = file.world.scene.get();
-  const std::string name = options.worldPath;
   if (!spec || !spec->jellies.empty() || !spec->material.elements())
-    return failed(name +
-                  ": --compare-materials needs a scene of one jelly of finite elements "
-                  "([jelly] material = \"corotated\" or \"neohookean\")");
+    return name +
+           ": --compare-materials needs a scene of one jelly of finite elements ([jelly] "
+           "material = \"corotated\" or \"neohookean\")";
   const Body& coarse = bodyOf(file.world);
   if (coarse.gridless())
-    return failed(name +
-                  ": --compare-materials needs a jelly on a grid (a lattice, a sphere or "
-                  "a mesh's voxels), not a TetGen mesh");
+    return name +
+           ": --compare-materials needs a jelly on a grid (a lattice, a sphere or a mesh's "
+           "voxels), not a TetGen mesh";
   const VoxelMask& mask = coarse.voxels;
   if (2 * std::max({mask.nx, mask.ny, mask.nz}) >= kMostBodyPoints)
-    return failed(name + ": --compare-materials halves the spacing: at most " +
-                  std::to_string((kMostBodyPoints - 1) / 2) + " voxels along each axis");
-  const Material material = spec->material;
-  Material springs = material;
-  springs.kind = MaterialKind::Springs;
-  const SpringFit coarseFit = springsFor(material, coarse.spacing);
-  const SpringFit fineFit = springsFor(material, coarse.spacing / 2);
-  const double time = options.time.value_or(1.0);
-  const double sampleTime = file.run.dt * file.run.n;
-  const int samples = std::max(1, static_cast<int>(std::llround(time / sampleTime)));
-  struct Plan {
-    const Material* material;
-    int factor;
-  };
-  const Plan plans[] = {{&springs, 1}, {&material, 1}, {&springs, 2}, {&material, 2}};
-  std::vector<std::vector<Vec3>> tracks(4);
-  out->runs.clear();
-  for (int i = 0; i < 4; ++i) {
-    const Variant v =
-        variantOf(file, coarse, plans[i].factor, *plans[i].material, fineFit, coarseFit);
-    MaterialRun run = runVariant(v, file.run.integrator, samples, &tracks[i]);
-    run.model = plans[i].material->elements()
-                    ? std::string("elements (") + materialInfo(material.kind).name + ")"
-                    : "springs (fitted)";
-    run.reference = i == 3;
-    out->runs.push_back(run);
-  }
-  if (!out->runs[3].ran)
-    return diverged(name + ": the reference (elements at half the spacing, dt " +
-                    std::to_string(out->runs[3].dt) + " s) diverged; try a smaller dt");
-  const std::vector<Vec3>& reference = tracks[3];
-  const int probes = coarse.count();
-  out->probes = probes;
-  out->samples = samples;
+    return name + ": --compare-materials halves the spacing: at most " +
+           std::to_string((kMostBodyPoints - 1) / 2) + " voxels along each axis";
+  return {};
+}
+
+// The reference's motion and each run's error against it (tracks: the runs' probe positions,
+// sample after sample; the reference's last).
+void measureErrors(const WorldFile& file, const std::vector<std::vector<Vec3>>& tracks,
+                   MaterialComparison* out) {
+  const std::vector<Vec3>& reference = tracks.back();
+  const int probes = out->probes;
   double motion = 0;
-  for (int s = 0; s < samples; ++s)
+  for (int s = 0; s < out->samples; ++s)
     for (int q = 0; q < probes; ++q) {
       const Vec3 d = reference[std::size_t(s) * probes + q] - load(file.state.p(), q, probes);
       motion += dot(d, d);
     }
-  out->motion = std::sqrt(motion / (double(samples) * probes));
-  for (int i = 0; i < 4; ++i) {
+  out->motion = std::sqrt(motion / (double(out->samples) * probes));
+  for (std::size_t i = 0; i < out->runs.size(); ++i) {
     if (!out->runs[i].ran) continue;
     double sum = 0;
     for (std::size_t e = 0; e < reference.size(); ++e) {
@@ -204,15 +179,56 @@ Outcome compareMaterials(const RunOptions& options, MaterialComparison* out) {
     }
     out->runs[i].error = std::sqrt(sum / reference.size());
   }
+}
+
+std::string fitText(const Material& material, double spacing, const SpringFit& fit) {
   char text[512];
   std::snprintf(text, sizeof text,
                 "springs for E = %g Pa, nu = %g at spacing %g m: structural = bend = %.6g N/m, "
                 "shear = %.6g N/m, dampers %g s times each; their nu is 0.25, their elasticity "
                 "tensor %.1f%% from the material's",
-                material.youngsModulus, material.poissonRatio, coarse.spacing,
-                coarseFit.constants.k[0], coarseFit.constants.k[1], material.stiffnessDamping,
-                100 * coarseFit.tensorResidual);
-  out->fitText = text;
+                material.youngsModulus, material.poissonRatio, spacing, fit.constants.k[0],
+                fit.constants.k[1], material.stiffnessDamping, 100 * fit.tensorResidual);
+  return text;
+}
+
+}  // namespace
+
+Outcome compareMaterials(const RunOptions& options, MaterialComparison* out) {
+  WorldFile file;
+  if (Outcome loaded = loadRun(options, &file); !loaded.ok()) return loaded;
+  if (const std::string why = whyNotComparable(file, options.worldPath); !why.empty())
+    return failed(why);
+  const Body& coarse = bodyOf(file.world);
+  const Material material = file.world.scene->material;
+  Material springs = material;
+  springs.kind = MaterialKind::Springs;
+  const SpringFit coarseFit = springsFor(material, coarse.spacing);
+  const SpringFit fineFit = springsFor(material, coarse.spacing / 2);
+  const double sampleTime = file.run.dt * file.run.n;
+  out->samples =
+      std::max(1, static_cast<int>(std::llround(options.time.value_or(1.0) / sampleTime)));
+  out->probes = coarse.count();
+  // Springs and elements at the scene's spacing, then at half of it: the last is the reference.
+  const std::pair<const Material*, int> plans[] = {
+      {&springs, 1}, {&material, 1}, {&springs, 2}, {&material, 2}};
+  std::vector<std::vector<Vec3>> tracks(std::size(plans));
+  out->runs.clear();
+  for (std::size_t i = 0; i < std::size(plans); ++i) {
+    const auto [model, factor] = plans[i];
+    const Variant v = variantOf(file, coarse, factor, *model, fineFit, coarseFit);
+    MaterialRun run = runVariant(v, file.run.integrator, out->samples, &tracks[i]);
+    run.model = model->elements()
+                    ? std::string("elements (") + materialInfo(material.kind).name + ")"
+                    : "springs (fitted)";
+    run.reference = i + 1 == std::size(plans);
+    out->runs.push_back(run);
+  }
+  if (!out->runs.back().ran)
+    return diverged(options.worldPath + ": the reference (elements at half the spacing, dt " +
+                    textf("%g", out->runs.back().dt) + " s) diverged; try a smaller dt");
+  measureErrors(file, tracks, out);
+  out->fitText = fitText(material, coarse.spacing, coarseFit);
   return succeeded();
 }
 

@@ -257,6 +257,23 @@ Outcome readIntegratorList(const std::string& list, std::vector<Integrator>* out
   return succeeded();
 }
 
+// At most one command; --static and --compare-materials, with what they take.
+Outcome oneCommand(const Given& g, JelloCommand* c) {
+  if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) +
+          (*g.staticOption ? 1 : 0) + (*g.compareOption ? 1 : 0) >
+      1)
+    return refuse(
+        "--check, --report, --bench, --static and --compare-materials are each a command of its "
+        "own: give one");
+  if ((*g.staticOption || *g.compareOption) && (*g.framesOption || *g.stepsOption))
+    return refuse(std::string(*g.staticOption ? "--static" : "--compare-materials") +
+                  " takes no --frames or --steps");
+  if (*g.staticOption && *g.timeOption) return refuse("--static takes no --time: it has none");
+  if (*g.staticOption) c->mode = JelloCommand::Mode::Static;
+  if (*g.compareOption) c->mode = JelloCommand::Mode::Materials;
+  return succeeded();
+}
+
 // The mode, from the options that choose one, and the options that go only with one mode.
 Outcome chooseMode(const Given& g, JelloCommand* c) {
   if (*g.mapOption && !*g.checkOption) return refuse("--map goes with --check");
@@ -290,21 +307,9 @@ Outcome chooseMode(const Given& g, JelloCommand* c) {
     return refuse("--save-state goes with --headless (the window writes no state at its end)");
   if (*g.framesOption && (*g.checkOption || *g.benchOption))
     return refuse("--frames goes with a run (headless or the window), not with --check or --bench");
-  if ((*g.checkOption ? 1 : 0) + (*g.reportOption ? 1 : 0) + (*g.benchOption ? 1 : 0) +
-          (*g.staticOption ? 1 : 0) + (*g.compareOption ? 1 : 0) >
-      1)
-    return refuse(
-        "--check, --report, --bench, --static and --compare-materials are each a command of its "
-        "own: give one");
-  if ((*g.staticOption || *g.compareOption) && (*g.framesOption || *g.stepsOption))
-    return refuse(std::string(*g.staticOption ? "--static" : "--compare-materials") +
-                  " takes no --frames or --steps");
-  if (*g.staticOption && *g.timeOption) return refuse("--static takes no --time: it has none");
-  if (*g.staticOption)
-    c->mode = JelloCommand::Mode::Static;
-  else if (*g.compareOption)
-    c->mode = JelloCommand::Mode::Materials;
-  else if (*g.benchOption)
+  if (Outcome one = oneCommand(g, c); !one.ok()) return one;
+  if (c->mode != JelloCommand::Mode::Run) return succeeded();
+  if (*g.benchOption)
     c->mode = JelloCommand::Mode::Bench;
   else if (*g.checkOption)
     c->mode = *g.mapOption ? JelloCommand::Mode::Map : JelloCommand::Mode::Check;

@@ -195,11 +195,14 @@ Outcome checkDump(const RunOptions& options, const World& world) {
   if (!options.dumpPath) return succeeded();
   // A course world file holds the 8x8x8 cube and nothing else.
   const Body& body = bodyOf(world);
-  if (!body.courseLattice)
+  if (!body.courseLattice || hasElements(world)) {
+    const std::string what = body.joined()        ? "this scene has " + body.what
+                             : hasElements(world) ? "this scene's jelly is made of finite elements"
+                                                  : "this scene's jelly is " + body.what;
     return failed("--dump " + *options.dumpPath + ": a world file holds only the course's " +
-                  "8x8x8 cube, and this scene " +
-                  (body.joined() ? "has " + body.what : "'s jelly is " + body.what) +
+                  "8x8x8 cube of springs, and " + what +
                   "; use --save-state for every point or --export for the surface");
+  }
   std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
   if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
   return succeeded();

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include "app/cli.h"
 #include "app/headless.h"
@@ -243,6 +244,12 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"word_steps", "--headless --steps many", "--steps"},
         UsageCase{"save_state_with_window", "--save-state /tmp/never.csv",
                   "--save-state goes with --headless"},
+        UsageCase{"static_and_check", "--static --check", "each a command of its own"},
+        UsageCase{"static_with_time", "--static --time 1", "--static takes no --time"},
+        UsageCase{"compare_with_save_state", "--compare-materials --save-state /tmp/never.csv",
+                  "--save-state goes with a headless run or --static"},
+        UsageCase{"compare_a_course_world", "--compare-materials",
+                  "needs a scene of one jelly of finite elements"},
         UsageCase{"newline_in_number", "--headless --time '0.\nx'", "--time: '0.\\x0Ax' is not"},
         UsageCase{"unknown_integrator", "--headless --integrator RK3", "unknown integrator 'RK3'"},
         UsageCase{"missing_world", "--headless /no/such/world.w", "/no/such/world.w: cannot open",
@@ -251,6 +258,31 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"dump_onto_directory", "--headless --dump /tmp", "is a directory"},
         UsageCase{"two_worlds", "--headless a.w b.w", "not expected", true}),
     [](const auto& testInfo) { return std::string(testInfo.param.name); });
+
+// jello --static: the cantilever at rest, its state written; --compare-materials on a small block
+// of elements: the four runs, the last the reference.
+TEST(Cli, StaticFindsTheCantileverAtRestAndCompareMaterialsTablesTheFourRuns) {
+  std::string dir = test::makeTempDir();
+  const std::string scenes = std::string(JELLO_SOURCE_DIR) + "/scenes/";
+  test::CommandResult r =
+      runJello("--static --save-state '" + dir + "/rest.csv' '" + scenes + "cantilever.toml'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("at rest after 3 Newton steps"), std::string::npos) << r.out;
+  // The farthest point moved 0.0909 mm (the tip's corner; beam theory's tip 0.092 mm).
+  EXPECT_NE(r.out.find("point [40][0][8], by 9.09"), std::string::npos) << r.out;
+  EXPECT_TRUE(exists(dir + "/rest.csv"));
+  std::ofstream(dir + "/block.toml")
+      << "dt = 0.0005\nn = 10\ngravity = [0, 0, -9.81]\n[[pin]]\nk = [0, 0]\n[bounds]\n"
+         "present = false\n[jelly]\nshape = \"lattice\"\nsize = [3, 3, 4]\nspacing = 0.05\n"
+         "material = \"corotated\"\nyoungs_modulus = 2e4\npoisson_ratio = 0.3\ndensity = 1000\n";
+  r = runJello("--compare-materials --time 0.05 '" + dir + "/block.toml'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* row : {"springs (fitted)         0.05 ", "elements (corotated)     0.05 ",
+                          "springs (fitted)         0.025", "(reference)"})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row << " missing from:\n" << r.out;
+  EXPECT_NE(r.out.find("10 samples"), std::string::npos) << r.out;
+  test::removeTree(dir);
+}
 
 TEST(Cli, AMissingDefaultWorldIsSaidToBeTheDefaultWithHowToNameOne) {
   std::string dir = test::makeTempDir();

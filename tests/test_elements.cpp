@@ -9,10 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stability.h"
 #include "io/inputerror.h"
 #include "io/scenereader.h"
 #include "io/tetmesh.h"
 #include "model/model.h"
+#include "model/springfit.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -297,6 +299,52 @@ TEST(Elements, MassesAreLumpedFromTheDensity) {
   EXPECT_NEAR(model.pointMass[body.pointAtIndex(1, 1, 1)], 24 * tet, 1e-12);
   EXPECT_NEAR(model.pointMass[body.pointAtIndex(0, 0, 0)], 6 * tet, 1e-12);
   EXPECT_NEAR(model.pointMass[body.pointAtIndex(2, 0, 0)], 2 * tet, 1e-12);
+}
+
+// The stability analysis of a jelly of elements, whose lumped masses differ from point to point:
+// at rest no mode grows (the stiffness is positive semi-definite; its symmetric part, taken on
+// M^-1 K without the masses' symmetrisation, had 25 negative eigenvalues), and the fastest mode is
+// the same at rest and at the (resting) initial state.
+TEST(Elements, TheStabilityAnalysisSeesNoGrowingModeAtRest) {
+  const WorldFile file = elementScene("neohookean", "[5, 5, 5]", 0.02, "", 1e4, 0.45);
+  const StabilityReport report = analyseStability(file.world, file.state);
+  EXPECT_EQ(report.rest.growing, 0);
+  EXPECT_EQ(report.initial.growing, 0);
+  EXPECT_GT(report.rest.highestFrequency, 100);
+  EXPECT_NEAR(report.initial.highestFrequency, report.rest.highestFrequency,
+              1e-6 * report.rest.highestFrequency);
+}
+
+// The springs fitted to a material: the lattice's cubic stiffnesses, summed spring by spring over
+// the 16 offsets, are those latticeStiffness states, and the fit's solid is isotropic with the
+// material's E (C11 = 3 mu', C12 = C44 = mu', E = 2.5 mu').
+TEST(Elements, FittedSpringsGiveTheMaterialsYoungsModulus) {
+  Material m;
+  m.kind = MaterialKind::Corotated;
+  m.youngsModulus = 1e4, m.poissonRatio = 0.45, m.density = 1000, m.stiffnessDamping = 0.01;
+  const double h = 0.02;
+  const SpringFit fit = springsFor(m, h);
+  // Per unit volume, a spring of length l along n under a uniform strain e stretches by l n.e.n:
+  // uniaxial e_xx gives C11 e^2 / 2, pure shear e_xy = e_yx gives 2 C44 e^2.
+  double c11 = 0, c44 = 0;
+  for (const SpringOffset& o : kSpringOffsets) {
+    const double k = fit.constants.k[int(o.kind)], l = restLength(o, h);
+    const Vec3 n = (1.0 / (l / h)) * Vec3{double(o.di), double(o.dj), double(o.dk)};
+    c11 += k * l * l * n.x * n.x * n.x * n.x / (h * h * h);
+    c44 += k * l * l * n.x * n.x * n.y * n.y / (h * h * h);
+  }
+  const CubicStiffness c = latticeStiffness(fit.constants, h);
+  EXPECT_NEAR(c.c11, c11, 1e-9 * c11);
+  EXPECT_NEAR(c.c44, c44, 1e-9 * c44);
+  const double mu = m.youngsModulus / 2.5;
+  EXPECT_NEAR(c.c11, 3 * mu, 1e-9 * mu);
+  EXPECT_NEAR(c.c12, mu, 1e-9 * mu);
+  // Young's modulus of the cubic solid along an axis: (C11 - C12)(C11 + 2 C12) / (C11 + C12).
+  EXPECT_NEAR((c.c11 - c.c12) * (c.c11 + 2 * c.c12) / (c.c11 + c.c12), m.youngsModulus, 1e-6);
+  EXPECT_NEAR(fit.constants.d[1], 0.01 * fit.constants.k[1], 1e-12);
+  EXPECT_NEAR(fit.tensorResidual, 0.79, 0.01);  // nu = 0.45 is far from the springs' 0.25
+  m.poissonRatio = 0.25;
+  EXPECT_LT(springsFor(m, h).tensorResidual, 1e-12);  // at 0.25 the springs are exact
 }
 
 // A unit cube in five tetrahedra, numbered from 1, with comments, and its .ele.
