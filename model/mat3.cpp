@@ -94,7 +94,8 @@ PolarDecomposition polarDecomposition(const Mat3x3& f) {
 }
 
 Mat3x3 rotationOf(const Mat3x3& f) {
-  double det = determinant(f);
+  Mat3x3 cof = cofactor(f);
+  double det = dot(f.column(0), cof.column(0));
   const double size = contract(f, f);
   if (!(det > 1e-6 * size * std::sqrt(size))) return polarDecomposition(f).rotation;
   Mat3x3 r = f;
@@ -102,12 +103,17 @@ Mat3x3 rotationOf(const Mat3x3& f) {
     // Scaled while det R is far from 1 (where it speeds the first steps); near it, plain.
     const double g = std::fabs(det - 1) < 0.1 ? 1.0 : std::cbrt(1 / det);
     // R^-T = cof(R) / det R.
-    const Mat3x3 next = 0.5 * (g * r + (1 / (g * det)) * cofactor(r));
-    const Mat3x3 change = next - r;
-    r = next;
-    // Quadratic convergence: after a change below 1e-12 the iterate is exact to rounding.
-    if (contract(change, change) < 1e-24) break;
-    det = determinant(r);
+    const double a = 0.5 * g, b = 0.5 / (g * det);
+    double change = 0;
+    for (int e = 0; e < 9; ++e) {
+      const double next = a * r.m[e] + b * cof.m[e];
+      change += (next - r.m[e]) * (next - r.m[e]);
+      r.m[e] = next;
+    }
+    // Quadratic convergence: after a change below 1e-8 the iterate is exact to rounding.
+    if (change < 1e-16) break;
+    cof = cofactor(r);
+    det = dot(r.column(0), cof.column(0));
   }
   return r;
 }

@@ -347,6 +347,54 @@ TEST(Elements, FittedSpringsGiveTheMaterialsYoungsModulus) {
   EXPECT_LT(springsFor(m, h).tensorResidual, 1e-12);  // at 0.25 the springs are exact
 }
 
+// A jelly of elements meets a jelly of springs head-on, through contact between bodies, without
+// gravity or walls: the total momentum stays what it was (to rounding) while each jelly's changes.
+TEST(Elements, AJellyOfElementsCollidesWithOneOfSpringsKeepingMomentum) {
+  const WorldFile file = parseScene(R"(
+dt = 0.0002
+[bounds]
+present = false
+[contact]
+stiffness = 2000
+damping = 0.3
+[[jelly]]
+shape = "lattice"
+size = [4, 4, 4]
+spacing = 0.1
+offset = [-0.2, 0.0, 0.0]
+velocity = [1.0, 0.0, 0.0]
+material = "corotated"
+youngs_modulus = 2e4
+poisson_ratio = 0.3
+density = 100
+stiffness_damping = 0.001
+[[jelly]]
+shape = "lattice"
+size = [4, 4, 4]
+spacing = 0.1
+offset = [0.2, 0.03, -0.02]
+velocity = [-1.0, 0.0, 0.0]
+stiffness = 500
+damping = 0.3
+)",
+                                    "mixed.toml", "");
+  const Model model = makeModel(file.world, file.state);
+  ASSERT_NE(model.forces.elements, nullptr);
+  const int n = model.points();
+  auto momentum = [&](const State& s, int part) {
+    Vec3 sum;
+    for (int q = 0; q < n; ++q)
+      if (part < 0 || model.body().partOf(q) == part) sum += model.pointMass[q] * load(s.v(), q, n);
+    return sum;
+  };
+  Simulation sim(model, file.state, Integrator::RK4, 2e-4);
+  ASSERT_TRUE(sim.advance(1500).ran());
+  const Vec3 before = momentum(file.state, -1), after = momentum(sim.state(), -1);
+  const double scale = length(momentum(file.state, 0));
+  EXPECT_GT(length(momentum(sim.state(), 0) - momentum(file.state, 0)), 0.1 * scale);
+  EXPECT_LT(length(after - before), 1e-12 * scale);
+}
+
 // A unit cube in five tetrahedra, numbered from 1, with comments, and its .ele.
 const char* const kCubeNodes = R"(# a unit cube
 8 3 0 0
