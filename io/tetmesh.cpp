@@ -115,7 +115,8 @@ NodeFile readNodes(const std::string& text, const std::string& name) {
   const long long markers = words.size() > 3 ? in.whole(words, 3, 0, 1, "boundary markers") : 0;
   in.noMore(words, 4, "a .node header holds");
   NodeFile out;
-  out.points.reserve(count);
+  // Room for what the text can hold (a line is at least 8 bytes), not what the header claims.
+  out.points.reserve(std::min<std::size_t>(count, text.size() / 8));
   for (long long i = 0; i < count; ++i) {
     if (!in.next(&words))
       in.fail("the file ends after " + std::to_string(i) + " of its " + std::to_string(count) +
@@ -149,7 +150,7 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
   const long long first = nodes.firstNumber;
   const long long last = first + static_cast<long long>(nodes.points.size()) - 1;
   std::vector<Tet> tets;
-  tets.reserve(count);
+  tets.reserve(std::min<std::size_t>(count, text.size() / 8));
   long long firstNumber = 0;
   for (long long i = 0; i < count; ++i) {
     if (!in.next(&words))
