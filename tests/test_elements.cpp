@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "analysis/stability.h"
+#include "core/team.h"
 #include "io/inputerror.h"
 #include "io/scenereader.h"
 #include "io/tetmesh.h"
@@ -393,6 +396,37 @@ damping = 0.3
   const double scale = length(momentum(file.state, 0));
   EXPECT_GT(length(momentum(sim.state(), 0) - momentum(file.state, 0)), 0.1 * scale);
   EXPECT_LT(length(after - before), 1e-12 * scale);
+}
+
+// The element term on ranges of points adds what the whole call adds there, bit for bit, at
+// every split; and a run on two threads (core/team.h) is the run on one, bit for bit.
+TEST(Elements, RangesAndTwoThreadsGiveTheSameBits) {
+  WorldFile file =
+      elementScene("corotated", "[5, 4, 6]", 0.05, "gravity = [0, 0, -9.81]", 1e4, 0.4);
+  std::shared_ptr<SceneSpec> spec = std::make_shared<SceneSpec>(*file.world.scene);
+  spec->material.stiffnessDamping = 0.002, spec->material.massDamping = 0.3;
+  file.world.scene = spec;
+  const int n = file.state.points();
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> jitter(-0.005, 0.005);
+  for (int c = 0; c < 3 * n; ++c)
+    file.state.p()[c] += jitter(random), file.state.v()[c] = 50 * jitter(random);
+  const Model model = makeModel(file.world, file.state);
+  const ElementTerm& term = *model.forces.elements;
+  std::vector<double> whole(3 * n, 0.0);
+  term.addForces(file.state.p(), file.state.v(), nullptr, whole.data());
+  for (int split = 0; split <= n; split += kRangeAlignment) {
+    std::vector<double> parts(3 * n, 0.0);
+    term.addForcesOn({0, split}, file.state.p(), file.state.v(), nullptr, parts.data());
+    term.addForcesOn({split, n}, file.state.p(), file.state.v(), nullptr, parts.data());
+    ASSERT_EQ(std::memcmp(whole.data(), parts.data(), sizeof(double) * 3 * n), 0) << split;
+  }
+  Team team;
+  Simulation one(model, file.state, Integrator::RK4, 1e-4),
+      two(model, file.state, Integrator::RK4, 1e-4);
+  two.setTeam(&team);
+  ASSERT_TRUE(one.advance(100).ran() && two.advance(100).ran());
+  EXPECT_EQ(std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 6 * n), 0);
 }
 
 // A unit cube in five tetrahedra, numbered from 1, with comments, and its .ele.
