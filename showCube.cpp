@@ -16,6 +16,8 @@
 #include "analysis/contacts.h"
 #include "graphics/pixels.h"
 #include "graphics/scenedraw.h"
+#include "model/elements.h"
+#include "model/mat3.h"
 #include "model/scenespec.h"
 
 namespace jello {
@@ -86,11 +88,60 @@ Vec3 frictionColour(FrictionState state) {
   return {c[0], c[1], c[2]};
 }
 
-// The coloured quantity at every point: strain (relative stretch, signed) or force (N).
+// The coloured quantity at every point: strain (relative stretch, signed), force (N) or stress
+// (von Mises, Pa).
 struct SurfaceValues {
   std::vector<double> value;
   double largest = 0;  // of the magnitudes
 };
+
+// The element's principal strain of the largest magnitude, signed (negative compressed): its
+// deformation's signed singular value farthest from 1, less 1.
+double principalStrain(const ElementTerm& elements, int e, const double* p) {
+  const Vec3 s = polarDecomposition(elements.deformation(e, p)).singular;
+  double strain = 0;
+  for (double stretch : {s.x, s.y, s.z})
+    if (std::fabs(stretch - 1) > std::fabs(strain)) strain = stretch - 1;
+  return strain;
+}
+
+// Each point's mean of `elementValue(e)` over the elements it is a corner of; `value` left as it
+// is at a point of no element.
+template <typename ElementValue>
+void meanOverElements(const ElementTerm& elements, ElementValue elementValue,
+                      std::vector<double>* value) {
+  std::vector<double> sum(value->size(), 0.0);
+  std::vector<int> count(value->size(), 0);
+  for (int e = 0; e < elements.elementCount(); ++e) {
+    const double x = elementValue(e);
+    for (int q : elements.element(e)) {
+      sum[q] += x;
+      ++count[q];
+    }
+  }
+  for (std::size_t q = 0; q < value->size(); ++q)
+    if (count[q] > 0) (*value)[q] = sum[q] / count[q];
+}
+
+// Strain at each point: the mean relative stretch of the springs meeting there; at a point of no
+// spring, the mean of its elements' principalStrain; 0 at a point of neither.
+void strainValues(const Model& model, const State& state, std::vector<double>* value) {
+  const int n = model.points();
+  if (const ElementTerm* elements = model.forces.elements)
+    meanOverElements(
+        *elements, [&](int e) { return principalStrain(*elements, e, state.p()); }, value);
+  std::vector<double> sum(n, 0.0);
+  std::vector<int> count(n, 0);
+  for (const Spring& s : model.springs()) {
+    double strain = (length(load(state.p(), s.a, n) - load(state.p(), s.b, n)) - s.rest) / s.rest;
+    sum[s.a] += strain;
+    sum[s.b] += strain;
+    ++count[s.a];
+    ++count[s.b];
+  }
+  for (int q = 0; q < n; ++q)
+    if (count[q] > 0) (*value)[q] = sum[q] / count[q];
+}
 
 SurfaceValues valuesFor(const Model& model, const State& state, Colouring colouring) {
   SurfaceValues out;
@@ -98,32 +149,45 @@ SurfaceValues valuesFor(const Model& model, const State& state, Colouring colour
   const int n = model.points();
   value.assign(n, 0.0);
   if (colouring == Colouring::Strain) {
-    // Mean relative stretch of the springs meeting at each point.
-    std::vector<int> count(n, 0);
-    for (const Spring& s : model.springs()) {
-      double strain = (length(load(state.p(), s.a, n) - load(state.p(), s.b, n)) - s.rest) / s.rest;
-      value[s.a] += strain;
-      value[s.b] += strain;
-      ++count[s.a];
-      ++count[s.b];
-    }
-    for (int q = 0; q < n; ++q) {
-      value[q] /= count[q];
-      out.largest = std::max(out.largest, std::fabs(value[q]));
-    }
+    strainValues(model, state, &value);
   } else if (colouring == Colouring::Force) {
     std::vector<double> force(3 * n);
     computeForces(model, state.p(), state.v(), force.data());
-    for (int q = 0; q < n; ++q) {
-      value[q] = length(load(force.data(), q, n));
-      out.largest = std::max(out.largest, value[q]);
-    }
+    for (int q = 0; q < n; ++q) value[q] = length(load(force.data(), q, n));
+  } else if (colouring == Colouring::Stress) {
+    // The mean von Mises stress of each point's elements (0 at a point of none).
+    if (const ElementTerm* elements = model.forces.elements)
+      meanOverElements(
+          *elements, [&](int e) { return elements->vonMises(e, state.p()); }, &value);
   }
+  for (int q = 0; q < n; ++q) out.largest = std::max(out.largest, std::fabs(value[q]));
   return out;
 }
 
-// The smallest legend scale: a cube at rest still gets a legend that means something.
-double smallestScale(Colouring colouring) { return colouring == Colouring::Strain ? 1e-3 : 1e-6; }
+// The smallest legend scale: a cube at rest still gets a legend that means something (a strain of
+// 1e-3, a force of 1e-6 N, a stress of 1 Pa).
+double smallestScale(Colouring colouring) {
+  switch (colouring) {
+    case Colouring::Strain:
+      return 1e-3;
+    case Colouring::Stress:
+      return 1;
+    default:
+      return 1e-6;
+  }
+}
+
+// The colour legend's title.
+const char* legendTitle(Colouring colouring) {
+  switch (colouring) {
+    case Colouring::Strain:
+      return "STRAIN";
+    case Colouring::Stress:
+      return "STRESS PA";
+    default:
+      return "FORCE N";
+  }
+}
 
 // `heldScale` > 0 is the legend's end value; 0 fits it to this state.
 SurfaceColours coloursFor(const Model& model, const State& state, Colouring colouring,
@@ -151,7 +215,7 @@ SurfaceColours coloursFor(const Model& model, const State& state, Colouring colo
   out.scale =
       heldScale > 0 ? heldScale : niceCeiling(std::max(values.largest, smallestScale(colouring)));
   out.diverging = colouring == Colouring::Strain;
-  out.title = out.diverging ? "STRAIN" : "FORCE N";
+  out.title = legendTitle(colouring);
   for (int q = 0; q < n; ++q) {
     const double t = values.value[q] / out.scale;
     out.color[q] = out.diverging ? divergingColour(t) : sequentialColour(t);

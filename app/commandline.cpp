@@ -181,7 +181,8 @@ void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
           ->type_name("AZ,EL[,D]");
   g->colouringOption = app.add_option("--colouring", g->colouring,
                                       "the surface's colouring in the pictures: plain (default), "
-                                      "strain, force or friction (the window's c cycles them)")
+                                      "strain, force, stress or friction (the window's c "
+                                      "cycles them)")
                            ->type_name("NAME");
   app.add_flag("--overwrite", c->pictures.overwrite,
                "replace the frames, the exported meshes (or the report) a folder already holds");
@@ -193,7 +194,8 @@ void addPictureOptions(CLI::App& app, JelloCommand* c, Given* g) {
           ->check(kNonEmpty);
   g->exportFormatOption =
       app.add_option("--export-format", g->exportFormat,
-                     "with --export: obj (Wavefront, the default) or ply (ASCII)")
+                     "with --export: obj (Wavefront, the default), ply (ASCII) or vtu (VTK XML "
+                     "for ParaView: a jelly of elements whole, with its stress)")
           ->type_name("FORMAT");
 }
 
@@ -342,7 +344,7 @@ Outcome readViewOptions(const Given& g, JelloCommand* c) {
     c->pictures.colouring = colouringIndex(g.colouring);
     if (c->pictures.colouring < 0)
       return refuse("--colouring: unknown colouring '" + g.colouring +
-                    "', expected plain, strain, force or friction");
+                    "', expected plain, strain, force, stress or friction");
   }
   return succeeded();
 }
@@ -369,7 +371,8 @@ Outcome readRunOptions(const Given& g, JelloCommand* c) {
   if (*g.exportFormatOption && !*g.exportOption)
     return refuse("--export-format goes with --export DIR");
   if (*g.exportFormatOption && !parseMeshFormat(g.exportFormat, &c->pictures.exportFormat))
-    return refuse("--export-format: unknown format '" + g.exportFormat + "', expected obj or ply");
+    return refuse("--export-format: unknown format '" + g.exportFormat +
+                  "', expected obj, ply or vtu");
   if (*g.sizeOption && !parseSize(g.size, &c->pictures.width, &c->pictures.height))
     return refuse("--size: expected WxH with sides from " + std::to_string(kMinPictureSize) +
                   " to " + std::to_string(kMaxPictureSize) + " pixels, got '" + g.size + "'");

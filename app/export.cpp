@@ -1,4 +1,5 @@
-// export.cpp: surface meshes as OBJ or ASCII PLY files, numbered like the frames.
+// export.cpp: surface meshes as OBJ or ASCII PLY files, and VTK XML unstructured grids (VTU) of
+// the body's points and elements, numbered like the frames.
 
 #include "app/export.h"
 
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include "model/body.h"
+#include "model/elements.h"
+#include "model/mat3.h"
 #include "model/term.h"
 
 namespace jello {
@@ -99,11 +102,144 @@ std::string plyText(const Body& body, const double* positions, const MeshStamp& 
   return out;
 }
 
+// ---- VTU: VTK's XML UnstructuredGrid, ASCII ---------------------------------------------------
+
+constexpr int kVtkTriangle = 5, kVtkTetra = 10;  // VTK's cell types
+
+// `text` fit for an XML comment: printable (no newline), and no "--" (which would end it).
+std::string commentText(const std::string& text) {
+  std::string out;
+  for (char c : printable(text)) {
+    if (c == '-' && !out.empty() && out.back() == '-') out.push_back(' ');
+    out.push_back(c);
+  }
+  return out;
+}
+
+// A DataArray of `values` (shortest round-trip numbers), a tuple of `components` a line.
+void appendFloatArray(std::string* out, const char* name, int components,
+                      const std::vector<double>& values) {
+  *out +=
+      textf("<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"ascii\">\n",
+            name, components);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out->push_back(i % components == 0 ? '\n' : ' ');
+    appendNumber(out, values[i]);
+  }
+  *out += "\n</DataArray>\n";
+}
+
+// A DataArray of integers of VTK type `type`, `perLine` a line.
+void appendIntArray(std::string* out, const char* type, const char* name, int perLine,
+                    const std::vector<int>& values) {
+  *out += textf("<DataArray type=\"%s\" Name=\"%s\" format=\"ascii\">\n", type, name);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out->push_back(i % perLine == 0 ? '\n' : ' ');
+    *out += std::to_string(values[i]);
+  }
+  *out += "\n</DataArray>\n";
+}
+
+// The grid a VTU file describes: its points (the body's point numbers), its cells (each a list of
+// places in `points`, and its VTK type), and the cells' values when the body has elements.
+struct VtuGrid {
+  std::vector<int> points;
+  std::vector<int> connectivity, offsets, types;
+  bool elements = false;
+  std::vector<double> vonMises, volumeChange;  // Pa, and det F - 1, by cell
+};
+
+void addCell(VtuGrid* grid, const int* places, int count, int type) {
+  grid->connectivity.insert(grid->connectivity.end(), places, places + count);
+  grid->offsets.push_back(static_cast<int>(grid->connectivity.size()));
+  grid->types.push_back(type);
+}
+
+// Every point of the body; every element as a tetrahedron with its stress and volume change; then
+// the surface triangles of the points in no element (a scene's jellies of springs), valued 0.
+VtuGrid elementGrid(const Body& body, const ElementTerm& elements, const double* positions) {
+  VtuGrid grid;
+  grid.elements = true;
+  const int n = body.count();
+  for (int q = 0; q < n; ++q) grid.points.push_back(q);
+  std::vector<bool> inElement(n, false);
+  for (int e = 0; e < elements.elementCount(); ++e) {
+    const Tet& t = elements.element(e);
+    addCell(&grid, t.data(), 4, kVtkTetra);
+    for (int q : t) inElement[q] = true;
+    grid.vonMises.push_back(elements.vonMises(e, positions));
+    grid.volumeChange.push_back(determinant(elements.deformation(e, positions)) - 1);
+  }
+  for (const Triangle& t : body.surface) {
+    if (inElement[t[0]]) continue;
+    addCell(&grid, t.data(), 3, kVtkTriangle);
+    grid.vonMises.push_back(0);
+    grid.volumeChange.push_back(0);
+  }
+  return grid;
+}
+
+// The surface points and triangles, numbered as in OBJ (from 0).
+VtuGrid surfaceGrid(const Body& body) {
+  VtuGrid grid;
+  grid.points = body.surfacePoints;
+  for (const Triangle& t : body.surface) {
+    const int places[3] = {body.surfaceVertexOf[t[0]], body.surfaceVertexOf[t[1]],
+                           body.surfaceVertexOf[t[2]]};
+    addCell(&grid, places, 3, kVtkTriangle);
+  }
+  return grid;
+}
+
+std::string vtuText(const Model& model, const State& state, const MeshStamp& stamp) {
+  const Body& body = model.body();
+  const ElementTerm* elements = model.forces.elements;
+  const VtuGrid grid = elements ? elementGrid(body, *elements, state.p()) : surfaceGrid(body);
+  const int n = body.count();
+  std::vector<double> positions, velocities;
+  for (int q : grid.points) {
+    const Vec3 p = load(state.p(), q, n), v = load(state.v(), q, n);
+    positions.insert(positions.end(), {p.x, p.y, p.z});
+    velocities.insert(velocities.end(), {v.x, v.y, v.z});
+  }
+  std::string out = "<?xml version=\"1.0\"?>\n";
+  out.reserve(256 * 1024);
+  out += "<!-- jello mesh: world " + commentText(stamp.world) +
+         textf(", step %lld, time %.17g s; metres, z up; ", stamp.step, stamp.time) +
+         (grid.elements ? "every point, the elements as tetrahedra" : "the surface as triangles") +
+         " -->\n";
+  out += "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
+  out += "<UnstructuredGrid>\n<FieldData>\n";
+  out += "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">\n";
+  appendNumber(&out, stamp.time);
+  out += "\n</DataArray>\n</FieldData>\n";
+  out += textf("<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n", grid.points.size(),
+               grid.types.size());
+  out += "<PointData Vectors=\"velocity\">\n";
+  appendFloatArray(&out, "velocity", 3, velocities);
+  out += "</PointData>\n";
+  if (grid.elements) {
+    out += "<CellData Scalars=\"von_mises_stress\">\n";
+    appendFloatArray(&out, "von_mises_stress", 1, grid.vonMises);
+    appendFloatArray(&out, "volume_change", 1, grid.volumeChange);
+    out += "</CellData>\n";
+  }
+  out += "<Points>\n";
+  appendFloatArray(&out, "Points", 3, positions);
+  out += "</Points>\n<Cells>\n";
+  appendIntArray(&out, "Int32", "connectivity", grid.elements ? 4 : 3, grid.connectivity);
+  appendIntArray(&out, "Int32", "offsets", 16, grid.offsets);
+  appendIntArray(&out, "UInt8", "types", 32, grid.types);
+  out += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  return out;
+}
+
 bool isMeshName(const char* name) {
   for (int i = 0; i < kFrameDigits; ++i)
     if (!std::isdigit(static_cast<unsigned char>(name[i]))) return false;
-  return std::strcmp(name + kFrameDigits, ".obj") == 0 ||
-         std::strcmp(name + kFrameDigits, ".ply") == 0;
+  for (const char* extension : {".obj", ".ply", ".vtu"})
+    if (std::strcmp(name + kFrameDigits, extension) == 0) return true;
+  return false;
 }
 
 std::vector<std::string> meshNames(const std::string& dir) {
@@ -118,22 +254,52 @@ std::vector<std::string> meshNames(const std::string& dir) {
 
 }  // namespace
 
-const char* meshExtension(MeshFormat format) { return format == MeshFormat::Ply ? ".ply" : ".obj"; }
+const char* meshExtension(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::Ply:
+      return ".ply";
+    case MeshFormat::Vtu:
+      return ".vtu";
+    case MeshFormat::Obj:
+      break;
+  }
+  return ".obj";
+}
 
-const char* meshFormatName(MeshFormat format) { return format == MeshFormat::Ply ? "PLY" : "OBJ"; }
+const char* meshFormatName(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::Ply:
+      return "PLY";
+    case MeshFormat::Vtu:
+      return "VTU";
+    case MeshFormat::Obj:
+      break;
+  }
+  return "OBJ";
+}
 
 bool parseMeshFormat(std::string_view name, MeshFormat* out) {
   std::string lower;
   for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "obj") *out = MeshFormat::Obj;
-  if (lower == "ply") *out = MeshFormat::Ply;
-  return lower == "obj" || lower == "ply";
+  for (MeshFormat format : {MeshFormat::Obj, MeshFormat::Ply, MeshFormat::Vtu})
+    if (lower == meshExtension(format) + 1) {  // the extension less its dot
+      *out = format;
+      return true;
+    }
+  return false;
 }
 
-std::string meshText(MeshFormat format, const Body& body, const double* positions,
+std::string meshText(MeshFormat format, const Model& model, const State& state,
                      const MeshStamp& stamp) {
-  return format == MeshFormat::Ply ? plyText(body, positions, stamp)
-                                   : objText(body, positions, stamp);
+  switch (format) {
+    case MeshFormat::Ply:
+      return plyText(model.body(), state.p(), stamp);
+    case MeshFormat::Vtu:
+      return vtuText(model, state, stamp);
+    case MeshFormat::Obj:
+      break;
+  }
+  return objText(model.body(), state.p(), stamp);
 }
 
 MeshSequence::MeshSequence(std::string dir, MeshFormat format, bool overwrite)
@@ -160,10 +326,10 @@ void MeshSequence::open(const std::string& heldFolder) {
   opened_ = true;
 }
 
-void MeshSequence::write(int index, const Body& body, const double* positions,
+void MeshSequence::write(int index, const Model& model, const State& state,
                          const MeshStamp& stamp) {
   open();
-  writeFileWhole(pathOf(index), meshText(format_, body, positions, stamp), Existing::Refuse);
+  writeFileWhole(pathOf(index), meshText(format_, model, state, stamp), Existing::Refuse);
   ++written_;
 }
 
@@ -182,7 +348,7 @@ class MeshExport : public FrameObserver {
   const PictureOptions& options() const override { return options_; }
   void begin() override { sequence_.open(held_); }
   void frame(const Model& model, const State& state, long long step, double time) override {
-    sequence_.write(sequence_.written(), model.body(), state.p(), MeshStamp{world_, step, time});
+    sequence_.write(sequence_.written(), model, state, MeshStamp{world_, step, time});
   }
   bool wantsMore() const override { return sequence_.written() < options_.maxFrames; }
   int framesDone() const override { return sequence_.written(); }

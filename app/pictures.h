@@ -14,8 +14,8 @@ namespace jello {
 
 // The colourings of the cube's surface by name, in the order the window's `c` cycles them
 // (showCube.h's Colouring): --colouring starts a run's pictures in one of them.
-constexpr const char* kColouringNames[] = {"plain", "strain", "force", "friction"};
-constexpr int kColouringCount = 4;
+constexpr const char* kColouringNames[] = {"plain", "strain", "force", "stress", "friction"};
+constexpr int kColouringCount = 5;
 
 // --camera AZIMUTH,ELEVATION[,DISTANCE]: where the camera of a run's pictures starts (README: The
 // viewer), on its sphere around the origin.
@@ -31,7 +31,7 @@ struct CameraRequest {
 };
 
 // The file format of exported surface meshes (app/export.h).
-enum class MeshFormat { Obj, Ply };
+enum class MeshFormat { Obj, Ply, Vtu };
 
 // How pictures are made and kept.
 struct PictureOptions {

@@ -14,7 +14,8 @@ constexpr int kSmallWindowWidth = 560, kSmallWindowHeight = 400;  // below eithe
 constexpr int kMarginDots = 4;
 // The legends, in font dots.
 constexpr int kSwatchDots = 8, kLegendGapDots = 3, kBarDots = 7, kBarMostDots = 80;
-constexpr int kLegendLabelChars = 7;  // "-0.0005", "FORCE N": the longest a colour legend says
+constexpr int kLegendLabelChars = 7;  // "-0.0005", "FORCE N": the longest a bar's end says
+constexpr const char* kLongestColourTitle = "STRESS PA";  // over the bar and its labels
 constexpr const char* kLongestSpringLabel = "STRUCTURAL";
 constexpr const char* kHelpCut = "(MORE KEYS IN A LARGER WINDOW)";
 
@@ -154,7 +155,8 @@ LegendLayout layoutLegends(int width, int height, int springKinds, bool colourLe
     out.springLabelX = out.springs.x + (kSwatchDots + kLegendGapDots) * s;
   }
   if (colourLegend) {
-    const int w = (kBarDots + kLegendGapDots + kLegendLabelChars * kGlyphAdvance) * s;
+    const int w = std::max((kBarDots + kLegendGapDots + kLegendLabelChars * kGlyphAdvance) * s,
+                           textWidth(kLongestColourTitle, s));
     // The bar takes a third of the height, less where the springs' legend leaves less.
     const int above = out.springs.empty() ? margin : out.springs.bottom() + line;
     const int room = height - margin - above - line;
@@ -216,7 +218,7 @@ const std::vector<KeyLine>& windowKeys() {
       {"E", "reset the camera"},
       {"V", "wireframe"},
       {"S H B", "springs by kind, as lines"},
-      {"C", "colour: strain, force, friction"},
+      {"C", "colour: strain, force, stress, friction"},
       {"F", "hold or free colour scale"},
       {"ARROWS", "push the jelly as seen"},
       {"J", "make it jump"},

@@ -37,19 +37,23 @@ struct Camera {
 // kMaxCameraDistance); then placed where `request` (--camera) says, when there is one.
 Camera cameraFor(const Model& model, const std::optional<CameraRequest>& request = std::nullopt);
 
-// How the cube's surface is coloured; `c` in the viewer cycles through them.
-// Friction: each point in contact with a frictional obstacle, sticking or sliding
-// (analysis/contacts.h).
-enum class Colouring { Plain, Strain, Force, Friction };
-constexpr int kColouringKinds = 4;
+// How the cube's surface is coloured; `c` in the viewer cycles through them (Stress only for a
+// model with elements). Strain: at a point of springs the mean relative stretch of its springs; at
+// a point of elements the mean over its tetrahedra of each one's principal strain of the largest
+// magnitude (a signed singular value of its deformation, less 1); blue compressed, red stretched.
+// Force: the magnitude of the force on each point, N. Stress: the mean von Mises stress of each
+// point's tetrahedra, Pa (0 at a point of none). Friction: each point in contact with a frictional
+// obstacle, sticking or sliding (analysis/contacts.h).
+enum class Colouring { Plain, Strain, Force, Stress, Friction };
+constexpr int kColouringKinds = 5;
 const char* colouringName(Colouring colouring);
 
 struct DrawOptions {
   bool wireframe = false;
   bool structural = false, shear = false, bend = false;  // springs drawn as lines
   Colouring colouring = Colouring::Plain;
-  // The value at the colour legend's end (strain, or newtons for force), held by the viewer's
-  // `f`; 0: fitted to each frame's largest value.
+  // The value at the colour legend's end (strain, newtons for force, Pa for stress), held by the
+  // viewer's `f`; 0: fitted to each frame's largest value.
   double colourScale = 0;
   int springKinds() const { return int(structural) + int(shear) + int(bend); }
 };

@@ -110,7 +110,7 @@ std::string newRecordingFolder(const Viewer& v) {
 }
 
 // The folder of a new recording's meshes: the frames' folder when --export names the frames'
-// first folder (the names do not clash: .jpg and .obj or .ply); otherwise --export DIR, and
+// first folder (the names do not clash: .jpg and .obj, .ply or .vtu); otherwise --export DIR, and
 // after a recording that reached --max-frames, a new folder in it, as for frames.
 std::string newExportFolder(const Viewer& v, const std::string& framesFolder) {
   const std::string& first = v.pictures.exportDir;
@@ -166,8 +166,7 @@ void saveFrame(Viewer& v) {
   try {
     v.frames->save(readWindow(v.width, v.height));
     if (v.meshes)
-      v.meshes->write(index, v.model.body(), v.state().p(),
-                      MeshStamp{v.worldPath, v.savedStep, v.time()});
+      v.meshes->write(index, v.model, v.state(), MeshStamp{v.worldPath, v.savedStep, v.time()});
   } catch (const std::exception& e) {
     v.saving = false;
     v.say(e.what());

@@ -47,9 +47,14 @@ void toggleColourHold(Viewer& v) {
   }
 }
 
+// The next colouring in the order of Colouring, skipping Stress when no jelly is made of
+// elements (a world of springs has no stress to show).
 void nextColouring(Viewer& v) {
-  v.draw.colouring =
-      static_cast<Colouring>((static_cast<int>(v.draw.colouring) + 1) % kColouringKinds);
+  Colouring next = v.draw.colouring;
+  do {
+    next = static_cast<Colouring>((static_cast<int>(next) + 1) % kColouringKinds);
+  } while (next == Colouring::Stress && !v.model.forces.elements);
+  v.draw.colouring = next;
   v.draw.colourScale = 0;  // a held scale belongs to the colouring it was held for
 }
 

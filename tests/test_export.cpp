@@ -1,6 +1,7 @@
 // The exported surface meshes (--export, app/surface.h, app/export.h): the mesh is a closed,
 // consistently wound surface of the right volume, its normals are right on the rest lattice,
-// and a headless run writes one readable file per frame, numbered like the frames. No GL.
+// a VTU holds a jelly of elements whole with its stresses, and a headless run writes one readable
+// file per frame, numbered like the frames. No GL.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -20,7 +21,10 @@
 
 #include "app/export.h"
 #include "app/pictures.h"
+#include "io/scenereader.h"
 #include "model/body.h"
+#include "model/mat3.h"
+#include "model/model.h"
 #include "solver/simulation.h"
 #include "test_support.h"
 
@@ -179,10 +183,16 @@ ParsedObj parseObj(const std::string& text) {
   return out;
 }
 
+// The course cube's model of springs: meshText reads its body (and for VTU, its elements: none).
+const Model& courseModel() {
+  static const Model model = makeModel(test::springsOnlyWorld(), test::restLattice());
+  return model;
+}
+
 TEST(MeshText, ObjListsTheSurfaceExactlyWithItsNormalsAndTriangles) {
   const State rest = test::restLattice();
   const ParsedObj obj =
-      parseObj(meshText(MeshFormat::Obj, courseBody(), rest.p(), {"a.w", 12, 0.012}));
+      parseObj(meshText(MeshFormat::Obj, courseModel(), rest, {"a.w", 12, 0.012}));
   ASSERT_EQ(obj.v.size(), 296u);
   ASSERT_EQ(obj.vn.size(), 296u);
   ASSERT_EQ(obj.f.size(), 588u);
@@ -207,7 +217,7 @@ TEST(MeshText, ObjListsTheSurfaceExactlyWithItsNormalsAndTriangles) {
 
 TEST(MeshText, PlyHasTheHeaderBlenderAndHoudiniReadAndTheSameMesh) {
   const State rest = test::restLattice();
-  const std::string text = meshText(MeshFormat::Ply, courseBody(), rest.p(), {"a.w", 0, 0});
+  const std::string text = meshText(MeshFormat::Ply, courseModel(), rest, {"a.w", 0, 0});
   std::istringstream lines(text);
   std::vector<std::string> header;
   for (std::string line; std::getline(lines, line) && line != "end_header";)
@@ -245,18 +255,159 @@ TEST(MeshText, PlyHasTheHeaderBlenderAndHoudiniReadAndTheSameMesh) {
 TEST(MeshText, AWorldNamedWithANewlineStaysInItsCommentLine) {
   const State rest = test::restLattice();
   const ParsedObj obj =
-      parseObj(meshText(MeshFormat::Obj, courseBody(), rest.p(), {"evil\nv 9 9 9\n.w", 0, 0}));
+      parseObj(meshText(MeshFormat::Obj, courseModel(), rest, {"evil\nv 9 9 9\n.w", 0, 0}));
   EXPECT_EQ(obj.v.size(), 296u);
   EXPECT_EQ(obj.other, 0);
 }
 
-TEST(MeshFormat, NamesAreObjOrPlyInAnyCase) {
+TEST(MeshFormat, NamesAreObjPlyOrVtuInAnyCase) {
   MeshFormat format = MeshFormat::Obj;
   EXPECT_TRUE(parseMeshFormat("PLY", &format));
   EXPECT_EQ(format, MeshFormat::Ply);
   EXPECT_TRUE(parseMeshFormat("obj", &format));
   EXPECT_EQ(format, MeshFormat::Obj);
-  for (const char* bad : {"stl", "", "objx", "ob"}) EXPECT_FALSE(parseMeshFormat(bad, &format));
+  EXPECT_TRUE(parseMeshFormat("Vtu", &format));
+  EXPECT_EQ(format, MeshFormat::Vtu);
+  EXPECT_STREQ(meshExtension(format), ".vtu");
+  EXPECT_STREQ(meshFormatName(format), "VTU");
+  for (const char* bad : {"stl", "", "objx", "ob", ".vtu", "vtk"})
+    EXPECT_FALSE(parseMeshFormat(bad, &format));
+}
+
+// ---- VTU ------------------------------------------------------------------------------------
+
+// The numbers of the DataArray named `name` in a VTU's text; empty when it has none.
+std::vector<double> vtuArray(const std::string& text, const std::string& name) {
+  const std::size_t at = text.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return {};
+  const std::size_t begin = text.find('>', at) + 1;
+  std::istringstream numbers(text.substr(begin, text.find("</DataArray>", begin) - begin));
+  std::vector<double> out;
+  for (double x; numbers >> x;) out.push_back(x);
+  EXPECT_TRUE(numbers.eof()) << name << ": only numbers in a DataArray";
+  return out;
+}
+
+// The value of the attribute `name` ("NumberOfPoints") in a VTU's text; -1 when it has none.
+long long vtuCount(const std::string& text, const std::string& name) {
+  const std::size_t at = text.find(" " + name + "=\"");
+  return at == std::string::npos ? -1 : std::atoll(text.c_str() + at + name.size() + 3);
+}
+
+// A small jelly of elements: 3 x 3 x 3 points, 48 tetrahedra.
+WorldFile elementScene() {
+  return parseScene(
+      "dt = 0.0001\n[bounds]\npresent = false\n[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n"
+      "spacing = 0.02\nmaterial = \"neohookean\"\nyoungs_modulus = 1e4\npoisson_ratio = 0.45\n"
+      "density = 1000\n",
+      "elements.toml", "");
+}
+
+// The rest state of `file` stretched along x, sheared and bent a little, each point moving.
+State deformed(const Model& model, const State& rest) {
+  State out = rest;
+  const int n = model.points();
+  for (int q = 0; q < n; ++q) {
+    const Vec3 p = load(rest.p(), q, n);
+    store(out.p(), q, n, {1.1 * p.x + 0.2 * p.z, p.y - 3 * p.x * p.x, 0.95 * p.z});
+    store(out.v(), q, n, {0.5 * p.y, -0.25, q * 1e-3});
+  }
+  return out;
+}
+
+TEST(MeshText, VtuOfElementsHoldsEveryPointAndEveryTetrahedron) {
+  const WorldFile file = elementScene();
+  const Model model = makeModel(file.world, file.state);
+  ASSERT_NE(model.forces.elements, nullptr);
+  const ElementTerm& elements = *model.forces.elements;
+  ASSERT_EQ(elements.elementCount(), 48);
+  const State state = deformed(model, file.state);
+  const std::string text = meshText(MeshFormat::Vtu, model, state, {"evil--\n-->.w", 7, 0.25});
+  EXPECT_EQ(text.rfind("<?xml version=\"1.0\"?>\n", 0), 0u);
+  EXPECT_NE(text.find("<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+                      "byte_order=\"LittleEndian\">"),
+            std::string::npos);
+  // The stamp is one comment that the world's name cannot end: one "--", at its start and end.
+  const std::size_t open = text.find("<!--"), close = text.find("-->");
+  ASSERT_NE(close, std::string::npos);
+  EXPECT_EQ(text.find("--", open + 4), close) << text.substr(open, close - open);
+  EXPECT_NE(text.find(", step 7, time 0.25 s"), std::string::npos);
+  EXPECT_EQ(vtuArray(text, "TimeValue"), std::vector<double>{0.25});
+
+  const int n = model.points();
+  EXPECT_EQ(vtuCount(text, "NumberOfPoints"), n);
+  EXPECT_EQ(vtuCount(text, "NumberOfCells"), elements.elementCount());
+  const std::vector<double> types = vtuArray(text, "types");
+  ASSERT_EQ(types.size(), 48u);
+  for (double type : types) EXPECT_EQ(type, 10) << "VTK_TETRA";
+  const std::vector<double> connectivity = vtuArray(text, "connectivity");
+  const std::vector<double> offsets = vtuArray(text, "offsets");
+  ASSERT_EQ(connectivity.size(), 4u * 48);
+  ASSERT_EQ(offsets.size(), 48u);
+  for (int e = 0; e < 48; ++e) {
+    EXPECT_EQ(offsets[e], 4 * (e + 1));
+    for (int corner = 0; corner < 4; ++corner)
+      EXPECT_EQ(connectivity[4 * e + corner], elements.element(e)[corner]);
+  }
+  // Every point, in point order: positions and velocities exactly.
+  const std::vector<double> points = vtuArray(text, "Points");
+  const std::vector<double> velocity = vtuArray(text, "velocity");
+  ASSERT_EQ(points.size(), 3u * n);
+  ASSERT_EQ(velocity.size(), 3u * n);
+  for (int q = 0; q < n; ++q) {
+    const Vec3 p = load(state.p(), q, n), v = load(state.v(), q, n);
+    EXPECT_EQ(points[3 * q], p.x);
+    EXPECT_EQ(points[3 * q + 1], p.y);
+    EXPECT_EQ(points[3 * q + 2], p.z);
+    EXPECT_EQ(velocity[3 * q], v.x);
+    EXPECT_EQ(velocity[3 * q + 2], v.z);
+  }
+}
+
+TEST(MeshText, VtuStressesAreTheElementsVonMisesAndVolumeChangesTheirs) {
+  const WorldFile file = elementScene();
+  const Model model = makeModel(file.world, file.state);
+  const ElementTerm& elements = *model.forces.elements;
+  const State state = deformed(model, file.state);
+  const std::string text = meshText(MeshFormat::Vtu, model, state, {"a.toml", 0, 0});
+  const std::vector<double> stress = vtuArray(text, "von_mises_stress");
+  const std::vector<double> change = vtuArray(text, "volume_change");
+  ASSERT_EQ(stress.size(), 48u);
+  ASSERT_EQ(change.size(), 48u);
+  double most = 0;
+  for (int e = 0; e < 48; ++e) {
+    EXPECT_EQ(stress[e], elements.vonMises(e, state.p())) << e;  // shortest round-trip digits
+    EXPECT_EQ(change[e], determinant(elements.deformation(e, state.p())) - 1) << e;
+    most = std::max(most, stress[e]);
+  }
+  EXPECT_GT(most, 100) << "Pa: the deformed jelly is stressed";
+  // At rest: no stress, no volume change.
+  const std::string rest = meshText(MeshFormat::Vtu, model, file.state, {"a.toml", 0, 0});
+  for (double s : vtuArray(rest, "von_mises_stress")) EXPECT_NEAR(s, 0, 1e-6);
+  for (double c : vtuArray(rest, "volume_change")) EXPECT_NEAR(c, 0, 1e-12);
+}
+
+TEST(MeshText, VtuOfSpringsHoldsTheSurfaceTrianglesAndNoStress) {
+  State state = test::restLattice();
+  for (int q = 0; q < kNumPoints; ++q) store(state.v(), q, {0, 0, 0.001 * q});
+  const std::string text = meshText(MeshFormat::Vtu, courseModel(), state, {"a.w", 0, 0});
+  EXPECT_EQ(vtuCount(text, "NumberOfPoints"), 296);
+  EXPECT_EQ(vtuCount(text, "NumberOfCells"), 588);
+  const std::vector<double> types = vtuArray(text, "types");
+  ASSERT_EQ(types.size(), 588u);
+  for (double type : types) EXPECT_EQ(type, 5) << "VTK_TRIANGLE";
+  const std::vector<double> connectivity = vtuArray(text, "connectivity");
+  ASSERT_EQ(connectivity.size(), 3u * 588);
+  const Body& body = courseBody();
+  for (std::size_t t = 0; t < 588; ++t)
+    for (int corner = 0; corner < 3; ++corner)
+      EXPECT_EQ(body.surfacePoints[connectivity[3 * t + corner]], body.surface[t][corner]);
+  const std::vector<double> velocity = vtuArray(text, "velocity");
+  ASSERT_EQ(velocity.size(), 3u * 296);
+  for (std::size_t k = 0; k < 296; ++k)
+    EXPECT_EQ(velocity[3 * k + 2], load(state.v(), body.surfacePoints[k]).z);
+  EXPECT_EQ(text.find("<CellData"), std::string::npos);
+  EXPECT_EQ(text.find("von_mises_stress"), std::string::npos);
 }
 
 // ---- Through jello --------------------------------------------------------------------------
@@ -316,6 +467,12 @@ TEST(CliExport, PlyFilesAndMaxFramesAndTheDefaultLengthFollowTheFrames) {
   EXPECT_NE(r.out.find("steps=40 "), std::string::npos) << r.out;
   EXPECT_EQ(countMeshes(meshes), 3);
   EXPECT_EQ(test::readText(meshes + "/0002.ply").rfind("ply\nformat ascii 1.0\n", 0), 0u);
+  r = test::runJelloArgs({"--headless", "--export", meshes, "--overwrite", "--export-format", "vtu",
+                          "--max-frames", "2", "--fps", "50", world});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("2 meshes (VTU) in " + meshes + "/"), std::string::npos) << r.out;
+  EXPECT_EQ(countMeshes(meshes), 2) << "the PLY files gave way to 0000.vtu and 0001.vtu";
+  EXPECT_EQ(vtuCount(test::readText(meshes + "/0001.vtu"), "NumberOfCells"), 588);
   r = test::runJelloArgs(
       {"--headless", "--export", meshes, "--overwrite", "--max-frames", "2", "--time", "1", world});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -329,7 +486,7 @@ TEST(CliExport, BadFormatsAndMisplacedOptionsAreRefusedInOneLine) {
   const std::string dir = test::makeTempDir(), never = dir + "/never";
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--headless", "--export", never, "--export-format", "stl", world},
-       "--export-format: unknown format 'stl', expected obj or ply"},
+       "--export-format: unknown format 'stl', expected obj, ply or vtu"},
       {{"--headless", "--export-format", "ply", world}, "--export-format goes with --export"},
       {{"--check", "--export", never, world}, "--export goes with a run"},
       {{"--headless", "--export", "", world}, "--export"},

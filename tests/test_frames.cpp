@@ -312,6 +312,80 @@ TEST(SceneDrawing, TheFrictionColouringShowsStickingGreenAndSlidingOrange) {
   EXPECT_EQ(slidingGreen, 0);
 }
 
+// A jelly of elements of 5 x 5 x 5 points 5 cm apart, in a box about it.
+constexpr const char* kElementScene =
+    "dt = 0.0001\n[bounds]\nlower = [-0.2, -0.2, -0.2]\nupper = [0.2, 0.2, 0.3]\n[jelly]\n"
+    "shape = \"lattice\"\nsize = [5, 5, 5]\nspacing = 0.05\nmaterial = \"neohookean\"\n"
+    "youngs_modulus = 1e4\npoisson_ratio = 0.45\ndensity = 1000\n";
+
+Vec3 meanPosition(const State& state) {
+  Vec3 sum;
+  for (int q = 0; q < state.points(); ++q) sum += load(state.p(), q, state.points());
+  return (1.0 / state.points()) * sum;
+}
+
+// `state` stretched by `factor` along x about its mean: every element's deformation is
+// diag(factor, 1, 1), its principal strain factor - 1.
+State stretchedAlongX(const State& state, double factor) {
+  State out = state;
+  const int n = state.points();
+  const Vec3 centre = meanPosition(state);
+  for (int q = 0; q < n; ++q) {
+    const Vec3 d = load(state.p(), q, n) - centre;
+    store(out.p(), q, n, centre + Vec3{factor * d.x, d.y, d.z});
+  }
+  return out;
+}
+
+// A jelly of elements has no springs: its strain is its elements', signed (red stretched, blue
+// compressed), and the legend's scale fits it (not 0 / 0 at every point).
+TEST(SceneDrawing, TheStrainOfAJellyOfElementsIsItsElementsPrincipalStrain) {
+  const WorldFile f = sceneText(kElementScene);
+  const Model model = makeModel(f.world, f.state);
+  ASSERT_NE(model.forces.elements, nullptr);
+  ASSERT_TRUE(model.springs().empty());
+  const State stretched = stretchedAlongX(f.state, 1.05);
+  const State squeezed = stretchedAlongX(f.state, 0.95);
+  EXPECT_NEAR(fittedColourScale(model, stretched, Colouring::Strain), 0.05, 1e-12);
+  EXPECT_NEAR(fittedColourScale(model, squeezed, Colouring::Strain), 0.05, 1e-12);
+  EXPECT_EQ(fittedColourScale(model, f.state, Colouring::Strain), 1e-3) << "at rest: the least";
+  OffscreenRenderer renderer(320, 240);
+  const Camera camera = cameraFor(model);
+  DrawOptions options;
+  options.colouring = Colouring::Strain;
+  const Rgb red =
+      pixelAt(renderer.render(model, stretched, camera, options), camera, meanPosition(stretched));
+  EXPECT_GT(red.r, red.b + 60) << red.r << " " << red.g << " " << red.b;
+  const Rgb blue =
+      pixelAt(renderer.render(model, squeezed, camera, options), camera, meanPosition(squeezed));
+  EXPECT_GT(blue.b, blue.r + 60) << blue.r << " " << blue.g << " " << blue.b;
+}
+
+// The stress colouring shows the elements' von Mises stress, in Pa; a world of springs has none.
+TEST(SceneDrawing, TheStressColouringShowsTheElementsVonMisesStress) {
+  const WorldFile f = sceneText(kElementScene);
+  const Model model = makeModel(f.world, f.state);
+  const State stretched = stretchedAlongX(f.state, 1.05);
+  const double stress = model.forces.elements->vonMises(0, stretched.p());  // every element's
+  ASSERT_GT(stress, 100);
+  const double scale = fittedColourScale(model, stretched, Colouring::Stress);
+  EXPECT_GE(scale, stress);
+  EXPECT_LE(scale, 2.5 * stress) << "a round 1, 2 or 5 at least the largest";
+  EXPECT_EQ(fittedColourScale(model, f.state, Colouring::Stress), 1) << "Pa: the least";
+  OffscreenRenderer renderer(320, 240);
+  const Camera camera = cameraFor(model);
+  const Image plain = renderer.render(model, stretched, camera, DrawOptions{});
+  DrawOptions options;
+  options.colouring = Colouring::Stress;
+  const Image coloured = renderer.render(model, stretched, camera, options);
+  EXPECT_GT(meanAbsoluteDifference(plain, coloured), 0.5);
+  EXPECT_STREQ(colouringName(Colouring::Stress), "stress");
+
+  WorldFile springs = readWorldFile(dataPath("jello.w"));  // starts stretched
+  const Model springModel = makeModel(springs.world, springs.state);
+  EXPECT_EQ(fittedColourScale(springModel, springs.state, Colouring::Stress), 1);
+}
+
 TEST(Offscreen, RefusesSizesOutOfRange) {
   EXPECT_THROW(OffscreenRenderer(8, 480), std::runtime_error);
   EXPECT_THROW(OffscreenRenderer(640, 100000), std::runtime_error);
@@ -564,6 +638,23 @@ TEST(CliFrames, CameraAndColouringChangeTheFramesAndBadOnesAreRefused) {
   }
   struct stat info;
   EXPECT_NE(::stat((dir + "/never").c_str(), &info), 0);
+  test::removeTree(dir);
+}
+
+// --colouring stress and strain colour a headless frame of a jelly of elements.
+TEST(CliFrames, StressAndStrainColourAJellyOfElements) {
+  const std::string dir = test::makeTempDir(), scene = dir + "/elements.toml";
+  test::writeText(scene, kElementScene);
+  auto frame = [&](std::vector<std::string> args, const std::string& name) {
+    args.insert(args.end(), {"--headless", "--steps", "0", "--size", "320x240", "--frames",
+                             dir + "/" + name, scene});
+    const test::CommandResult r = test::runJelloArgs(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return readJpeg(dir + "/" + name + "/0000.jpg");
+  };
+  const Image plain = frame({}, "plain");
+  EXPECT_GT(meanAbsoluteDifference(plain, frame({"--colouring", "STRESS"}, "stress")), 0.5);
+  EXPECT_GT(meanAbsoluteDifference(plain, frame({"--colouring", "strain"}, "strain")), 0.5);
   test::removeTree(dir);
 }
 
