@@ -182,14 +182,18 @@ void measureErrors(const WorldFile& file, const std::vector<std::vector<Vec3>>& 
 }
 
 std::string fitText(const Material& material, double spacing, const SpringFit& fit) {
-  char text[512];
+  char text[640];
   std::snprintf(text, sizeof text,
                 "springs for E = %g Pa, nu = %g at spacing %g m: structural = bend = %.6g N/m, "
                 "shear = %.6g N/m, dampers %g s times each; their nu is 0.25, their elasticity "
                 "tensor %.1f%% from the material's",
                 material.youngsModulus, material.poissonRatio, spacing, fit.constants.k[0],
                 fit.constants.k[1], material.stiffnessDamping, 100 * fit.tensorResidual);
-  return text;
+  std::string out = text;
+  if (material.massDamping != 0)
+    out += textf("; springs have no mass damping: the elements' alpha = %g 1/s has no match",
+                 material.massDamping);
+  return out;
 }
 
 }  // namespace

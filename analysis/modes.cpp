@@ -337,38 +337,78 @@ Linearisation everyMode(const Eigenquotients& all) {
 // the coordinates not pinned, from its blocks alone: a 48^3 lattice's sparse Jacobian and its
 // symmetric part took 1.2 GB and 10 s. The symmetric part's entry (|m_ij + m_ji|) / 2 is counted
 // as (|m_ij| + |m_ji|) / 2, equal where the block is symmetric (a spring's stiffness at rest), so
-// the interval holds the exact one.
+// the interval holds the exact one. Where the points' masses differ (NewtonBlocks::rowScale), the
+// matrix taken is M^(1/2) (N - I) M^(-1/2), of the same eigenvalues: a block joining points a and
+// b is scaled by sqrt(s_a s_b), s = 1 / mass, and one on a point's diagonal by s.
+// Row i of |B|, and column j.
+double rowSum(const Block3& b, int i) {
+  return std::fabs(b.m[3 * i]) + std::fabs(b.m[3 * i + 1]) + std::fabs(b.m[3 * i + 2]);
+}
+double columnSum(const Block3& b, int j) {
+  return std::fabs(b.m[j]) + std::fabs(b.m[3 + j]) + std::fabs(b.m[6 + j]);
+}
+// Row (and column) i of (|B| + |B^T|) / 2.
+double offSum(const Block3& b, int i) { return (rowSum(b, i) + columnSum(b, i)) / 2; }
+
+// Each point's diagonal block of the matrix below and each coordinate's sum of its row's
+// off-diagonal magnitudes outside that block.
+struct GershgorinSums {
+  std::vector<Block3> diagonal;
+  std::vector<double> off;
+};
+
+// The coupling blocks' part (finite elements): (r, c) and (c, r) are listed apart; each adds half
+// of its rows to r's sums and half of its columns to c's.
+void addCouplingSums(const NewtonBlocks& blocks, const std::vector<char>& isPinned,
+                     GershgorinSums* sums) {
+  const int n = blocks.points();
+  auto scale = [&](int q) { return blocks.rowScale.empty() ? 1.0 : blocks.rowScale[q]; };
+  for (std::size_t k = 0; k < blocks.couplings.size(); ++k) {
+    const auto [r, c] = blocks.couplings[k];
+    const Block3& block = blocks.coupling[k];
+    if (r == c) {
+      for (int e = 0; e < 9; ++e) sums->diagonal[r].m[e] += scale(r) * block.m[e];
+      continue;
+    }
+    if (isPinned[coordIndex(r, 0, n)] || isPinned[coordIndex(c, 0, n)]) continue;
+    const double joint = std::sqrt(scale(r) * scale(c));
+    for (int i = 0; i < 3; ++i) {
+      sums->off[coordIndex(r, i, n)] += joint * rowSum(block, i) / 2;
+      sums->off[coordIndex(c, i, n)] += joint * columnSum(block, i) / 2;
+    }
+  }
+}
+
 Interval blockInterval(const NewtonBlocks& blocks) {
   const int n = blocks.points();
   const std::vector<char> isPinned = pinnedCoordinates(blocks.pinned, n);
-  std::vector<Block3> diagonal = blocks.point;  // a point's block of N - I: + B of its pairs
+  auto scale = [&](int q) { return blocks.rowScale.empty() ? 1.0 : blocks.rowScale[q]; };
+  GershgorinSums sums{blocks.point, std::vector<double>(3 * static_cast<std::size_t>(n), 0.0)};
+  std::vector<Block3>& diagonal = sums.diagonal;  // a point's block of N - I: + B of its pairs
   for (Block3& d : diagonal)
     for (int axis = 0; axis < 3; ++axis) d.m[4 * axis] -= 1;
-  std::vector<double> off(3 * static_cast<std::size_t>(n), 0.0);
-  auto offSum = [](const Block3& b, int i) {  // row (and column) i of (|B| + |B^T|) / 2
-    double sum = 0;
-    for (int j = 0; j < 3; ++j) sum += (std::fabs(b.m[3 * i + j]) + std::fabs(b.m[3 * j + i])) / 2;
-    return sum;
-  };
   for (std::size_t k = 0; k < blocks.pairs.size(); ++k) {
     const auto [a, b] = blocks.pairs[k];
     const Block3& block = blocks.pair[k];
     for (int e = 0; e < 9; ++e) {
-      diagonal[a].m[e] += block.m[e];
-      diagonal[b].m[e] += block.m[e];
+      diagonal[a].m[e] += scale(a) * block.m[e];
+      diagonal[b].m[e] += scale(b) * block.m[e];
     }
     if (isPinned[coordIndex(a, 0, n)] || isPinned[coordIndex(b, 0, n)]) continue;
+    const double joint = std::sqrt(scale(a) * scale(b));
     for (int i = 0; i < 3; ++i) {
-      off[coordIndex(a, i, n)] += offSum(block, i);
-      off[coordIndex(b, i, n)] += offSum(block, i);
+      sums.off[coordIndex(a, i, n)] += joint * offSum(block, i);
+      sums.off[coordIndex(b, i, n)] += joint * offSum(block, i);
     }
   }
+  addCouplingSums(blocks, isPinned, &sums);
   Interval out{INFINITY, -INFINITY};  // (empty when every point is pinned)
   for (int q = 0; q < n; ++q) {
     if (isPinned[coordIndex(q, 0, n)]) continue;
     for (int i = 0; i < 3; ++i) {
       const double centre = diagonal[q].m[4 * i];
-      const double radius = off[coordIndex(q, i, n)] + offSum(diagonal[q], i) - std::fabs(centre);
+      const double radius =
+          sums.off[coordIndex(q, i, n)] + offSum(diagonal[q], i) - std::fabs(centre);
       if (!std::isfinite(centre + radius)) return {NAN, NAN};
       out.lower = std::min(out.lower, centre - radius);
       out.upper = std::max(out.upper, centre + radius);

@@ -39,7 +39,15 @@ constexpr std::size_t kMostObjBytes = std::size_t(64) << 20;
 // A TetGen mesh's limits (io/tetmesh.h): each of its .node and .ele files at most this long, and
 // at most this many tetrahedra (a body's points are kMostScenePoints at most, model/body.h).
 constexpr std::size_t kMostTetMeshBytes = std::size_t(256) << 20;
-constexpr std::size_t kMostMeshTetrahedra = 6000000;
+constexpr std::size_t kMostMeshTetrahedra = 2000000;
+// The smallest tetrahedron a mesh may hold, m (its longest edge): below it a coordinate's
+// rounding is the element's size.
+constexpr double kSmallestTetrahedron = 1e-6;
+// A material's density (docs/scenes.md, "Finite elements"): one whose points' lumped masses could
+// underflow, or beyond any solid's, is a mistake (a unit), never a jelly. (Young's modulus is held
+// by every scene number's 1e12.)
+constexpr double kSmallestDensity = 1e-3;  // kg/m^3 (air: 1.2)
+constexpr double kLargestDensity = 1e5;    // kg/m^3 (osmium: 22,590)
 
 // ---- Runs ------------------------------------------------------------------------------------
 

@@ -191,6 +191,10 @@ Material readMaterial(const Reader& r, const toml::table& t, const std::string& 
            "must be from 0 to " + Reader::textOf(kLargestPoissonRatio) +
                " (at 0.5 a solid could not change its volume at all)");
   m.density = *r.number(t, path, "density", 0, true);
+  if (m.density < kSmallestDensity || m.density > kLargestDensity)
+    r.fail(*t.get("density"), path + "density",
+           "must be from " + Reader::textOf(kSmallestDensity) + " to " +
+               Reader::textOf(kLargestDensity) + " kg/m^3");
   m.massDamping = r.number(t, path, "mass_damping", 0, false).value_or(0);
   m.stiffnessDamping = r.number(t, path, "stiffness_damping", 0, false).value_or(0);
   return m;

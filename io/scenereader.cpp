@@ -287,6 +287,9 @@ void readPins(const Reader& r, const toml::table& root, const Body& body, const 
       }
     } else {
       const Body& grid = *target.grid;
+      if (grid.gridless())
+        r.fail(t, path.substr(0, path.size() - 1),
+               "a TetGen mesh has no grid to give i, j, k of: pin a region (lower, upper)");
       const auto is = indexRange(r, t, path, "i", grid.nx),
                  js = indexRange(r, t, path, "j", grid.ny),
                  ks = indexRange(r, t, path, "k", grid.nz);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string_view>
@@ -174,6 +175,11 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
                e3 = nodes.points[t[3]] - x0;
     double volume = dot(e1, cross(e2, e3)) / 6;
     const double edge = std::max({length(e1), length(e2), length(e3)});
+    if (!(edge >= kSmallestTetrahedron)) {
+      char what[64];
+      std::snprintf(what, sizeof what, "a tetrahedron under %g m across", kSmallestTetrahedron);
+      in.fail(what, field);
+    }
     if (!(std::fabs(volume) > 1e-12 * edge * edge * edge))
       in.fail("a tetrahedron of no volume (its four points lie in a plane)", field);
     if (volume < 0) std::swap(t[2], t[3]), volume = -volume;

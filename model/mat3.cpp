@@ -90,6 +90,7 @@ PolarDecomposition polarDecomposition(const Mat3x3& f) {
   diagonal.m[0] = sigma[0], diagonal.m[4] = sigma[1], diagonal.m[8] = sigma[2];
   out.stretch = sorted * diagonal * transpose(sorted);
   out.singular = {sigma[0], sigma[1], sigma[2]};
+  out.axes = sorted;
   return out;
 }
 

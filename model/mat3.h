@@ -111,9 +111,11 @@ inline Mat3x3 unitMatrix(int row, int column) {
 
 // The rotation R and the symmetric S of F = R S with det R = +1 (for det F < 0, S has one negative
 // eigenvalue: the one of the smallest magnitude), from the eigenvectors of F^T F (Jacobi's
-// rotations). Also S's eigenvalues, F's signed singular values, largest first.
+// rotations). Also S's eigenvalues, F's signed singular values, largest first, and S's
+// eigenvectors, the columns of `axes` (a rotation) in the same order: S = axes diag(singular)
+// axes^T.
 struct PolarDecomposition {
-  Mat3x3 rotation, stretch;
+  Mat3x3 rotation, stretch, axes;
   Vec3 singular;
 };
 PolarDecomposition polarDecomposition(const Mat3x3& f);

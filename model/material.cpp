@@ -51,25 +51,19 @@ StressDerivative::StressDerivative(MaterialKind kind, Lame lame, const Mat3x3& f
   if (kind != MaterialKind::Corotated) return;
   const PolarDecomposition polar = polarDecomposition(f);
   rotation_ = polar.rotation;
-  // (tr S I - S) has eigenvalues s1 + s2, s0 + s2, s0 + s1 on S's eigenvectors.
+  // (tr S I - S) has eigenvalues s1 + s2, s0 + s2, s0 + s1 on S's eigenvectors; its inverse, each
+  // eigenvalue kept above the floor (where an inverted or collapsed element's rotation is
+  // undefined, the derivative stays finite).
   const double s[3] = {polar.singular.x, polar.singular.y, polar.singular.z};
-  const double floor = 1e-6 * std::max(std::fabs(s[0]), 1e-300);
-  Mat3x3 m = trace(polar.stretch) * identity3() - polar.stretch;
-  const double smallest = s[1] + s[2];
-  if (smallest < floor) {
-    // The smallest eigenvalue belongs to S's eigenvector e0 (S e0 = s0 e0): the direction of the
-    // largest column of (S - s1 I)(S - s2 I). Lift it to the floor.
-    const Mat3x3 p = (polar.stretch - s[1] * identity3()) * (polar.stretch - s[2] * identity3());
-    Vec3 e0 = p.column(0);
-    for (int c = 1; c < 3; ++c)
-      if (length(p.column(c)) > length(e0)) e0 = p.column(c);
-    double len;
-    e0 = direction(e0, &len);
-    const double v[3] = {e0.x, e0.y, e0.z};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) m(r, c) += (floor - smallest) * v[r] * v[c];
-  }
-  solve_ = inverse(m);
+  const double floor = std::max(kSmallestSingularSum * std::fabs(s[0]), kSmallestSingularSum);
+  const double inverse[3] = {1 / std::max(s[1] + s[2], floor), 1 / std::max(s[0] + s[2], floor),
+                             1 / std::max(s[0] + s[1], floor)};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k) sum += polar.axes(r, k) * inverse[k] * polar.axes(c, k);
+      solve_(r, c) = sum;
+    }
 }
 
 Mat3x3 StressDerivative::apply(const Mat3x3& df) const {

@@ -60,8 +60,10 @@ Mat3x3 firstPiola(MaterialKind kind, Lame lame, const Mat3x3& f);
 
 // The derivative of P at F, applied to changes dF: dP = dP/dF : dF, exactly (for the corotated,
 // with dR = R skew(w), (tr S I - S) w = 2 axial(R^T dF); where two singular values sum to under
-// 1e-6 of the largest, the sum is taken as that, so that a nearly flat inverted element stays
-// finite). Built once per F, applied to as many dF as asked.
+// kSmallestSingularSum of the largest (or under kSmallestSingularSum), the sum is taken as that,
+// so that a flat, inverted or collapsed element's derivative stays finite). Built once per F,
+// applied to as many dF as asked.
+constexpr double kSmallestSingularSum = 1e-6;
 class StressDerivative {
  public:
   StressDerivative(MaterialKind kind, Lame lame, const Mat3x3& f);

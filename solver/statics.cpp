@@ -27,6 +27,24 @@ double largestFreeForce(const Model& model, const std::vector<double>& p,
   return largest;
 }
 
+// Solves K dx = rhs: by LDL^T where K is symmetric (elastic forces, springs, pins), by LU where it
+// is not (friction, dampers at a contact) or LDL^T fails. False when K is singular.
+bool solveStiffness(const SparseMatrix& k, const Eigen::VectorXd& rhs, Eigen::VectorXd* dx) {
+  const SparseMatrix asymmetry = k - SparseMatrix(k.transpose());
+  const bool symmetric = asymmetry.norm() <= 1e-12 * k.norm();
+  if (symmetric) {
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt(k);
+    if (ldlt.info() == Eigen::Success) {
+      *dx = ldlt.solve(rhs);
+      if (ldlt.info() == Eigen::Success && dx->allFinite()) return true;
+    }
+  }
+  Eigen::SparseLU<SparseMatrix> lu(k);
+  if (lu.info() != Eigen::Success) return false;
+  *dx = lu.solve(rhs);
+  return lu.info() == Eigen::Success && dx->allFinite();
+}
+
 }  // namespace
 
 StaticSolution solveStatic(const Model& model, const State& start, int maxSteps) {
@@ -53,12 +71,7 @@ StaticSolution solveStatic(const Model& model, const State& start, int maxSteps)
     Eigen::VectorXd rhs(3 * n);
     for (int c = 0; c < 3 * n; ++c) rhs[c] = pinned[c] ? 0.0 : force[c];
     Eigen::VectorXd dx;
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt(k);
-    if (ldlt.info() == Eigen::Success) dx = ldlt.solve(rhs);
-    if (ldlt.info() != Eigen::Success || !dx.allFinite()) {
-      Eigen::SparseLU<SparseMatrix> lu(k);
-      dx = lu.solve(rhs);
-    }
+    if (!solveStiffness(k, rhs, &dx)) break;  // singular: nothing holds the body
     double scale = 1, moved = 0;
     std::vector<double> trialForce;
     for (int halving = 0; halving <= 20; ++halving, scale *= 0.5) {

@@ -69,6 +69,19 @@ TEST(Materials, StressIsTheGradientOfTheEnergyAndItsDerivativeExact) {
     }
 }
 
+// The corotated stress derivative stays finite where the rotation is undefined: a reflection
+// (two singular values summing to 0), F = -I and a collapsed element (F = 0).
+TEST(Materials, TheCorotatedDerivativeIsFiniteWhereTheRotationIsUndefined) {
+  Mat3x3 reflection = identity3();
+  reflection(2, 2) = -1;
+  for (const Mat3x3& f : {reflection, -1.0 * identity3(), Mat3x3{}}) {
+    const StressDerivative derivative(MaterialKind::Corotated, kLame, f);
+    for (int e = 0; e < 9; ++e)
+      for (double value : derivative.apply(unitMatrix(e / 3, e % 3)).m)
+        ASSERT_TRUE(std::isfinite(value));
+  }
+}
+
 // At rest and under any rotation both materials store nothing and pull nothing; at small strain
 // both give Lame's stress, 2 mu eps + lambda tr(eps) I.
 TEST(Materials, RotationsAreFreeAndSmallStrainIsLames) {
@@ -316,6 +329,14 @@ TEST(Elements, TheStabilityAnalysisSeesNoGrowingModeAtRest) {
   EXPECT_GT(report.rest.highestFrequency, 100);
   EXPECT_NEAR(report.initial.highestFrequency, report.rest.highestFrequency,
               1e-6 * report.rest.highestFrequency);
+  // The quick bound of large bodies (Gershgorin's, from the Newton blocks, the elements' coupling
+  // blocks among them) is below the analysis's limit, and not far below.
+  const Model model = makeModel(file.world, file.state);
+  const RowSumBound bound = rowSumBound(model, file.state, Integrator::RK4);
+  const double limit = report.critical(Integrator::RK4);
+  EXPECT_LE(bound.limit, limit);
+  EXPECT_GT(bound.limit, 0.2 * limit);
+  EXPECT_GE(bound.fastest, report.rest.highestFrequency);
 }
 
 // The springs fitted to a material: the lattice's cubic stiffnesses, summed spring by spring over
@@ -554,6 +575,31 @@ TEST(TetMeshes, CorruptedFilesAreReadOrRefusedInOneLine) {
   EXPECT_GT(refused, 1000);
 }
 
+// A TetGen jelly (the mould of scenes/) pinned by grid indices, which it has not; a tetrahedron
+// under a micrometre.
+TEST(TetMeshes, AMeshHasNoGridToPinAndNoTetrahedronUnderAMicrometre) {
+  const std::string scene =
+      std::string("[jelly]\nshape = \"mesh\"\nmesh = \"") + JELLO_SOURCE_DIR +
+      "/scenes/models/jelly-mould-coarse.1.node\"\nmaterial = \"neohookean\"\n"
+      "youngs_modulus = 5e4\npoisson_ratio = 0.4\ndensity = 1000\n";
+  const WorldFile file = parseScene(scene, "s.toml", "");
+  EXPECT_EQ(file.state.points(), 674);
+  try {
+    parseScene(scene + "[[pin]]\ni = [0, 0]\n", "s.toml", "");
+    ADD_FAILURE() << "pinned by index";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "s.toml:8: a TetGen mesh has no grid to give i, j, k of: pin a region (lower, upper) "
+              "(pin[1])");
+  }
+  const std::string nodes =
+      "8 3 0 0\n1 0 0 0\n2 1e-7 0 0\n3 0 1e-7 0\n4 1e-7 1e-7 0\n5 0 0 1e-7\n6 1e-7 0 1e-7\n"
+      "7 0 1e-7 1e-7\n8 1e-7 1e-7 1e-7\n";
+  EXPECT_NE(refusal(nodes, kCubeElements).find("a tetrahedron under 1e-06 m across"),
+            std::string::npos)
+      << refusal(nodes, kCubeElements);
+}
+
 std::string sceneRefusal(const std::string& jellyKeys) {
   try {
     parseScene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n" + jellyKeys, "s.toml", "");
@@ -580,6 +626,14 @@ TEST(TetMeshes, ImpossibleMaterialsAreRefused) {
             "s.toml:8: a jelly of finite elements takes its mass from its density (jelly.mass)");
   EXPECT_EQ(sceneRefusal("material = \"rubber\"\n"),
             "s.toml:4: expected \"springs\", \"corotated\" or \"neohookean\" (jelly.material)");
+  EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = 0.3\n" + "stiffness_damping = -1\n"),
+            "s.toml:8: must be at least 0 (jelly.stiffness_damping)");
+  EXPECT_EQ(sceneRefusal("material = \"neohookean\"\nyoungs_modulus = 1e14\npoisson_ratio = 0.3\n"
+                         "density = 1000\n"),
+            "s.toml:5: is beyond 1e+12 in magnitude (jelly.youngs_modulus)");
+  EXPECT_EQ(sceneRefusal("material = \"neohookean\"\nyoungs_modulus = 1e4\npoisson_ratio = 0.3\n"
+                         "density = 1e-300\n"),
+            "s.toml:7: must be from 0.001 to 100000 kg/m^3 (jelly.density)");
   EXPECT_EQ(sceneRefusal("youngs_modulus = 1e4\n"),
             "s.toml:4: belongs to a jelly of finite elements (material = \"corotated\" or "
             "\"neohookean\") (jelly.youngs_modulus)");
