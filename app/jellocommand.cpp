@@ -51,9 +51,12 @@ Outcome staticRest(const JelloCommand& c) {
   const StaticSolution rest = solveStatic(model, file.state);
   const int n = model.points();
   if (!rest.converged || findDivergedPoint(rest.state) >= 0)
-    return diverged(c.run.worldPath + ": no rest found after " + std::to_string(rest.steps) +
-                    " Newton steps (largest force left " + textf("%.3g", rest.largestForce) +
-                    " N): the body may have no rest under these forces (nothing holds it)");
+    return diverged(c.run.worldPath + ": no rest found near the start after " +
+                    std::to_string(rest.steps) + " Newton steps (largest force left " +
+                    textf("%.3g", rest.largestForce) +
+                    " N): --static looks for a rest from where the body starts; one that must "
+                    "fall or swing far to reach it (not yet touching what will hold it) has "
+                    "none it can find: run it instead");
   int farthest = 0;
   double moved = 0;
   Vec3 mean;

@@ -3,6 +3,7 @@
 #include "io/jellyreader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -71,7 +72,10 @@ Body readShape(const Reader& r, const toml::table& t, const std::string& path,
       if (t.get("spacing"))
         r.fail(*t.get("spacing"), path + "spacing",
                "a TetGen mesh has its own points; spacing is for voxels");
-      Body body = readTetMesh(r.pathFromScene(*file));
+      const std::string nodePath = r.pathFromScene(*file);
+      std::string nodeText, eleText, why;
+      if (!readTetMeshFiles(nodePath, &nodeText, &eleText, &why)) r.fail(*node, path + "mesh", why);
+      Body body = parseTetMesh(nodeText, nodePath, eleText, elementFileOf(nodePath));
       body.what = "the tetrahedra of " + *file;
       return body;
     }
@@ -158,7 +162,9 @@ Material readMaterial(const Reader& r, const toml::table& t, const std::string& 
   const char* kElementKeys[] = {"youngs_modulus", "poisson_ratio", "density", "mass_damping",
                                 "stiffness_damping"};
   if (node) {
-    const std::optional<std::string> name = node->value<std::string>();
+    std::optional<std::string> name = node->value<std::string>();
+    if (name)
+      for (char& c : *name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const MaterialInfo* found = nullptr;
     for (const MaterialInfo& info : kMaterials)
       if (name && *name == info.name) found = &info;

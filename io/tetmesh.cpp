@@ -257,15 +257,19 @@ Body parseTetMesh(const std::string& nodeText, const std::string& nodeName,
   return body;
 }
 
-Body readTetMesh(const std::string& nodePath) {
-  const std::string elePath = elementFileOf(nodePath);
-  std::string nodeText, eleText, why;
+bool readTetMeshFiles(const std::string& nodePath, std::string* nodeText, std::string* eleText,
+                      std::string* why) {
   const std::string limit = std::to_string(kMostTetMeshBytes >> 20) + " MB";
-  if (!readRegularFile(nodePath, kMostTetMeshBytes, "a TetGen .node file", limit, &nodeText, &why))
-    throw InputError(why);
-  if (!readRegularFile(elePath, kMostTetMeshBytes, "a TetGen .ele file", limit, &eleText, &why))
-    throw InputError(why);
-  return parseTetMesh(nodeText, nodePath, eleText, elePath);
+  return readRegularFile(nodePath, kMostTetMeshBytes, "a TetGen .node file", limit, nodeText,
+                         why) &&
+         readRegularFile(elementFileOf(nodePath), kMostTetMeshBytes, "a TetGen .ele file", limit,
+                         eleText, why);
+}
+
+Body readTetMesh(const std::string& nodePath) {
+  std::string nodeText, eleText, why;
+  if (!readTetMeshFiles(nodePath, &nodeText, &eleText, &why)) throw InputError(why);
+  return parseTetMesh(nodeText, nodePath, eleText, elementFileOf(nodePath));
 }
 
 }  // namespace jello

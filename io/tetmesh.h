@@ -29,6 +29,10 @@ std::string elementFileOf(const std::string& nodePath);
 // quadratic mesh), a node number the .node file does not have, a tetrahedron with a node twice or
 // of no volume (under 1e-12 of its edges' cube), and a point no tetrahedron uses.
 Body readTetMesh(const std::string& nodePath);
+// The two files' texts alone: false with *why (one line naming the file) when either cannot be
+// read (missing, not a regular file, over kMostTetMeshBytes).
+bool readTetMeshFiles(const std::string& nodePath, std::string* nodeText, std::string* eleText,
+                      std::string* why);
 // The same from the two files' texts; the names stand for the files in messages.
 Body parseTetMesh(const std::string& nodeText, const std::string& nodeName,
                   const std::string& eleText, const std::string& eleName);

@@ -56,27 +56,47 @@ ElementTerm::ElementTerm(const Body& body, std::vector<Material> byPart,
       for (int q = first; q < first + own.count(); ++q) damping_[q] = m.massDamping * pointMass[q];
     }
   }
+  indexElements(n);
+}
+
+void ElementTerm::indexElements(int n) {
   firstElement_.assign(n, -1);
   lastElement_.assign(n, -1);
-  std::vector<std::pair<int, int>> blocks;
+  // Each point's elements (CSR), then its row of the Jacobian: the points its elements join it
+  // to, sorted; the rows one after another are the couplings, (row, column) ascending.
+  std::vector<int> start(n + 1, 0);
+  for (int e = 0; e < elementCount(); ++e)
+    for (int q : elements_[e].t) {
+      if (firstElement_[q] < 0) firstElement_[q] = e;
+      lastElement_[q] = e;
+      ++start[q + 1];
+    }
+  for (int q = 0; q < n; ++q) start[q + 1] += start[q];
+  std::vector<int> of(start[n]), at(start.begin(), start.end() - 1);
+  for (int e = 0; e < elementCount(); ++e)
+    for (int q : elements_[e].t) of[at[q]++] = e;
+  std::vector<int> rowStart(n + 1, 0), row;
+  couplings_.clear();
+  for (int q = 0; q < n; ++q) {
+    row.clear();
+    for (int k = start[q]; k < start[q + 1]; ++k)
+      for (int c : elements_[of[k]].t) row.push_back(c);
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    rowStart[q] = static_cast<int>(couplings_.size());
+    for (int c : row) couplings_.push_back({q, c});
+  }
+  rowStart[n] = static_cast<int>(couplings_.size());
+  slots_.resize(elements_.size());
   for (int e = 0; e < elementCount(); ++e)
     for (int a = 0; a < 4; ++a) {
       const int q = elements_[e].t[a];
-      if (firstElement_[q] < 0) firstElement_[q] = e;
-      lastElement_[q] = e;
-      for (int c = 0; c < 4; ++c) blocks.push_back({q, elements_[e].t[c]});
-    }
-  std::sort(blocks.begin(), blocks.end());
-  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
-  couplings_ = std::move(blocks);
-  slots_.resize(elements_.size());
-  for (int e = 0; e < elementCount(); ++e)
-    for (int a = 0; a < 4; ++a)
-      for (int c = 0; c < 4; ++c) {
-        const std::pair<int, int> key{elements_[e].t[a], elements_[e].t[c]};
+      const auto first = couplings_.begin() + rowStart[q],
+                 last = couplings_.begin() + rowStart[q + 1];
+      for (int c = 0; c < 4; ++c)
         slots_[e][4 * a + c] = static_cast<int>(
-            std::lower_bound(couplings_.begin(), couplings_.end(), key) - couplings_.begin());
-      }
+            std::lower_bound(first, last, std::pair{q, elements_[e].t[c]}) - couplings_.begin());
+    }
 }
 
 Mat3x3 ElementTerm::gradientOf(const Element& el, const double* a) const {

@@ -63,6 +63,8 @@ class ElementTerm final : public ForceTerm {
   // The element's stress P + P_d at (p, v).
   Mat3x3 stress(const Element& el, const double* p, const double* v) const;
   Mat3x3 gradientOf(const Element& el, const double* a) const;
+  // The first and last element of each point, and the Jacobian's couplings and slots.
+  void indexElements(int n);
 
   std::vector<Element> elements_;
   std::vector<Material> material_;  // by part

@@ -584,6 +584,13 @@ TEST(TetMeshes, AMeshHasNoGridToPinAndNoTetrahedronUnderAMicrometre) {
       "youngs_modulus = 5e4\npoisson_ratio = 0.4\ndensity = 1000\n";
   const WorldFile file = parseScene(scene, "s.toml", "");
   EXPECT_EQ(file.state.points(), 674);
+  try {  // a .node file that is not there: refused at the scene's key
+    parseScene("[jelly]\nshape = \"mesh\"\nmesh = \"/no/such.1.node\"\n", "s.toml", "");
+    ADD_FAILURE() << "a missing mesh read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "s.toml:3: /no/such.1.node: cannot open: No such file or directory (jelly.mesh)");
+  }
   try {
     parseScene(scene + "[[pin]]\ni = [0, 0]\n", "s.toml", "");
     ADD_FAILURE() << "pinned by index";
@@ -624,6 +631,8 @@ TEST(TetMeshes, ImpossibleMaterialsAreRefused) {
             "s.toml:4: a jelly of finite elements needs its density (jelly.density)");
   EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = 0.3\nmass = 2\n"),
             "s.toml:8: a jelly of finite elements takes its mass from its density (jelly.mass)");
+  EXPECT_EQ(sceneRefusal("material = \"NeoHookean\"\n"),
+            "s.toml:4: a jelly of finite elements needs its youngs_modulus (jelly.youngs_modulus)");
   EXPECT_EQ(sceneRefusal("material = \"rubber\"\n"),
             "s.toml:4: expected \"springs\", \"corotated\" or \"neohookean\" (jelly.material)");
   EXPECT_EQ(sceneRefusal(fem + "poisson_ratio = 0.3\n" + "stiffness_damping = -1\n"),
