@@ -16,6 +16,7 @@
 #include "io/inputerror.h"
 #include "io/scenereader.h"
 #include "io/tetmesh.h"
+#include "jellyscenes.h"
 #include "model/model.h"
 #include "model/springfit.h"
 #include "solver/integrators.h"
@@ -374,34 +375,13 @@ TEST(Elements, FittedSpringsGiveTheMaterialsYoungsModulus) {
 // A jelly of elements meets a jelly of springs head-on, through contact between bodies, without
 // gravity or walls: the total momentum stays what it was (to rounding) while each jelly's changes.
 TEST(Elements, AJellyOfElementsCollidesWithOneOfSpringsKeepingMomentum) {
-  const WorldFile file = parseScene(R"(
-dt = 0.0002
-[bounds]
-present = false
-[contact]
-stiffness = 2000
-damping = 0.3
-[[jelly]]
-shape = "lattice"
-size = [4, 4, 4]
-spacing = 0.1
-offset = [-0.2, 0.0, 0.0]
-velocity = [1.0, 0.0, 0.0]
-material = "corotated"
-youngs_modulus = 2e4
-poisson_ratio = 0.3
-density = 100
-stiffness_damping = 0.001
-[[jelly]]
-shape = "lattice"
-size = [4, 4, 4]
-spacing = 0.1
-offset = [0.2, 0.03, -0.02]
-velocity = [-1.0, 0.0, 0.0]
-stiffness = 500
-damping = 0.3
-)",
-                                    "mixed.toml", "");
+  // The head-on scene of the contact tests, its first jelly made of elements.
+  std::string text = test::kHeadOn;
+  const std::string springs = "stiffness = 500\ndamping = 0.3\n";
+  text.replace(text.find(springs), springs.size(),
+               "material = \"corotated\"\nyoungs_modulus = 2e4\npoisson_ratio = 0.3\n"
+               "density = 100\nstiffness_damping = 0.001\n");
+  const WorldFile file = test::scene(text);
   const Model model = makeModel(file.world, file.state);
   ASSERT_NE(model.forces.elements, nullptr);
   const int n = model.points();
