@@ -73,7 +73,7 @@ Body readShape(const Reader& r, const toml::table& t, const std::string& path,
         r.fail(*t.get("spacing"), path + "spacing",
                "a TetGen mesh has its own points; spacing is for voxels");
       const std::string nodePath = r.pathFromScene(*file);
-      std::string nodeText, eleText, why;
+      std::string nodeText, eleText;
       if (!readTetMeshFiles(nodePath, &nodeText, &eleText, &why)) r.fail(*node, path + "mesh", why);
       Body body = parseTetMesh(nodeText, nodePath, eleText, elementFileOf(nodePath));
       body.what = "the tetrahedra of " + *file;
