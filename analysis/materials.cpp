@@ -58,12 +58,7 @@ World withBody(const World& base, std::shared_ptr<const Body> body, const Materi
   spec->pinned = std::move(pinned);
   if (!material.elements()) {
     spec->springs = fit.constants;
-    double volume = 0;
-    std::vector<double> rest(3 * std::size_t(body->count()));
-    for (int q = 0; q < body->count(); ++q)
-      store(rest.data(), q, body->count(), body->restPosition(q));
-    for (const Tet& t : tetrahedraOf(*body)) volume += tetVolume(t, rest.data(), body->count());
-    w.mass = material.density * volume / body->count();
+    w.mass = material.density * restVolume(*body) / body->count();
     w.kElastic = fit.constants.k[0];
     w.dElastic = fit.constants.d[0];
   }

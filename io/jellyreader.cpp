@@ -220,13 +220,7 @@ std::shared_ptr<const Body> elementBody(const Reader& r, const toml::table& t,
 }
 
 // The mass of a jelly of elements at rest, kg: its density times its tetrahedra's volume.
-double elementMass(const Body& body, const Material& m) {
-  std::vector<double> rest(3 * std::size_t(body.count()));
-  for (int q = 0; q < body.count(); ++q) store(rest.data(), q, body.count(), body.restPosition(q));
-  double volume = 0;
-  for (const Tet& tet : tetrahedraOf(body)) volume += tetVolume(tet, rest.data(), body.count());
-  return m.density * volume;
-}
+double elementMass(const Body& body, const Material& m) { return m.density * restVolume(body); }
 
 // One jelly's table: its body (null: the course cube), placed state, mass and springs, starting
 // from the world's.

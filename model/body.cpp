@@ -309,6 +309,20 @@ double tetVolume(const Tet& t, const double* p, int n) {
   return dot(load(p, t[1], n) - x0, cross(load(p, t[2], n) - x0, load(p, t[3], n) - x0)) / 6;
 }
 
+std::vector<double> restPositionsOf(const Body& body) {
+  const int n = body.count();
+  std::vector<double> rest(3 * std::size_t(n));
+  for (int q = 0; q < n; ++q) store(rest.data(), q, n, body.restPosition(q));
+  return rest;
+}
+
+double restVolume(const Body& body) {
+  const std::vector<double> rest = restPositionsOf(body);
+  double volume = 0;
+  for (const Tet& t : tetrahedraOf(body)) volume += tetVolume(t, rest.data(), body.count());
+  return volume;
+}
+
 const Body& courseBody() {
   static const Body body = latticeBody(kLatticeSize, kLatticeSize, kLatticeSize, kRestSpacing);
   return body;

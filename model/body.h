@@ -155,6 +155,10 @@ const Body& courseBody();
 // same in every voxel so that neighbours' faces match (a conforming mesh), in voxel order; a
 // mesh's own. None for a sheet.
 std::vector<Tet> tetrahedraOf(const Body& body);
+// The body's rest positions (restPosition) as a per-point array, m.
+std::vector<double> restPositionsOf(const Body& body);
+// The volume of the body's tetrahedra at rest (tetrahedraOf; a body that is not joined), m^3.
+double restVolume(const Body& body);
 // A tetrahedron's volume at positions p (a per-point array of n points), m^3: positive when it is
 // oriented as at rest, negative when inverted.
 double tetVolume(const Tet& t, const double* p, int n);

@@ -143,10 +143,14 @@ double ElementTerm::vonMises(int e, const double* p) const {
 void ElementTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                               double* force) const {
   if (points.begin >= points.end) return;
-  int lo = elementCount(), hi = -1;
-  for (int q = points.begin; q < points.end; ++q)
-    if (firstElement_[q] >= 0)
-      lo = std::min(lo, firstElement_[q]), hi = std::max(hi, lastElement_[q]);
+  // The elements with a point in the range: all of them for the whole body, else those between
+  // its points' first and last.
+  const bool whole = points.begin == 0 && points.end == pointCount();
+  int lo = whole ? 0 : elementCount(), hi = whole ? elementCount() - 1 : -1;
+  if (!whole)
+    for (int q = points.begin; q < points.end; ++q)
+      if (firstElement_[q] >= 0)
+        lo = std::min(lo, firstElement_[q]), hi = std::max(hi, lastElement_[q]);
   auto inRange = [&](int q) { return q >= points.begin && q < points.end; };
   for (int e = lo; e <= hi; ++e) {
     const Element& el = elements_[e];

@@ -44,12 +44,14 @@ void addField(const World& world, int n, KernelChoice choice, ForceTerms* forces
 
 // What a scene file adds after the course's terms (so that a scene that adds nothing sums as the
 // course world does): gravity, then the obstacles in the file's order.
-void addSceneTerms(const World& world, int n, const SceneSpec& spec, ForceTerms* forces) {
+void addSceneTerms(const World& world, const std::vector<double>& pointMass, const SceneSpec& spec,
+                   ForceTerms* forces) {
+  const int n = static_cast<int>(pointMass.size());
   if (spec.gravity.x != 0 || spec.gravity.y != 0 || spec.gravity.z != 0) {
     if (spec.jellies.empty() && !hasElements(world))
       forces->terms.push_back(std::make_unique<GravityTerm>(n, spec.gravity, world.mass));
     else
-      forces->terms.push_back(std::make_unique<GravityTerm>(spec.gravity, pointMassesOf(world)));
+      forces->terms.push_back(std::make_unique<GravityTerm>(spec.gravity, pointMass));
   }
   for (const Obstacle& obstacle : spec.obstacles)
     forces->terms.push_back(std::make_unique<ObstacleTerm>(n, obstacle));
@@ -71,8 +73,9 @@ void addBodyContact(const Body& body, const SceneSpec& spec, ForceTerms* forces)
 }
 
 // The terms of `world` in the order their forces are summed. The field term reads the nodes of
-// `world`, which must be the model's own.
-ForceTerms buildForceTerms(const World& world, const State& initial, KernelChoice choice) {
+// `world`, which must be the model's own; `pointMass` is each point's (pointMassesOf).
+ForceTerms buildForceTerms(const World& world, const State& initial,
+                           const std::vector<double>& pointMass, KernelChoice choice) {
   ForceTerms forces;
   const bool general = choice == KernelChoice::General;
   forces.culling = !general;
@@ -90,7 +93,7 @@ ForceTerms buildForceTerms(const World& world, const State& initial, KernelChoic
   forces.springs = springs.get();
   forces.terms.push_back(std::move(springs));
   if (hasElements(world)) {
-    auto elements = std::make_unique<ElementTerm>(body, materialsOf(world), pointMassesOf(world));
+    auto elements = std::make_unique<ElementTerm>(body, materialsOf(world), pointMass);
     forces.elements = elements.get();
     forces.terms.push_back(std::move(elements));
   }
@@ -113,7 +116,7 @@ ForceTerms buildForceTerms(const World& world, const State& initial, KernelChoic
                                   : "plane (none in the file)");
   }
   addField(world, n, choice, &forces);
-  if (spec) addSceneTerms(world, n, *spec, &forces);
+  if (spec) addSceneTerms(world, pointMass, *spec, &forces);
   return forces;
 }
 
@@ -173,8 +176,7 @@ std::vector<double> pointMassesOf(const World& world) {
     const Body& own = body.joined() ? *body.parts[part] : body;
     const int first = body.joined() ? body.partFirst[part] : 0;
     for (int q = first; q < first + own.count(); ++q) mass[q] = 0;
-    std::vector<double> rest(3 * std::size_t(own.count()));
-    for (int q = 0; q < own.count(); ++q) store(rest.data(), q, own.count(), own.restPosition(q));
+    const std::vector<double> rest = restPositionsOf(own);
     for (const Tet& t : tetrahedraOf(own)) {
       const double share = materials[part].density * tetVolume(t, rest.data(), own.count()) / 4;
       for (int q : t) mass[first + q] += share;
@@ -191,9 +193,9 @@ Model makeModel(const World& world, const State& initial, KernelChoice choice) {
   JELLO_ASSERT(initial.points() == bodyOf(world).count());
   Model model;
   model.world = world;
-  model.forces = buildForceTerms(model.world, initial, choice);
-  if (world.scene) model.pinned = world.scene->pinned;
   model.pointMass = pointMassesOf(model.world);
+  model.forces = buildForceTerms(model.world, initial, model.pointMass, choice);
+  if (world.scene) model.pinned = world.scene->pinned;
   const auto& mass = model.pointMass;
   if (std::all_of(mass.begin(), mass.end(), [&](double m) { return m == mass[0]; }))
     model.commonMass = mass.empty() ? 0 : mass[0];
