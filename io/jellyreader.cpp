@@ -135,6 +135,20 @@ void readByKind(const Reader& r, const toml::table& t, const std::string& path, 
   byKind->fill(*all);
 }
 
+// The keys that gave the jelly's shape, once readBody has checked them.
+JellyRecipe recipeOf(const Reader& r, const toml::table& t, const std::string& path) {
+  JellyRecipe recipe;
+  recipe.shape = t.get("shape") ? *t.get("shape")->value<std::string>() : "";
+  if (const toml::array* size = t.get("size") ? t.get("size")->as_array() : nullptr)
+    for (int i = 0; i < 3; ++i)
+      recipe.size[i] = static_cast<int>(*size->get(i)->value<std::int64_t>());
+  recipe.radius = r.number(t, path, "radius", 0, true).value_or(0);
+  if (const toml::node* mesh = t.get("mesh"))
+    recipe.mesh = r.pathFromScene(*mesh->value<std::string>());
+  recipe.spacing = r.number(t, path, "spacing", kSmallestSpacing, false);
+  return recipe;
+}
+
 // A jelly's rest placement: a shaped body centred on the origin (the middle of its grid, or of a
 // mesh's bounding box); the course cube as the default world has it.
 State placedBody(const Body& body) {
@@ -258,6 +272,7 @@ ReadJelly readOne(const Reader& r, const toml::table& t, const std::string& path
     if (!self->is_boolean()) r.fail(*self, path + "self_contact", "expected true or false");
     out.spec.selfContact = *self->value<bool>();
   }
+  out.spec.recipe = recipeOf(r, t, path);
   const Vec3 offset = r.vector(t, path, "offset").value_or(Vec3{});
   const std::optional<Vec3> velocity = r.vector(t, path, "velocity");
   for (int q = 0; q < n; ++q) {
@@ -324,6 +339,7 @@ void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneS
   if (one.perKind) spec->springs = one.spec.springs;
   spec->selfContact = one.spec.selfContact;
   spec->material = one.spec.material;
+  spec->recipe = one.spec.recipe;
 }
 
 namespace {

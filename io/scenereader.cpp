@@ -22,12 +22,9 @@
 
 namespace jello {
 
-namespace {
+namespace {}  // namespace
 
-// A scene without `world` (docs/scenes.md): RK4 at dt 0.5 ms, 10 steps a frame, the course's
-// springs and contacts (kElastic 500, dElastic 0.25, kCollision 1000, dCollision 0.25) and mass
-// (1/512 kg a point), the cube's rest lattice centred on the origin, at rest; no field, no plane.
-WorldFile defaultWorld() {
+WorldFile defaultSceneWorld() {
   WorldFile file;
   file.run = {Integrator::RK4, 0.0005, 10};
   World& w = file.world;
@@ -44,10 +41,12 @@ WorldFile defaultWorld() {
   return file;
 }
 
+namespace {
+
 // The course world a scene starts from, its path relative to the scene's folder.
 WorldFile baseWorld(const Reader& r, const toml::table& root) {
   const toml::node* node = root.get("world");
-  if (!node) return defaultWorld();
+  if (!node) return defaultSceneWorld();
   const std::optional<std::string> path = node->value<std::string>();
   if (!path || path->empty()) r.fail(*node, "world", "expected the path of a course world (.w)");
   const std::string full = r.pathFromScene(*path);
@@ -192,6 +191,7 @@ Obstacle readObstacle(const Reader& r, const toml::table& t, const std::string& 
     if (!(size > 0) || !std::isfinite(size))
       r.fail(*t.get("normal"), path + "normal", "must not be zero");
     o.normal = (1 / size) * normal;
+    o.givenNormal = normal;
   }
   o.spring = readSpring(r, t, path, spring);
   o.friction = readFriction(r, t, path);
@@ -391,7 +391,9 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   readBounds(r, root, spring, spec.get());
   readObstacles(r, root, spring, spec.get());
   const Body& body = spec->body ? *spec->body : courseBody();
-  checkJellies(r, root, file, *spec);
+  // The jellies' placement is checked where it is the start: a state file replaces it (and may
+  // hold jellies in contact, as a saved run does).
+  if (!root.get("state")) checkJellies(r, root, file, *spec);
   if (const toml::node* state = root.get("state")) {
     const std::optional<std::string> path = state->value<std::string>();
     if (!path || path->empty()) r.fail(*state, "state", "expected the path of a state file (.csv)");

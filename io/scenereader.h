@@ -34,6 +34,12 @@ constexpr double kLargestSpacing = 10;
 constexpr int kMostSceneFieldResolution = 64;
 constexpr std::size_t kMostFieldExpressionBytes = 1000;
 
+// What a scene without `world` starts from (docs/scenes.md): RK4 at dt 0.5 ms, 10 steps a frame,
+// the course's springs and contacts (kElastic 500, dElastic 0.25, kCollision 1000, dCollision 0.25)
+// and mass (1/512 kg a point), the cube's rest lattice centred on the origin, at rest; no field, no
+// plane.
+WorldFile defaultSceneWorld();
+
 // Parses a scene's text; `name` is used in messages, `folder` resolves its `world` key (the
 // current folder when empty). Throws InputError.
 WorldFile parseScene(std::string_view text, const std::string& name, const std::string& folder);

@@ -46,6 +46,7 @@ struct Obstacle {
   double radius = 0;   // Sphere, m, > 0
   Vec3 lower, upper;   // Box, Container, m
   Vec3 point, normal;  // HalfSpace: a point of the plane (m) and the unit normal out of the solid
+  Vec3 givenNormal;    // HalfSpace: the normal as given, not zero (a scene written back says it)
   ContactSpring spring;
   Friction friction;
 };

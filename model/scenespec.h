@@ -5,8 +5,10 @@
 // Units: metres, seconds, kilograms; gravity in m/s^2.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/limits.h"
@@ -18,6 +20,16 @@
 
 namespace jello {
 
+// How the scene file gave a jelly's shape (its keys, docs/scenes.md), kept so that the scene can be
+// written back (io/scenewriter.h): the body is built from them once, by the reader.
+struct JellyRecipe {
+  std::string shape;              // "" (the course cube), "lattice", "sphere" or "mesh"
+  std::array<int, 3> size{};      // a lattice's points along x, y, z
+  double radius = 0;              // a sphere's, m
+  std::string mesh;               // a mesh's file (OBJ or TetGen .node), as the reader opened it
+  std::optional<double> spacing;  // m, when the file gave one
+};
+
 // One jelly of a scene with several ([[jelly]]): its points are body->parts[p]'s in the joined
 // body, its mass and springs its own.
 struct JellySpec {
@@ -25,6 +37,7 @@ struct JellySpec {
   SpringConstants springs;
   bool selfContact = false;  // its surface kept from passing through itself
   Material material;         // springs, or finite elements (model/elements.h)
+  JellyRecipe recipe;
 };
 
 // Contact between jellies, and of a jelly with itself (model/bodycontact.h): every surface point a
@@ -46,8 +59,9 @@ struct SceneSpec {
   std::vector<JellySpec> jellies;
   // Whether the one jelly keeps from passing through itself ([jelly] self_contact).
   bool selfContact = false;
-  // What the one jelly is made of ([jelly] material).
+  // What the one jelly is made of ([jelly] material), and how its shape was given.
   Material material;
+  JellyRecipe recipe;
   // Contact between bodies: there for several jellies or self-contact, else none.
   std::optional<BodyContactSpec> bodyContact;
   Vec3 gravity;                     // m/s^2, on every point, everywhere

@@ -27,7 +27,7 @@ double mechanicalEnergy(const Model& model, const State& state) {
   return energy;
 }
 
-DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(model) {
+DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : model_(&model) {
   JELLO_ASSERT(initial.points() == model.points());
   // The reader's rule, every mass > 0: the energy rate divides by the lightest.
   const double lightest = *std::min_element(model.pointMass.begin(), model.pointMass.end());
@@ -39,7 +39,7 @@ DivergenceGuard::DivergenceGuard(const Model& model, const State& initial) : mod
 }
 
 void DivergenceGuard::restart(const State& state, double time) {
-  rootEnergy_ = std::sqrt(mechanicalEnergy(model_, state));
+  rootEnergy_ = std::sqrt(mechanicalEnergy(*model_, state));
   start_ = time;
 }
 
@@ -49,11 +49,11 @@ std::string DivergenceGuard::check(const State& state, double time) const {
     const int n = state.points();
     Vec3 p = load(state.p(), bad, n), v = load(state.v(), bad, n);
     bool finite = std::isfinite(dot(p, p)) && std::isfinite(dot(v, v));
-    return "point p" + model_.body().label(bad) +
+    return "point p" + model_->body().label(bad) +
            (finite ? " is more than 100 m from the origin" : " is no longer finite");
   }
   double bound = rootEnergy_ + energyRate_ * (time - start_);
-  double energy = mechanicalEnergy(model_, state);
+  double energy = mechanicalEnergy(*model_, state);
   if (energy > kEnergyMargin * bound * bound + kEnergyFloor) {
     char text[160];
     std::snprintf(text, sizeof text,

@@ -27,7 +27,7 @@ class DivergenceGuard {
   std::string check(const State& state, double time) const;
 
  private:
-  const Model& model_;
+  const Model* model_;  // a pointer, so that a simulation's change() can make a new guard
   double rootEnergy_ = 0, energyRate_ = 0, start_ = 0;
 };
 

@@ -75,11 +75,12 @@ bool Simulation::stepAndCheck(double h, double timeAfter, const Pull* pull) {
 RunOutcome Simulation::advance(long long steps, const Pull* pull) {
   if (!outcome_.ran()) return outcome_;
   for (long long i = 0; i < steps; ++i)
-    if (!stepAndCheck(dt_, static_cast<double>(step_ + 1) * dt_, pull)) break;
+    if (!stepAndCheck(dt_, timeAt(step_ + 1), pull)) break;
   return outcome_;
 }
 
 RunOutcome Simulation::advanceTo(double time) {
+  JELLO_ASSERT(stepBase_ == 0);  // counted from the start at one dt: never after change()
   const std::optional<long long> total = stepsForTime(time, dt_);
   if (!total) throw std::logic_error("advanceTo: more steps than a run may take");
   if (*total <= step_ || !outcome_.ran()) return outcome_;
@@ -97,6 +98,8 @@ void Simulation::restart(const State& start) {
   state_ = start;
   step_ = 0;
   time_ = 0;
+  timeBase_ = 0;
+  stepBase_ = 0;
   pulled_ = false;
   stepper_ = Stepper(stepper_.integrator(), tolerances_);
   guard_.restart(start, 0);
@@ -115,7 +118,21 @@ void Simulation::addVelocity(Vec3 dv) {
 void Simulation::restore(const State& state, long long step) {
   state_ = state;
   step_ = step;
-  time_ = static_cast<double>(step) * dt_;
+  time_ = timeAt(step);
+  outcome_ = {};
+}
+
+void Simulation::change(const RunSettings& run) {
+  JELLO_ASSERT(state_.points() == model_.points());
+  JELLO_ASSERT(run.dt > 0 && std::isfinite(run.dt));
+  timeBase_ = time_;
+  stepBase_ = step_;
+  dt_ = run.dt;
+  energyEvery_ = std::max<long long>(run.n, kEnergyEvery);
+  stepper_ = Stepper(run.integrator, tolerances_);
+  guard_ = DivergenceGuard(model_, state_);
+  guard_.restart(state_, time_);
+  pulled_ = false;
   outcome_ = {};
 }
 

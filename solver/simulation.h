@@ -88,6 +88,13 @@ class Simulation {
   // after a divergence), ready to advance again; the guard's bound is kept.
   void restore(const State& state, long long step);
 
+  // Goes on from the current state and time with `run`'s integrator, dt and steps per frame, after
+  // the model this simulation references was replaced in place (the window's panel assigns it a
+  // new one): a fresh stepper (VERLET and RK45 start their memory afresh, as from a state file) and
+  // a guard whose bound starts from the current state under the new model. The next steps are bit
+  // for bit a new Simulation's from this state; the time goes on from here at the new dt.
+  void change(const RunSettings& run);
+
   // Adds `dv` (m/s) to the velocity of every point the model does not pin: the viewer's push and
   // jump keys. The work done is the user's, as a pull's is: the guard's energy bound starts
   // afresh from the new state, so that the push is not taken for a divergence.
@@ -107,12 +114,18 @@ class Simulation {
 
  private:
   bool stepAndCheck(double h, double timeAfter, const Pull* pull);
+  // The time at the end of step `step`: dt a step since the last change of dt.
+  double timeAt(long long step) const {
+    return timeBase_ + static_cast<double>(step - stepBase_) * dt_;
+  }
 
   const Model& model_;
   State state_;
   double dt_;
   long long step_ = 0;
   double time_ = 0;
+  double timeBase_ = 0;     // s, the time at step stepBase_: where change() found the run
+  long long stepBase_ = 0;  // (0 and 0 until then)
   long long energyEvery_;
   bool pulled_ = false;  // the last step had a pull: the next one without restarts the bound
   Tolerances tolerances_;
