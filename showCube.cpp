@@ -223,7 +223,7 @@ SurfaceColours coloursFor(const Model& model, const State& state, Colouring colo
   return out;
 }
 
-void setUpCamera(const Camera& camera, int width, int height) {
+void setUpCamera(const Camera& camera, const DrawOptions& options, int width, int height) {
   glViewport(0, 0, width, height);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
@@ -231,7 +231,8 @@ void setUpCamera(const Camera& camera, int width, int height) {
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   // Lights are placed in eye coordinates, so the lighting follows the camera.
-  const GLfloat key[] = {-0.4f, 0.6f, 1.0f, 0.0f}, fill[] = {0.6f, -0.2f, 0.6f, 0.0f};
+  const GLfloat key[] = {options.light[0], options.light[1], options.light[2], 0.0f},
+                fill[] = {0.6f, -0.2f, 0.6f, 0.0f};
   glLightfv(GL_LIGHT0, GL_POSITION, key);
   glLightfv(GL_LIGHT1, GL_POSITION, fill);
   Vec3 eye = camera.eye();
@@ -453,7 +454,7 @@ void drawPicture(const Model& model, const State& state, const Camera& camera,
   glDisable(GL_CULL_FACE);
   glEnable(GL_NORMALIZE);
   setUpLighting();
-  setUpCamera(camera, width, height);
+  setUpCamera(camera, options, width, height);
 
   // A course world draws what it always drew, the same way: a scene's additions draw nothing
   // for it.

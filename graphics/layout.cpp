@@ -226,6 +226,7 @@ const std::vector<KeyLine>& windowKeys() {
       {"R", "real-time pacing"},
       {"SPACE", "record frames, stop"},
       {"W", "save the window as a JPEG"},
+      {"G", "the panel: change the jelly as it runs"},
       {"? K", "this help"},
       {"ESC", "quit"},
   };

@@ -5,6 +5,7 @@
 // World units are metres; +z is up. Screen coordinates for text are pixels from the top-left.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "app/pictures.h"
@@ -55,6 +56,9 @@ struct DrawOptions {
   // The value at the colour legend's end (strain, newtons for force, Pa for stress), held by the
   // viewer's `f`; 0: fitted to each frame's largest value.
   double colourScale = 0;
+  // The key light's direction in the camera's frame (x right, y up, z toward the viewer): from the
+  // upper left, in front. The panel turns it.
+  std::array<float, 3> light{-0.4f, 0.6f, 1.0f};
   int springKinds() const { return int(structural) + int(shear) + int(bend); }
 };
 

@@ -26,6 +26,7 @@
 #include "core/output.h"
 #include "graphics/graphics.h"
 #include "graphics/layout.h"
+#include "graphics/panel.h"
 #include "graphics/showCube.h"
 #include "graphics/viewerstate.h"
 #include "model/term.h"
@@ -210,6 +211,7 @@ void display() {
   const long long step = v.simulation.step();
   if (v.saving && step >= v.nextFrame && step != v.savedStep) saveFrame(v);
   drawOverlay(v);
+  drawPanel(v);  // after the frame was saved: never in one
   if (v.screenshotAsked) saveScreenshot(v);
   glutSwapBuffers();
 }
@@ -322,6 +324,7 @@ void advance(Viewer& v) {
 void idle() {
   Viewer& v = viewer();
   pollDiagnosis(v);
+  pollPanel(v);
   advance(v);
   if (v.paused) std::this_thread::sleep_for(kStillNap);
   glutPostRedisplay();
@@ -338,6 +341,12 @@ Outcome finish(Viewer& v) {
 }
 
 }  // namespace
+
+void stepFrame(Viewer& v) {
+  if (!v.paused || v.diverged) return;
+  runSteps(v, v.n);
+  v.say(textf("stepped %d steps to step %lld", v.n, v.simulation.step()));
+}
 
 void toggleSaving(Viewer& v) {
   if (v.saving) {
@@ -380,11 +389,17 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   glutReshapeFunc(reshape);
   glutIdleFunc(idle);
   glutKeyboardFunc(keyboard);
+  glutKeyboardUpFunc(keyboardUp);
   glutSpecialFunc(special);
+  glutSpecialUpFunc(specialUp);
   glutMouseFunc(mouse);
   glutMotionFunc(motion);
+  glutPassiveMotionFunc(passiveMotion);
+  glutCloseFunc([] { stopPanel(viewer()); });  // the window closed by its frame's button
+  startPanel(v);
   if (pictures.saveFromStart) toggleSaving(v);
   glutMainLoop();  // returns once the window is closed (freeglut destroys it then)
+  stopPanel(v);    // (done already, unless the loop ended otherwise)
   return finish(v);
 }
 

@@ -9,11 +9,10 @@
 #include <cstdio>
 #include <string>
 
+#include "graphics/panel.h"
 #include "graphics/viewerstate.h"
 
 namespace jello {
-
-namespace {
 
 void togglePause(Viewer& v) {
   if (v.diverged) {
@@ -31,6 +30,14 @@ void togglePause(Viewer& v) {
   v.rateSteps = 0;
   v.rateStart = Clock::now();
 }
+
+void toggleRealTime(Viewer& v) {
+  v.realTime = !v.realTime;
+  v.realTimeStart = Clock::now();
+  v.realTimeStartSim = v.time();
+}
+
+namespace {
 
 void toggleColourHold(Viewer& v) {
   if (v.draw.colouring == Colouring::Plain) {
@@ -107,8 +114,9 @@ void grab(Viewer& v, int x, int y) {
 
 }  // namespace
 
-void special(int key, int, int) {
+void special(int key, int x, int y) {
   Viewer& v = viewer();
+  if (panelSpecial(v, key, x, y)) return;
   const Camera& c = v.camera;
   switch (key) {
     case GLUT_KEY_UP:
@@ -129,10 +137,12 @@ void special(int key, int, int) {
   glutPostRedisplay();
 }
 
-void keyboard(unsigned char key, int, int) {
+void keyboard(unsigned char key, int x, int y) {
   Viewer& v = viewer();
+  if (panelKeyboard(v, key, x, y)) return;  // typed into the panel
   switch (key) {
     case kEscape:
+      stopPanel(v);  // while its GL context is current
       glutLeaveMainLoop();
       break;
     case 'z':
@@ -169,9 +179,10 @@ void keyboard(unsigned char key, int, int) {
       toggleColourHold(v);
       break;
     case 'r':
-      v.realTime = !v.realTime;
-      v.realTimeStart = Clock::now();
-      v.realTimeStartSim = v.time();
+      toggleRealTime(v);
+      break;
+    case 'g':
+      togglePanel(v);
       break;
     case '?':
     case 'k':
@@ -191,8 +202,13 @@ void keyboard(unsigned char key, int, int) {
 
 // The cursor at window depth `depth`, in world coordinates.
 
+void keyboardUp(unsigned char key, int x, int y) { panelKeyboardUp(viewer(), key, x, y); }
+
+void specialUp(int key, int x, int y) { panelSpecialUp(viewer(), key, x, y); }
+
 void mouse(int button, int buttonState, int x, int y) {
   Viewer& v = viewer();
+  if (panelMouse(v, button, buttonState, x, y)) return;
   v.lastX = x;
   v.lastY = y;
   if (button == GLUT_RIGHT_BUTTON) v.rotating = buttonState == GLUT_DOWN;
@@ -207,6 +223,7 @@ void mouse(int button, int buttonState, int x, int y) {
 
 void motion(int x, int y) {
   Viewer& v = viewer();
+  if (panelMotion(v, x, y)) return;
   if (v.rotating) {
     const double perPixel = radiansPerPixel(v.width, v.height);
     v.camera.phi += (x - v.lastX) * perPixel;
@@ -218,5 +235,7 @@ void motion(int x, int y) {
   v.lastY = y;
   glutPostRedisplay();
 }
+
+void passiveMotion(int x, int y) { panelMotion(viewer(), x, y); }
 
 }  // namespace jello

@@ -46,6 +46,8 @@ inline double seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
+struct PanelState;  // graphics/panelstate.h: only a build with Dear ImGui makes one
+
 struct Viewer {
   Model model;
   State initial;
@@ -98,6 +100,10 @@ struct Viewer {
   std::string standing;  // the run's state while it lasts: diverged, reached its end
   Clock::time_point messageTime;
 
+  // The parameter panel (graphics/panel.h); none in a build without Dear ImGui. Shared, not unique:
+  // its type is complete only in graphics/panel*.cpp.
+  std::shared_ptr<PanelState> panel;
+
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
         initial(file.state),
@@ -136,10 +142,19 @@ inline Viewer& viewer() { return *static_cast<Viewer*>(glutGetWindowData()); }
 // Starts or stops saving frames (the space key; --frames starts it at once).
 void toggleSaving(Viewer& v);
 
+// p, r and the panel's run section: pause or run on; real-time pacing on or off (viewerinput.cpp).
+void togglePause(Viewer& v);
+void toggleRealTime(Viewer& v);
+// One drawn frame's steps (n) of a paused run (the panel's "step a frame"; viewer.cpp).
+void stepFrame(Viewer& v);
+
 // The GLUT callbacks of keys and the mouse (viewerinput.cpp).
 void keyboard(unsigned char key, int x, int y);
+void keyboardUp(unsigned char key, int x, int y);
 void special(int key, int x, int y);
+void specialUp(int key, int x, int y);
 void mouse(int button, int state, int x, int y);
 void motion(int x, int y);
+void passiveMotion(int x, int y);
 
 }  // namespace jello
