@@ -63,6 +63,11 @@ test: deps all
 # does not check it), invariants checked (JELLO_ASSERT) and warnings as errors (JELLO_WERROR).
 # Every UBSan report, in the tests or in the programs they start, is written to
 # $(SANITIZE_DIR)/ubsan-reports/ and fails the target.
+# Long runs of physics that make test runs unchanged, whose code shorter tests take through the
+# sanitizers too: under ASan they took 560 s of CI's 2 cores' time (2026-11-27), to find nothing
+# the short ones do not.
+SANITIZE_SKIP ?= ^(SceneBodies\.ABarHeldAtOneEnd|Conservation\.(UndampedSprings|SymplecticSchemes)|Report/RecommendedCommands\.|Report\.AWorldsOwnSetting|RandomKernels\.SpecialisedAgreesWithGeneralOverAThousandSteps|Implicit\.StableAtTenTimes|ReportOrders\.AFitFar)
+
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 		-DJELLO_SANITIZE=ON -DJELLO_WERROR=ON
@@ -71,7 +76,7 @@ test-sanitize: deps
 	@status=0; cd $(SANITIZE_DIR) && \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:log_path=$$PWD/ubsan-reports/report \
-		ctest --output-on-failure -j $(JOBS) || status=1; \
+		ctest --output-on-failure -j $(JOBS) -E '$(SANITIZE_SKIP)' || status=1; \
 	if [ -n "$$(ls ubsan-reports)" ]; then \
 	  echo "test-sanitize: UndefinedBehaviorSanitizer reports:"; cat ubsan-reports/*; status=1; fi; \
 	exit $$status

@@ -214,8 +214,7 @@ const std::vector<KeyLine>& windowKeys() {
   static const std::vector<KeyLine> keys = {
       {"RIGHT-DRAG", "turn the camera"},
       {"LEFT-DRAG", "pull the cube (start on it)"},
-      {"Z X", "zoom in, out"},
-      {"E", "reset the camera"},
+      {"Z X E", "zoom in, out; camera reset"},
       {"V", "wireframe"},
       {"S H B", "springs by kind, as lines"},
       {"C", "colour: strain, force, stress, friction"},
@@ -226,7 +225,7 @@ const std::vector<KeyLine>& windowKeys() {
       {"R", "real-time pacing"},
       {"SPACE", "record frames, stop"},
       {"W", "save the window as a JPEG"},
-      {"G", "the panel: change the jelly as it runs"},
+      {"G", "the panel"},
       {"? K", "this help"},
       {"ESC", "quit"},
   };

@@ -32,7 +32,8 @@ bool panelWanted(Viewer& v) { return v.panel && v.panel->open; }
 
 // Whether the cursor at (x, y) is over the panel (as last drawn).
 bool overPanel(Viewer& v, int x, int y) {
-  return panelWanted(v) && x >= v.width - kPanelWidth && x < v.width && y >= 0 && y < v.height;
+  return panelWanted(v) && x >= v.width - kPanelWidth && x < v.width && y >= 0 &&
+         y < panel(v).height;
 }
 
 void askVerdict(Viewer& v) {
@@ -162,10 +163,13 @@ void panelFrame(Viewer& v, bool draw) {
   ImGui_ImplGLUT_NewFrame();  // ImGui::NewFrame too (this backend's version)
   if (panelWanted(v)) {
     ImGui::SetNextWindowPos(ImVec2(v.width - kPanelWidth, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, static_cast<float>(v.height)), ImGuiCond_Always);
+    // As tall as its open sections, at most the window: the colour legend at the bottom right of
+    // the picture shows below it while the sections below the jelly's are closed.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0),
+                                        ImVec2(kPanelWidth, static_cast<float>(v.height)));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    const ImGuiWindowFlags flags =
-        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize;
     if (ImGui::Begin("jello panel (g hides it)", nullptr, flags)) {
       verdictSection(v);
       runSection(v);
@@ -175,6 +179,7 @@ void panelFrame(Viewer& v, bool draw) {
       viewSection(v);
       saveSection(v);
     }
+    panel(v).height = ImGui::GetWindowHeight();
     ImGui::End();
   }
   if (!draw) {

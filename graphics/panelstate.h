@@ -35,6 +35,7 @@ struct Draft {
 
 struct PanelState {
   bool open = false;
+  float height = 0;  // pixels, as last drawn
   // The keys and buttons (group, code) whose state changed since ImGui's last frame: this ImGui
   // (1.86) reads their states once a frame, so a second change before the next frame (a quick
   // click, a synthetic key) would be lost; a frame is run first then (panel.cpp).

@@ -112,6 +112,13 @@ void grab(Viewer& v, int x, int y) {
   v.pull.target = unproject(v, x, y, v.grabDepth);
 }
 
+// z, x and e: zoom in, out, and the camera as the window started.
+void cameraKey(Viewer& v, unsigned char key) {
+  if (key == 'z') v.camera.radius = std::max(kMinRadius, v.camera.radius - kZoomStep);
+  if (key == 'x') v.camera.radius += kZoomStep;
+  if (key == 'e') v.camera = cameraFor(v.model, v.pictures.camera);
+}
+
 }  // namespace
 
 void special(int key, int x, int y) {
@@ -146,13 +153,9 @@ void keyboard(unsigned char key, int x, int y) {
       glutLeaveMainLoop();
       break;
     case 'z':
-      v.camera.radius = std::max(kMinRadius, v.camera.radius - kZoomStep);
-      break;
     case 'x':
-      v.camera.radius += kZoomStep;
-      break;
     case 'e':
-      v.camera = cameraFor(v.model, v.pictures.camera);
+      cameraKey(v, key);
       break;
     case 'v':
       v.draw.wireframe = !v.draw.wireframe;

@@ -321,6 +321,19 @@ void readObstacles(const Reader& r, const toml::table& root, ContactSpring sprin
   }
 }
 
+// `state = "FILE"`: the state file that replaces the placement, when the scene gives one.
+void readState(const Reader& r, const toml::table& root, const Body& body, State* out) {
+  const toml::node* state = root.get("state");
+  if (!state) return;
+  const std::optional<std::string> path = state->value<std::string>();
+  if (!path || path->empty()) r.fail(*state, "state", "expected the path of a state file (.csv)");
+  try {
+    *out = readStateFile(r.pathFromScene(*path), body);
+  } catch (const InputError& e) {
+    r.fail(*state, "state", e.what());
+  }
+}
+
 // The character at (line, column) of `text`, both from 1, as oneLine shows it; "the end" past it.
 std::string characterAt(std::string_view text, std::size_t line, std::size_t column) {
   std::size_t at = 0;
@@ -394,15 +407,7 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   // The jellies' placement is checked where it is the start: a state file replaces it (and may
   // hold jellies in contact, as a saved run does).
   if (!root.get("state")) checkJellies(r, root, file, *spec);
-  if (const toml::node* state = root.get("state")) {
-    const std::optional<std::string> path = state->value<std::string>();
-    if (!path || path->empty()) r.fail(*state, "state", "expected the path of a state file (.csv)");
-    try {
-      file.state = readStateFile(r.pathFromScene(*path), body);
-    } catch (const InputError& e) {
-      r.fail(*state, "state", e.what());
-    }
-  }
+  readState(r, root, body, &file.state);
   readPins(r, root, body, file.state, spec.get());
   for (int q : spec->pinned) store(file.state.v(), q, body.count(), Vec3{});
   w.scene = std::move(spec);  // before the check: it names points by the scene's body

@@ -53,9 +53,9 @@ TEST(SavedScene, EveryShippedSceneAndCourseWorldRunsOnBitForBitFromItsSave) {
   const std::string source = JELLO_SOURCE_DIR;
   // (cantilever.toml aside: IMPLICIT on a stiff beam, seconds a step; its pins and elements are
   // wobble's, mould-elements' and the scene below's.)
-  for (const char* scene : {"bar", "cloth-on-ball", "fold", "hanging", "head-on",
-                            "jelly-mould", "mould-elements", "rotate-on-ball", "slope-friction",
-                            "slope-slides", "sphere-drop", "stack", "wobble"})
+  for (const char* scene :
+       {"bar", "cloth-on-ball", "fold", "hanging", "head-on", "jelly-mould", "mould-elements",
+        "rotate-on-ball", "slope-friction", "slope-slides", "sphere-drop", "stack", "wobble"})
     expectSavedSceneRunsOnAlike(source + "/scenes/" + scene + ".toml", 7, 13);
   for (const char* world : {"jello", "rotate", "skewedCorner", "gravity"})
     expectSavedSceneRunsOnAlike(source + "/world/" + world + ".w", 7, 13);

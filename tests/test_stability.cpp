@@ -9,9 +9,12 @@
 #include <sstream>
 
 #include "analysis/stability.h"
+#include "analysis/stepverdict.h"
+#include "io/scenereader.h"
 #include "solver/guard.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
+#include "solver/simulation.h"
 #include "test_support.h"
 
 namespace jello {
@@ -450,6 +453,46 @@ TEST(SmallAndWildStates, AVelocityOf1e100IsADivergenceNotAnEigensolverFailure) {
   EXPECT_NE(r.err.find("no step will do"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("Eigen"), std::string::npos) << r.err;
   test::removeTree(dir);
+}
+
+// The panel's verdict (analysis/stepverdict.h) is --check's: the same limit and verdict at the
+// world's dt, unstable just above the limit with the step --check suggests, stable well below,
+// IMPLICIT at any step; a large body is judged by the row-sum bound, which its run keeps.
+TEST(StepVerdict, IsChecksVerdictAndLimitAndBoundsALargeBody) {
+  const WorldFile file = readWorldFile(test::dataPath("jello.w"));
+  const StabilityReport report = analyseStability(file.world, file.state);
+  const double limit = report.verdictLimit(Integrator::RK4);
+  RunSettings run{Integrator::RK4, file.run.dt, 1};
+  StepVerdict v = judgeStep(file.world, file.state, run);
+  EXPECT_EQ(v.limit, limit);
+  EXPECT_FALSE(v.bound);
+  EXPECT_EQ(v.verdict, verdictFor(run.dt, limit, report.stableFraction));
+  run.dt = 1.01 * limit;
+  v = judgeStep(file.world, file.state, run);
+  EXPECT_EQ(v.verdict, Verdict::Unstable);
+  EXPECT_EQ(v.suggested, suggestedStep(limit, report.stableFraction));
+  EXPECT_NE(v.text.find("unstable: dt"), std::string::npos) << v.text;
+  EXPECT_NE(v.text.find("try dt " + figureText(v.suggested)), std::string::npos) << v.text;
+  run.dt = 0.5 * limit;
+  EXPECT_EQ(judgeStep(file.world, file.state, run).verdict, Verdict::Stable);
+  run.integrator = Integrator::Implicit;
+  run.dt = 1;
+  v = judgeStep(file.world, file.state, run);
+  EXPECT_EQ(v.verdict, Verdict::Stable);
+  EXPECT_TRUE(std::isinf(v.limit));
+
+  const WorldFile big = parseScene(
+      "gravity = [0, 0, -9.81]\n[jelly]\nshape = \"lattice\"\nsize = [17, 17, 17]\nspacing = 0.1\n",
+      "big.toml", "");
+  ASSERT_GT(big.state.points(), kMostPointsAnalysedLive);
+  run = big.run;
+  v = judgeStep(big.world, big.state, run);
+  EXPECT_TRUE(v.bound);
+  ASSERT_TRUE(v.limit > 0 && std::isfinite(v.limit)) << v.limit;
+  const Model model = makeModel(big.world, big.state);
+  EXPECT_EQ(v.limit, rowSumBound(model, big.state, Integrator::RK4).limit);
+  Simulation at(model, big.state, Integrator::RK4, v.limit);
+  EXPECT_TRUE(at.advance(30).ran()) << "a run at the bound diverged";
 }
 
 }  // namespace
