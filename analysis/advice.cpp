@@ -29,24 +29,21 @@ namespace jello {
 namespace {
 
 // The end of a divergence message for a body too large to analyse while the user waits.
-constexpr double kUsefulRowSumBound = 0.01;  // of 1 / fastest; RK4's undamped limit is 2.8
 std::string largeBodyAdvice(const World& world, const State& initial, Integrator integrator,
                             double dt, int points) {
   const char* name = integratorName(integrator);
   const std::string head = "dt=" + figureText(dt) + " with " + name + " on a body of " +
                            std::to_string(points) + " points";
   const std::string check = " (jello --check finds the limit itself, slowly for a body this large)";
-  const auto [bound, fastest] = rowSumBound(makeModel(world, initial), initial, integrator);
+  const RowSumBound rows = rowSumBound(makeModel(world, initial), initial, integrator);
+  const double bound = rows.limit;
   if (std::isnan(bound)) {
     return head +
            ": the forces' derivatives at the initial state are not finite numbers; no step "
            "will do";
   }
   if (bound == 0) return head + ": " + stepAdvice(0);
-  // An integrator unstable on an undamped oscillation (EULER, MIDPOINT) is held by the damping
-  // alone, of which row sums promise nothing for the slower modes: its bound is then far below
-  // its limit, and a step suggested from it would be useless.
-  if (bound * fastest < kUsefulRowSumBound) {
+  if (!rows.useful()) {
     return head + ": " + name + " is stable only as far as damping holds the modes, which row " +
            "sums cannot bound" + check + "; try --integrator RK4 or --integrator IMPLICIT";
   }

@@ -58,7 +58,7 @@ World withBody(const World& base, std::shared_ptr<const Body> body, const Materi
   spec->pinned = std::move(pinned);
   if (!material.elements()) {
     spec->springs = fit.constants;
-    w.mass = material.density * restVolume(*body) / body->count();
+    w.mass = meanElementMass(*body, material);
     w.kElastic = fit.constants.k[0];
     w.dElastic = fit.constants.d[0];
   }

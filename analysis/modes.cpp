@@ -497,7 +497,12 @@ Linearisation freeLatticeAtRest(const World& world) {
     return mirrorSymmetricEigenvalues(negatedSymmetricPart(jacobian.dAdp));
   }();
   Linearisation out;
-  if (!std::isfinite(world.kElastic / world.mass) || !std::isfinite(world.dElastic / world.mass)) {
+  // The springs' constants as the model has them: a scene may give every kind the same stiffness
+  // by kind (stiffness = { structural = 800, shear = 800, bend = 800 }) and leave kElastic as it
+  // was.
+  const SpringConstants springs = springConstantsOf(world);
+  const double k = springs.k[0], d = springs.d[0];
+  if (!std::isfinite(k / world.mass) || !std::isfinite(d / world.mass)) {
     out.finite = false;
     return out;
   }
@@ -507,7 +512,7 @@ Linearisation freeLatticeAtRest(const World& world) {
   for (Eigen::Index i = 0; i < unitLattice.size(); ++i) {
     double mu = unitLattice[i];
     if (mu <= rigid) continue;
-    Mode m{mu * world.kElastic / world.mass, mu * world.dElastic / world.mass};
+    Mode m{mu * k / world.mass, mu * d / world.mass};
     if (m.omegaSquared > 0) addMode(m, &out);
   }
   if (out.modes.empty()) out.lowestDamping = 0;

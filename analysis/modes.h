@@ -79,6 +79,11 @@ Linearisation freeLatticeAtRest(const World& world);
 struct RowSumBound {
   double limit;    // s; NaN where the derivatives are not finite, infinite if no point is free
   double fastest;  // rad/s: the square root of the stiffness's top
+  // An integrator unstable on an undamped oscillation (EULER, MIDPOINT) is held by the damping
+  // alone, of which row sums promise nothing for the slower modes: its bound is then far below its
+  // limit (under kUsefulRowSumBound / fastest), and a step suggested from it would be useless.
+  static constexpr double kUsefulRowSumBound = 0.01;  // RK4's undamped limit is 2.8 / fastest
+  bool useful() const { return !(limit * fastest < kUsefulRowSumBound); }
 };
 RowSumBound rowSumBound(const Model& model, const State& state, Integrator integrator);
 

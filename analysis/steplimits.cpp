@@ -164,7 +164,8 @@ double stableFraction(const World& world, const State& initial, const Linearisat
   if (hasCourseSprings(world)) {
     const Linearisation free = freeLatticeAtRest(world);
     if (!free.finite || free.modes.empty()) return kStableFraction;
-    dampingPerRadian = free.highestFrequency * world.dElastic / world.kElastic;
+    const SpringConstants springs = springConstantsOf(world);  // a scene's by kind, all equal
+    dampingPerRadian = free.highestFrequency * springs.d[0] / springs.k[0];
   } else {
     const Linearisation own = rest ? Linearisation{} : lineariseAtRest(world);
     const Linearisation& modes = rest ? *rest : own;

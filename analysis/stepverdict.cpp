@@ -8,6 +8,7 @@
 #include "analysis/modes.h"
 #include "analysis/steplimits.h"
 #include "model/model.h"
+#include "solver/integrators.h"
 
 namespace jello {
 
@@ -36,10 +37,19 @@ StepVerdict judgeStep(const World& world, const State& state, const RunSettings&
   double fraction = kStableFraction;
   if (const std::string beyond = beyondDoubles(world, state); !beyond.empty()) {
     v.limit = 0;
+  } else if (!integratorInfo(run.integrator).boundedStableStep) {
+    v.limit = INFINITY;  // IMPLICIT: no analysis needed
   } else if (bodyOf(world).count() > kMostPointsAnalysedLive) {
-    const Model model = makeModel(world, state);
-    v.limit = rowSumBound(model, state, run.integrator).limit;
+    const RowSumBound rows = rowSumBound(makeModel(world, state), state, run.integrator);
+    v.limit = rows.limit;
     v.bound = true;
+    if (!rows.useful()) {  // EULER, MIDPOINT on a large body: marginal, and no step to suggest
+      v.verdict = Verdict::NearLimit;
+      v.text = std::string("marginal: ") + integratorName(run.integrator) +
+               " is stable only as far as damping holds the modes, which the bound for a body " +
+               "this large cannot measure; try RK4 or IMPLICIT";
+      return v;
+    }
   } else {
     const StabilityReport report = analyseStability(world, state);
     v.limit = report.verdictLimit(run.integrator);

@@ -64,10 +64,20 @@ inline std::string worldStem(const std::string& worldPath) {
 class FrameClock {
  public:
   FrameClock(double fps, int n, double dt) : fps_(fps), n_(n), dt_(dt) {}
+  // The same for a run whose dt changed at step `stepBase`, at `timeBase` s (the window's panel):
+  // step s is at timeBase + (s - stepBase) * dt.
+  FrameClock(double fps, int n, double dt, long long stepBase, double timeBase)
+      : fps_(fps), n_(n), dt_(dt), stepBase_(stepBase), timeBase_(timeBase) {}
 
   // The step of the next frame due after `step` (step 0's frame is the first).
   long long nextAfter(long long step) const {
     if (fps_ <= 0) return (step / n_ + 1) * n_;
+    if (stepBase_ > 0) {
+      const double next =
+          std::floor((timeBase_ + (step - stepBase_) * dt_) * fps_ * (1 + kRounding)) + 1;
+      const double at = std::ceil((next / fps_ - timeBase_) / dt_ * (1 - kRounding));
+      return std::max(step + 1, stepBase_ + static_cast<long long>(std::min(at, kMostSteps)));
+    }
     // Frames at k / fps; the first k past step * dt * fps. The factor keeps a step that is a
     // frame's time up to rounding (0.1 s at dt 0.001 and 10 fps) that frame's step.
     const double next = std::floor(step * dt_ * fps_ * (1 + kRounding)) + 1;
@@ -87,6 +97,8 @@ class FrameClock {
   double fps_;
   int n_;
   double dt_;
+  long long stepBase_ = 0;
+  double timeBase_ = 0;
 };
 
 }  // namespace jello

@@ -437,6 +437,15 @@ std::string printable(std::string_view text) {
   return out;
 }
 
+bool isUtf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8Length(text, i);
+    if (length == 0) return false;
+    i += length;
+  }
+  return true;
+}
+
 namespace {
 const char* programName = "jello";
 }

@@ -123,6 +123,8 @@ bool sameFile(const std::string& a, const std::string& b);
 // `text` with every control character and every byte that is not part of valid UTF-8 shown as
 // \xNN (a backslash as \\): safe to print in one line and to put in JSON or a script's string.
 std::string printable(std::string_view text);
+// Whether `text` is valid UTF-8 (no overlong forms, no surrogates): what a TOML string may hold.
+bool isUtf8(std::string_view text);
 
 // After a program's last output: "" when all of its standard output was written, otherwise the
 // line saying it was not (a closed or full standard output is a failure, not a success).

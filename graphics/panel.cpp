@@ -28,6 +28,11 @@ PanelState& panel(Viewer& v) { return *v.panel; }
 
 namespace {
 
+void zeroPinnedVelocities(const std::vector<int>& pinned, State* state) {
+  const int n = state->points();
+  for (int q : pinned) store(state->v(), q, n, Vec3{});
+}
+
 bool panelWanted(Viewer& v) { return v.panel && v.panel->open; }
 
 // Whether the cursor at (x, y) is over the panel (as last drawn).
@@ -36,17 +41,27 @@ bool overPanel(Viewer& v, int x, int y) {
          y < panel(v).height;
 }
 
+void startJob(Viewer& v) {
+  PanelState& p = panel(v);
+  World world = draftWorld(v, p.draft);
+  if (!v.model.world.scene && !p.draft.physics) world.scene = nullptr;  // a course world as it is
+  State state = v.state();
+  zeroPinnedVelocities(p.draft.scene.pinned, &state);  // as applying the draft would
+  p.job =
+      std::async(std::launch::async, [world = std::move(world), state = std::move(state),
+                                      run = p.draft.run] { return judgeStep(world, state, run); });
+}
+
 void askVerdict(Viewer& v) {
   PanelState& p = panel(v);
   if (p.job.valid() || p.jobGeneration == p.generation) return;
   p.jobGeneration = p.generation;
   p.jobAsked = Clock::now();
-  World world = p.draft.world;
-  world.scene = std::make_shared<const SceneSpec>(p.draft.scene);
-  if (!v.model.world.scene && !p.draft.physics) world.scene = nullptr;  // a course world as it is
-  p.job = std::async(std::launch::async, [world, state = v.state(), run = p.draft.run] {
-    return judgeStep(world, state, run);
-  });
+  try {
+    startJob(v);
+  } catch (const std::bad_alloc&) {
+    v.say("no memory for a copy of the world to judge the change on: none judged");
+  }
 }
 
 // The verdict's line on stderr, as every message of the window: the tests read it there.
@@ -58,12 +73,24 @@ void announce(Viewer& v, const StepVerdict& verdict) {
 
 }  // namespace
 
-Draft draftOf(const Viewer& v) {
+Draft draftOf(Viewer& v) {
   Draft d;
+  // The world without its field (the panel changes none, and a field may be gigabytes): the
+  // field's buffer is lent out while the rest is copied, not copied itself. The model's terms
+  // point into that buffer, which a move keeps where it is.
+  ForceField field = std::move(v.model.world.field);
   d.world = v.model.world;
+  v.model.world.field = std::move(field);
   if (v.model.world.scene) d.scene = *v.model.world.scene;
   d.run = {v.simulation.integrator(), v.simulation.dt(), v.n};
   return d;
+}
+
+World draftWorld(const Viewer& v, const Draft& draft) {
+  World world = draft.world;
+  world.field = v.model.world.field;
+  world.scene = std::make_shared<const SceneSpec>(draft.scene);
+  return world;
 }
 
 void draftChanged(Viewer& v, bool physics) {
@@ -74,28 +101,45 @@ void draftChanged(Viewer& v, bool physics) {
   askVerdict(v);
 }
 
+void recountRun(Viewer& v) {
+  const long long step = v.simulation.step();
+  const double dt = v.simulation.dt();
+  v.clock = FrameClock(v.pictures.fps, v.n, dt, step, v.time());
+  if (v.saving) v.nextFrame = v.savedStep == step ? v.clock.nextAfter(step) : step;
+  if (v.endTime && !v.ended)
+    v.endStep = step + stepsForTime(std::max(0.0, *v.endTime - v.time()), dt).value_or(0);
+}
+
+// A diverged run given a change goes on from its last sane state: its diagnosis, if still under
+// way, is let run out unread.
+void resumeDiverged(Viewer& v) {
+  if (!v.diverged) return;
+  v.diverged = false;
+  v.standing.clear();
+  if (v.diagnosis.valid()) v.staleDiagnoses.push_back(std::move(v.diagnosis));
+}
+
 void applyDraft(Viewer& v, const RunSettings& run) {
   PanelState& p = panel(v);
   State state = v.state();
   if (p.draft.physics) {
-    World world = p.draft.world;
-    world.scene = std::make_shared<const SceneSpec>(p.draft.scene);
-    const int n = state.points();
-    for (int q : p.draft.scene.pinned) store(state.v(), q, n, Vec3{});
+    zeroPinnedVelocities(p.draft.scene.pinned, &state);
     // The simulation references v.model: the new model takes its place, and the simulation goes on
     // from the current state with the new run settings (Simulation::change).
-    v.model = makeModel(world, state);
+    try {
+      v.model = makeModel(draftWorld(v, p.draft), state);
+    } catch (const std::bad_alloc&) {
+      v.say("no memory for the changed world: nothing applied");
+      return;
+    }
     v.simulation.restore(state, v.simulation.step());
   }
   v.simulation.change(run);
   v.n = run.n;
-  v.clock = FrameClock(v.pictures.fps, run.n, run.dt);
+  recountRun(v);
   v.initial = v.state();  // a divergence from here is diagnosed from here
   v.lastGood = v.state();
-  if (v.diverged) {
-    v.diverged = false;
-    v.standing.clear();
-  }
+  resumeDiverged(v);
   const std::string what = textf("applied: %s dt %g s", integratorName(run.integrator), run.dt);
   p.draft = draftOf(v);
   ++p.generation;  // the setup as it now runs is judged afresh
@@ -242,15 +286,20 @@ bool panelMouse(Viewer& v, int button, int state, int x, int y) {
   if (!v.panel) return false;
   beforeChange(v, kButtons, button);
   ImGui_ImplGLUT_MouseFunc(button, state, x, y);
+  PanelState& p = panel(v);
   // A release always reaches the viewer too: a drag begun outside the panel ends wherever it ends.
-  if (state == GLUT_UP) return false;
-  return overPanel(v, x, y) || (panelWanted(v) && ImGui::GetIO().WantCaptureMouse);
+  if (state == GLUT_UP) {
+    p.dragging = false;
+    return false;
+  }
+  p.dragging = overPanel(v, x, y) || (panelWanted(v) && ImGui::GetIO().WantCaptureMouse);
+  return p.dragging;
 }
 
 bool panelMotion(Viewer& v, int x, int y) {
   if (!v.panel) return false;
   ImGui_ImplGLUT_MotionFunc(x, y);
-  return panelWanted(v) && ImGui::IsAnyItemActive();
+  return panel(v).dragging;  // a drag the panel took (a slider); the viewer's own go on
 }
 
 // ---------------------------------------------------------------------------------------------

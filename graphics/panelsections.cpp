@@ -49,6 +49,16 @@ void discardDraft(Viewer& v) {
   v.say("the changes were discarded");
 }
 
+// With several jellies the world's mass, kElastic and dElastic are the first jelly's (the scene
+// reader's rule, which a saved scene read back keeps).
+void mirrorFirstJelly(Draft& d) {
+  if (d.scene.jellies.empty()) return;
+  const JellySpec& first = d.scene.jellies[0];
+  d.world.mass = first.mass;
+  d.world.kElastic = first.springs.k[0];
+  d.world.dElastic = first.springs.d[0];
+}
+
 // A jelly's mass, springs and material in the draft: the world's and its scene's for one jelly,
 // its own for several.
 struct JellyFields {
@@ -70,17 +80,24 @@ JellyFields jellyFields(Draft& d, int jelly) {
   return {&spec.mass, spec.springs, &spec.material, body.parts[jelly].get()};
 }
 
+// A jelly's springs in the draft; the world's kElastic, dElastic and mass kept as the scene reader
+// keeps them: one jelly's when its kinds are equal, the first jelly's of several.
 void setSprings(Draft& d, int jelly, const SpringConstants& springs) {
-  if (d.scene.jellies.empty())
+  if (d.scene.jellies.empty()) {
     d.scene.springs = springs;
-  else
-    d.scene.jellies[jelly].springs = springs;
+    if (springs.uniform()) d.world.kElastic = springs.k[0], d.world.dElastic = springs.d[0];
+    return;
+  }
+  d.scene.jellies[jelly].springs = springs;
+  mirrorFirstJelly(d);
 }
 
 void springFields(Viewer& v, Draft& d, JellyFields& f) {
   PanelState& p = panel(v);
-  if (numberField(v, "mass, kg a point##jelly.mass", f.mass, 0, kLargestSceneNumber, true))
+  if (numberField(v, "mass, kg a point##jelly.mass", f.mass, 0, kLargestSceneNumber, true)) {
+    mirrorFirstJelly(d);
     draftChanged(v, true);
+  }
   const char* names[2][kSpringKinds] = {
       {"structural stiffness, N/m##jelly.k.structural", "shear stiffness##jelly.k.shear",
        "bend stiffness##jelly.k.bend"},
@@ -108,15 +125,20 @@ void elementFields(Viewer& v, Draft& d, JellyFields& f) {
   changed |= numberField(v, "stiffness damping, s##jelly.beta", &m.stiffnessDamping, 0,
                          kLargestSceneNumber);
   if (!changed) return;
-  // The mass a point the reader gives a jelly of elements: its lumped mass's mean.
-  *f.mass = m.density * restVolume(*f.body) / f.body->count();
-  (void)d;
+  *f.mass = meanElementMass(*f.body, m);  // the mass a point the reader gives it
+  mirrorFirstJelly(d);
   draftChanged(v, true);
 }
 
-// Apply, apply with the suggested dt, discard: apply once the change is judged.
+// Discard, apply, apply with the suggested dt (discard first: it never moves as the verdict
+// arrives and the others' labels change); apply once the change is judged.
 void verdictButtons(Viewer& v, bool judged) {
   PanelState& p = panel(v);
+  if (button(v, "discard##discard")) {
+    discardDraft(v);
+    return;
+  }
+  ImGui::SameLine();
   ImGui::BeginDisabled(!judged);
   const bool unstable = judged && p.verdict->verdict == Verdict::Unstable;
   if (button(v, unstable ? "apply anyway##apply" : "apply##apply")) applyDraft(v, p.draft.run);
@@ -130,8 +152,6 @@ void verdictButtons(Viewer& v, bool judged) {
     }
   }
   ImGui::EndDisabled();
-  ImGui::SameLine();
-  if (button(v, "discard##discard")) discardDraft(v);
 }
 
 }  // namespace
@@ -179,7 +199,7 @@ void runSection(Viewer& v) {
   if (ImGui::InputInt("steps a frame##run.n", &n, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue)) {
     v.n = std::clamp(n, 1, kMostStepsPerFrame);
     p.draft.run.n = v.n;
-    v.clock = FrameClock(v.pictures.fps, v.n, v.simulation.dt());
+    recountRun(v);
   }
   traceItem(v, "run.n");
   ImGui::PopItemWidth();

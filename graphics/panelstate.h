@@ -35,7 +35,8 @@ struct Draft {
 
 struct PanelState {
   bool open = false;
-  float height = 0;  // pixels, as last drawn
+  float height = 0;       // pixels, as last drawn
+  bool dragging = false;  // the mouse button down was pressed on the panel
   // The keys and buttons (group, code) whose state changed since ImGui's last frame: this ImGui
   // (1.86) reads their states once a frame, so a second change before the next frame (a quick
   // click, a synthetic key) would be lost; a frame is run first then (panel.cpp).
@@ -69,8 +70,13 @@ void panelFrame(Viewer& v, bool draw);
 
 // The draft from the setup as it runs; the draft made the setup (a new model where its physics
 // changed, the run settings in every case), from the current state.
-Draft draftOf(const Viewer& v);
+Draft draftOf(Viewer& v);
+// The world the draft makes: its scene, and the field of the world as it runs.
+World draftWorld(const Viewer& v, const Draft& draft);
 void applyDraft(Viewer& v, const RunSettings& run);
+// The frames' clock, the next frame to save and the end of --time counted again from the current
+// step, at the run's dt and steps a frame.
+void recountRun(Viewer& v);
 // Marks the draft changed (`physics`: beyond the run settings) and asks for its verdict.
 void draftChanged(Viewer& v, bool physics);
 

@@ -135,9 +135,7 @@ void pinRegion(Viewer& v) {
   const int n = v.model.points();
   const std::size_t before = pinned.size();
   for (int q = 0; q < n; ++q) {
-    const Vec3 x = load(v.state().p(), q, n);
-    if (x.x >= p.pinLower.x && x.x <= p.pinUpper.x && x.y >= p.pinLower.y && x.y <= p.pinUpper.y &&
-        x.z >= p.pinLower.z && x.z <= p.pinUpper.z &&
+    if (inBox(load(v.state().p(), q, n), p.pinLower, p.pinUpper) &&
         !std::binary_search(pinned.begin(), pinned.end(), q))
       pinned.insert(std::upper_bound(pinned.begin(), pinned.end(), q), q);
   }

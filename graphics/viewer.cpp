@@ -10,6 +10,7 @@
 #include <GL/freeglut.h>
 #include <GL/glu.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -255,6 +256,13 @@ void diverge(Viewer& v, const RunOutcome& outcome, long long stepBefore) {
 }
 
 void pollDiagnosis(Viewer& v) {
+  auto& stale = v.staleDiagnoses;
+  stale.erase(std::remove_if(stale.begin(), stale.end(),
+                             [](std::future<std::string>& f) {
+                               return f.wait_for(std::chrono::seconds(0)) ==
+                                      std::future_status::ready;
+                             }),
+              stale.end());
   if (!v.diagnosis.valid() ||
       v.diagnosis.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
     return;
@@ -372,6 +380,7 @@ Outcome runViewer(const RunOptions& run, const PictureOptions& pictures) {
   }
   if (run.time) {
     v.endStep = stepsForTime(*run.time, v.simulation.dt());
+    v.endTime = *run.time;
     if (!v.endStep) return failed(tooManyStepsMessage(*run.time, v.simulation.dt()));
     v.endName = textf("--time %g s", *run.time);
   }

@@ -22,6 +22,7 @@ void togglePause(Viewer& v) {
   if (v.ended) {  // p after the end runs on without one
     v.ended = false;
     v.endStep.reset();
+    v.endTime.reset();
     v.standing.clear();
   }
   v.paused = !v.paused;

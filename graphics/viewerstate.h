@@ -9,6 +9,7 @@
 #include <future>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/export.h"
 #include "graphics/graphics.h"
@@ -58,10 +59,14 @@ struct Viewer {
 
   // The run's length (--steps, --time), where the window pauses once; none: it runs on.
   std::optional<long long> endStep;
-  std::string endName;  // how the command line said it: "--time 0.5 s"
+  std::optional<double> endTime;  // s, with --time: endStep is counted again when dt changes
+  std::string endName;            // how the command line said it: "--time 0.5 s"
   bool paused = false, diverged = false, ended = false, realTime = false;
   std::future<std::string> diagnosis;  // of the divergence, while it is under way
-  std::string divergedAt;              // "diverged at step N (t=T s): reason"
+  // Diagnoses of a divergence the panel has since applied a change to: let run out, unread (a
+  // future of std::async waits for its thread when dropped).
+  std::vector<std::future<std::string>> staleDiagnoses;
+  std::string divergedAt;  // "diverged at step N (t=T s): reason"
 
   // Recording (space, --frames, --export): frames at the steps of `clock`, as a headless run
   // saves them, and with --export each frame's surface mesh, numbered as the frame.

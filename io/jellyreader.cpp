@@ -12,6 +12,7 @@
 #include "io/tetmesh.h"
 #include "io/voxels.h"
 #include "model/bodycontact.h"
+#include "model/elements.h"
 #include "model/winding.h"
 
 namespace jello {
@@ -233,9 +234,6 @@ std::shared_ptr<const Body> elementBody(const Reader& r, const toml::table& t,
   return std::make_shared<Body>(std::move(body));
 }
 
-// The mass of a jelly of elements at rest, kg: its density times its tetrahedra's volume.
-double elementMass(const Body& body, const Material& m) { return m.density * restVolume(body); }
-
 // One jelly's table: its body (null: the course cube), placed state, mass and springs, starting
 // from the world's.
 struct ReadJelly {
@@ -261,7 +259,7 @@ ReadJelly readOne(const Reader& r, const toml::table& t, const std::string& path
     r.fail(*t.get("total_mass"), path + "total_mass",
            "give mass (per point) or total_mass, not both");
   out.spec.mass = w.mass;
-  if (out.spec.material.elements()) out.spec.mass = elementMass(*out.body, out.spec.material) / n;
+  if (out.spec.material.elements()) out.spec.mass = meanElementMass(*out.body, out.spec.material);
   if (auto m = r.number(t, path, "mass", 0, true)) out.spec.mass = *m;
   if (auto m = r.number(t, path, "total_mass", 0, true)) out.spec.mass = *m / n;
   out.kElastic = w.kElastic, out.dElastic = w.dElastic;
@@ -344,12 +342,6 @@ void readJelly(const Reader& r, const toml::table& root, WorldFile* file, SceneS
 
 namespace {
 
-// Whether point x is strictly inside the box (an obstacle of shape Container), or [-2, 2]^3.
-bool insideBox(Vec3 x, Vec3 lower, Vec3 upper) {
-  return x.x >= lower.x && x.x <= upper.x && x.y >= lower.y && x.y <= upper.y && x.z >= lower.z &&
-         x.z <= upper.z;
-}
-
 // The bounds of points [first, end) of a per-point array of n points.
 Bounds partBounds(const double* p, int first, int end, int n) {
   Bounds b{load(p, first, n), load(p, first, n)};
@@ -379,7 +371,7 @@ void checkJellies(const Reader& r, const toml::table& root, const WorldFile& fil
     const Vec3 upper =
         spec.bounds ? spec.bounds->upper : Vec3{kBoxHalfSize, kBoxHalfSize, kBoxHalfSize};
     for (int q = 0; q < n; ++q)
-      if (!insideBox(load(p, q, n), lower, upper))
+      if (!inBox(load(p, q, n), lower, upper))
         fail(body.partOf(q), "jelly " + std::to_string(body.partOf(q) + 1) +
                                  " starts outside the bounding box (its point " + body.label(q) +
                                  ")");
@@ -407,7 +399,7 @@ void checkJellies(const Reader& r, const toml::table& root, const WorldFile& fil
       if (a == b || isSheet(*body.parts[b])) continue;
       const int q = body.partFirst[a];
       const Vec3 x = load(p, q, n);
-      if (!insideBox(x, box[b].lower, box[b].upper)) continue;
+      if (!inBox(x, box[b].lower, box[b].upper)) continue;
       if (std::fabs(windingNumber(body, static_cast<int>(b), p, x)) > 0.5)
         fail(static_cast<int>(a),
              "jelly " + std::to_string(a + 1) + " starts inside jelly " + std::to_string(b + 1));

@@ -22,8 +22,6 @@
 
 namespace jello {
 
-namespace {}  // namespace
-
 WorldFile defaultSceneWorld() {
   WorldFile file;
   file.run = {Integrator::RK4, 0.0005, 10};
@@ -280,10 +278,7 @@ void readPins(const Reader& r, const toml::table& root, const Body& body, const 
       const Vec3 lower = r.vector(t, path, "lower").value_or(Vec3{-INFINITY, -INFINITY, -INFINITY});
       const Vec3 upper = r.vector(t, path, "upper").value_or(Vec3{INFINITY, INFINITY, INFINITY});
       for (int q = target.first; q < target.end; ++q) {
-        const Vec3 p = load(state.p(), q, n);
-        const bool inside = p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
-                            p.z >= lower.z && p.z <= upper.z;
-        if (inside) pinned[q] = 1, ++count;
+        if (inBox(load(state.p(), q, n), lower, upper)) pinned[q] = 1, ++count;
       }
     } else {
       const Body& grid = *target.grid;

@@ -29,23 +29,6 @@ std::string vector(Vec3 v) {
   return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
 }
 
-// Whether `text` is UTF-8 (TOML's strings must be).
-bool isUtf8(std::string_view text) {
-  for (std::size_t i = 0; i < text.size();) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    const int more = c < 0x80         ? 0
-                     : (c >> 5) == 6  ? 1
-                     : (c >> 4) == 14 ? 2
-                     : (c >> 3) == 30 ? 3
-                                      : -1;
-    if (more < 0 || i + more >= text.size() + (more == 0 ? 1 : 0)) return false;
-    for (int k = 1; k <= more; ++k)
-      if ((static_cast<unsigned char>(text[i + k]) >> 6) != 2) return false;
-    i += 1 + more;
-  }
-  return true;
-}
-
 // A TOML basic string: quotes, backslashes and control characters escaped.
 std::string quoted(const std::string& text) {
   if (!isUtf8(text))
@@ -141,6 +124,7 @@ void writeObstacle(std::string& out, const Obstacle& o) {
       out += "\n[[box]]\nlower = " + vector(o.lower) + "\nupper = " + vector(o.upper) + "\n";
       break;
     case ObstacleShape::HalfSpace:
+      JELLO_ASSERT(hasNormal({o.givenNormal.x, o.givenNormal.y, o.givenNormal.z, 0}));
       out +=
           "\n[[plane]]\npoint = " + vector(o.point) + "\nnormal = " + vector(o.givenNormal) + "\n";
       break;
@@ -259,18 +243,24 @@ void writeScene(const std::string& scenePath, const World& world, const RunSetti
     throw OutputError(scenePath +
                       ": its pins would make a scene file larger than the reader takes (" +
                       std::to_string(kMostSceneBytes) + " bytes)");
+  // Those written anew (not replacing a file) are removed when a later one fails.
   std::vector<std::string> written;
+  auto created = [&](const std::string& path) {
+    return !checkWritable(path, Existing::Refuse).alreadyExists;
+  };
   try {
     // A scene's .w holds the course world alone; its cube (unused: the state file replaces it) is
     // the rest lattice a scene without a world starts from.
     World course = world;
     course.scene = nullptr;
+    const bool newWorld = created(files.world);
     writeWorldFile(files.world, course, run, world.scene ? defaultSceneWorld().state : state,
                    overwrite);
-    written.push_back(files.world);
+    if (newWorld) written.push_back(files.world);
     if (!files.state.empty()) {
+      const bool newState = created(files.state);
       writeFileWhole(files.state, formatState(bodyOf(world), state), existing);
-      written.push_back(files.state);
+      if (newState) written.push_back(files.state);
     }
     writeFileWhole(files.scene, sceneText, existing);
   } catch (...) {

@@ -29,7 +29,7 @@ std::string formatScene(const World& world, const RunSettings& run, const SavedS
 
 // Writes the files, each whole (core/output.h). Refuses (OutputError, nothing written) a path that
 // does not end in .toml, and, without `overwrite`, any of the files that exists; a write that
-// fails removes those written before it.
+// fails removes those it made before it (one it replaced stays replaced).
 void writeScene(const std::string& scenePath, const World& world, const RunSettings& run,
                 const State& state, bool overwrite);
 

@@ -9,6 +9,10 @@
 
 namespace jello {
 
+double meanElementMass(const Body& body, const Material& material) {
+  return material.density * restVolume(body) / body.count();
+}
+
 namespace {
 
 Block3 toBlock(const Mat3x3& m) {

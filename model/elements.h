@@ -22,6 +22,10 @@
 
 namespace jello {
 
+// The mean of the lumped masses (density * volume / 4 a tetrahedron's point) of a body that is
+// not joined, made of `material`, kg a point: density * restVolume / points.
+double meanElementMass(const Body& body, const Material& material);
+
 class ElementTerm final : public ForceTerm {
  public:
   // The elements of every part of `body` whose material is elements (byPart[p] is part p's

@@ -38,4 +38,11 @@ inline Vec3 direction(Vec3 L, double* len) {
   return inverse * L;
 }
 
+// Whether x lies in the box [lower, upper] on every axis, both ends included (a region pin, the
+// panel's pin region, a jelly inside its bounding box).
+inline bool inBox(Vec3 x, Vec3 lower, Vec3 upper) {
+  return x.x >= lower.x && x.x <= upper.x && x.y >= lower.y && x.y <= upper.y && x.z >= lower.z &&
+         x.z <= upper.z;
+}
+
 }  // namespace jello

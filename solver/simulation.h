@@ -102,7 +102,10 @@ class Simulation {
 
   const State& state() const { return state_; }
   long long step() const { return step_; }
-  double time() const { return time_; }  // s: step * dt (advanceTo's last step: its time)
+  double time() const {
+    return time_;
+  }  // s: step * dt (advanceTo's last step: its time; after
+     // change(), dt a step since it)
   double dt() const { return dt_; }
   Integrator integrator() const { return stepper_.integrator(); }
   const StepStats& stats() const { return stepper_.stats(); }  // the stepper's, since the start

@@ -73,6 +73,28 @@ TEST(Simulation, ADivergingRunReportsTheStepTimeAndReasonTheHeadlessRunReported)
 
 // The checks depend on the step number alone: any grouping of the steps stops at the same step,
 // for the same reason, in the same state.
+// The window's panel changes dt and the integrator as a run goes: after change(), the run is bit
+// for bit a new Simulation's from the state it had reached, and its time goes on from there.
+TEST(Simulation, AChangeOfStepAndIntegratorGoesOnAsANewRunFromTheStateReached) {
+  const WorldFile file = readWorldFile(test::dataPath("rotate.w"));
+  const Model model = makeModel(file.world, file.state);
+  Simulation run(model, file.state, {Integrator::RK4, 0.001, 10});
+  ASSERT_TRUE(run.advance(50).ran());
+  const State reached = run.state();
+  const double timeThen = run.time();
+  run.change({Integrator::Midpoint, 0.0004, 3});
+  EXPECT_EQ(run.integrator(), Integrator::Midpoint);
+  EXPECT_EQ(run.dt(), 0.0004);
+  ASSERT_TRUE(run.advance(40).ran());
+  Simulation fresh(model, reached, {Integrator::Midpoint, 0.0004, 3});
+  ASSERT_TRUE(fresh.advance(40).ran());
+  EXPECT_EQ(run.state().y, fresh.state().y);
+  EXPECT_EQ(run.step(), 90);
+  EXPECT_DOUBLE_EQ(run.time(), timeThen + 40 * 0.0004);
+  run.restore(reached, 60);  // the time of a step after the change: dt a step since it
+  EXPECT_DOUBLE_EQ(run.time(), timeThen + 10 * 0.0004);
+}
+
 TEST(Simulation, StopsAtTheSameStepHoweverItsStepsAreGrouped) {
   WorldFile f = readWorldFile(sourcePath("world/stress/stiff-1e5.w"));
   f.run.n = 1;  // the energy every 8 steps, which advancing by 7 does not line up with

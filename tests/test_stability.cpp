@@ -495,5 +495,23 @@ TEST(StepVerdict, IsChecksVerdictAndLimitAndBoundsALargeBody) {
   EXPECT_TRUE(at.advance(30).ran()) << "a run at the bound diverged";
 }
 
+// A scene giving every kind of spring the same stiffness and damping by kind is the scene giving
+// them as one number: --check's limits and verdict are the same (they were the world's kElastic's,
+// 500 N/m, whatever the table said).
+TEST(Stability, SpringsEqualByKindAreAnalysedAsTheirOneStiffness) {
+  const std::string head = "dt = 0.0005\ngravity = [0, 0, -9.81]\n[jelly]\n";
+  const WorldFile one = parseScene(head + "stiffness = 4000\ndamping = 2\n", "one.toml", "");
+  const WorldFile kinds =
+      parseScene(head +
+                     "stiffness = { structural = 4000, shear = 4000, bend = 4000 }\n"
+                     "damping = { structural = 2, shear = 2, bend = 2 }\n",
+                 "kinds.toml", "");
+  const StabilityReport a = analyseStability(one.world, one.state);
+  const StabilityReport b = analyseStability(kinds.world, kinds.state);
+  EXPECT_EQ(a.stableFraction, b.stableFraction);
+  for (Integrator integrator : kExplicitIntegrators)
+    EXPECT_DOUBLE_EQ(a.critical(integrator), b.critical(integrator)) << integratorName(integrator);
+}
+
 }  // namespace
 }  // namespace jello

@@ -16,11 +16,18 @@ scene=$scenes/sphere-drop.toml  # RK4, dt 0.0002 s, 25 steps a frame
 
 # The widget's centre from the trace's last line for it: "panel-trace: NAME X Y W H".
 place() { grep "^panel-trace: $1 " err | tail -1 | awk '{ printf "%d %d", $3 + 12, $4 + $6 / 2 }'; }
+# Clicks the widget where it is once it stays put for 0.3 s (a verdict arriving moves nothing
+# below it, but the trace of a frame drawn after it may come a moment later).
 click() {
   wait_for "[ -n \"\$(place $1)\" ]" 5 || fail "the panel has no $1"
-  read -r x y <<<"$(place "$1")"
-  xdotool mousemove --window "$window" "$x" "$y" >/dev/null 2>&1
-  sleep 0.2
+  local at=
+  for _ in 1 2 3 4 5; do
+    at=$(place "$1")
+    read -r x y <<<"$at"
+    xdotool mousemove --window "$window" "$x" "$y" >/dev/null 2>&1
+    sleep 0.3
+    [ "$(place "$1")" = "$at" ] && break
+  done
   xdotool click 1 >/dev/null 2>&1
   sleep 0.3
 }
