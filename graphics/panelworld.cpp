@@ -43,8 +43,10 @@ bool obstacleFields(Viewer& v, Obstacle& o, int i) {
                            kLargestSceneNumber, true);
   } else if (o.shape == ObstacleShape::Box) {
     Vec3 lower = o.lower, upper = o.upper;
-    if (vectorField(v, "lower, m", id + "lower", &lower, kLargestSceneNumber) |
-        vectorField(v, "upper, m", id + "upper", &upper, kLargestSceneNumber)) {
+    // Both corners drawn every frame (no short circuit): either may be edited.
+    const bool lowerEdited = vectorField(v, "lower, m", id + "lower", &lower, kLargestSceneNumber);
+    const bool upperEdited = vectorField(v, "upper, m", id + "upper", &upper, kLargestSceneNumber);
+    if (lowerEdited || upperEdited) {
       if (lower.x < upper.x && lower.y < upper.y && lower.z < upper.z)
         o.lower = lower, o.upper = upper, changed = true;
       else
