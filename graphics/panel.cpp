@@ -140,7 +140,9 @@ void applyDraft(Viewer& v, const RunSettings& run) {
   v.initial = v.state();  // a divergence from here is diagnosed from here
   v.lastGood = v.state();
   resumeDiverged(v);
-  const std::string what = textf("applied: %s dt %g s", integratorName(run.integrator), run.dt);
+  const std::string what =
+      textf("applied the changes: the run goes on with %s at dt %g s, %d steps a frame",
+            integratorName(run.integrator), run.dt, run.n);
   p.draft = draftOf(v);
   ++p.generation;  // the setup as it now runs is judged afresh
   askVerdict(v);
@@ -296,6 +298,10 @@ bool panelMouse(Viewer& v, int button, int state, int x, int y) {
   return p.dragging;
 }
 
+void panelWheel(Viewer& v, int wheel, int direction, int x, int y) {
+  if (v.panel) ImGui_ImplGLUT_MouseWheelFunc(wheel, direction, x, y);
+}
+
 bool panelMotion(Viewer& v, int x, int y) {
   if (!v.panel) return false;
   ImGui_ImplGLUT_MotionFunc(x, y);
@@ -305,10 +311,16 @@ bool panelMotion(Viewer& v, int x, int y) {
 // ---------------------------------------------------------------------------------------------
 // Widgets.
 
-// A widget's name in the trace and in messages: its ID after "##", or its label.
+// A widget's name in the trace: its ID after "##", or its label.
 std::string widgetName(const char* label) {
   const char* id = std::strstr(label, "##");
   return id ? id + 2 : label;
+}
+
+// Its name in messages: its label as shown, or its ID when it shows none.
+std::string shownName(const char* label) {
+  const std::size_t shown = std::strcspn(label, "#");
+  return shown > 0 ? std::string(label, shown) : widgetName(label);
 }
 
 void traceItem(Viewer& v, const char* label) {
@@ -334,7 +346,7 @@ bool numberField(Viewer& v, const char* label, double* value, double lowest, dou
   }
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
-  ImGui::InputText(label, buffer, sizeof buffer, ImGuiInputTextFlags_CharsScientific);
+  ImGui::InputText(label, buffer, sizeof buffer);  // every character kept: the reader judges
   text = buffer;
   traceItem(v, label);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
@@ -342,12 +354,36 @@ bool numberField(Viewer& v, const char* label, double* value, double lowest, dou
   std::string why;
   if (!parseWorldNumber(text, &typed, &why) || !(above ? typed > lowest : typed >= lowest) ||
       typed > highest) {
-    v.say(widgetName(label) + ": " + (why.empty() ? "" : why + "; ") + "expected a number from " +
+    v.say(shownName(label) + ": " + (why.empty() ? "" : why + "; ") + "expected a number from " +
           std::string(above ? "above " : "") + figureText(lowest) + " to " + figureText(highest));
     return false;
   }
   if (typed == *value) return false;
   *value = typed;
+  return true;
+}
+
+bool integerField(Viewer& v, const char* label, int* value, int lowest, int highest) {
+  const ImGuiID id = ImGui::GetID(label);
+  PanelState& p = panel(v);
+  std::string& text = p.fieldText[id];
+  if (ImGui::GetActiveID() != id) text = std::to_string(*value);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
+  ImGui::InputText(label, buffer, sizeof buffer);
+  text = buffer;
+  traceItem(v, label);
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
+  long long typed = 0;
+  std::string why;
+  if (!parseWorldInteger(text, &typed, &why) || typed < lowest || typed > highest) {
+    v.say(shownName(label) + ": " + (why.empty() ? "" : why + "; ") +
+          "expected a whole number from " + std::to_string(lowest) + " to " +
+          std::to_string(highest));
+    return false;
+  }
+  if (typed == *value) return false;
+  *value = static_cast<int>(typed);
   return true;
 }
 

@@ -34,6 +34,7 @@ bool panelSpecial(Viewer& v, int key, int x, int y);
 void panelSpecialUp(Viewer& v, int key, int x, int y);
 bool panelMouse(Viewer& v, int button, int state, int x, int y);
 bool panelMotion(Viewer& v, int x, int y);
+void panelWheel(Viewer& v, int wheel, int direction, int x, int y);
 
 // The window size from which the panel starts open, pixels.
 constexpr int kPanelOpenWidth = 960, kPanelOpenHeight = 600;

@@ -9,7 +9,9 @@ bool panelBuilt() { return false; }
 void startPanel(Viewer&) {}
 void stopPanel(Viewer&) {}
 void togglePanel(Viewer& v) {
-  v.say("this jello was built without Dear ImGui (libimgui-dev): it has no panel");
+  v.say(
+      "this jello was built without the panel (it needs Dear ImGui, libimgui-dev; "
+      "cmake -DJELLO_PANEL=OFF leaves it out)");
 }
 void drawPanel(Viewer&) {}
 void pollPanel(Viewer&) {}
@@ -19,5 +21,6 @@ bool panelSpecial(Viewer&, int, int, int) { return false; }
 void panelSpecialUp(Viewer&, int, int, int) {}
 bool panelMouse(Viewer&, int, int, int, int) { return false; }
 bool panelMotion(Viewer&, int, int) { return false; }
+void panelWheel(Viewer&, int, int, int, int) {}
 
 }  // namespace jello

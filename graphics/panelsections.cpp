@@ -159,12 +159,18 @@ void verdictButtons(Viewer& v, bool judged) {
 void verdictSection(Viewer& v) {
   PanelState& p = panel(v);
   // A region of fixed height: what follows never moves as verdicts come and go.
-  ImGui::BeginChild("verdict", ImVec2(0, 5.5f * ImGui::GetTextLineHeightWithSpacing()));
+  ImGui::BeginChild("verdict", ImVec2(0, 6.5f * ImGui::GetTextLineHeightWithSpacing()));
   const bool current = p.verdict && p.verdictGeneration == p.generation;
   ImGui::TextUnformatted(p.draft.changed ? "Changes, not applied yet:" : "The setup as it runs:");
   if (current) {
+    // A line a part ("unstable", "dt ... limit ...", "try dt ..."): wrapped whole, never inside
+    // a number.
     ImGui::PushStyleColor(ImGuiCol_Text, verdictColour(p.verdict->verdict));
-    ImGui::TextWrapped("%s", p.verdict->text.c_str());
+    std::string rest = p.verdict->text;
+    for (std::size_t cut; (cut = rest.find_first_of(":;")) != std::string::npos;
+         rest = rest.substr(std::min(cut + 2, rest.size())))
+      ImGui::TextUnformatted(rest.substr(0, cut).c_str());
+    ImGui::TextWrapped("%s", rest.c_str());
     ImGui::PopStyleColor();
     traceItem(v, "verdict");
     ImGui::TextDisabled("judged in %.2f s%s", p.verdictSeconds,
@@ -196,12 +202,11 @@ void runSection(Viewer& v) {
   if (numberField(v, "dt, s##run.dt", &p.draft.run.dt, 0, kLargestSceneNumber, true))
     draftChanged(v, false);
   int n = v.n;
-  if (ImGui::InputInt("steps a frame##run.n", &n, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue)) {
-    v.n = std::clamp(n, 1, kMostStepsPerFrame);
-    p.draft.run.n = v.n;
+  if (integerField(v, "steps a frame##run.n", &n, 1, kMostStepsPerFrame)) {
+    v.n = n;
+    p.draft.run.n = n;
     recountRun(v);
   }
-  traceItem(v, "run.n");
   ImGui::PopItemWidth();
   bool paused = v.paused;
   if (checkbox(v, "paused (p)##run.paused", &paused)) togglePause(v);
@@ -220,12 +225,17 @@ void jellySection(Viewer& v) {
   Draft& d = p.draft;
   const int jellies = std::max<int>(1, static_cast<int>(d.scene.jellies.size()));
   if (jellies > 1) {
-    ImGui::SliderInt("jelly##jelly.which", &p.jelly, 1 - 1, jellies - 1, "%d (from 0)");
+    int shown = p.jelly + 1;
+    const std::string of = "%d of " + std::to_string(jellies);
+    if (ImGui::SliderInt("jelly##jelly.which", &shown, 1, jellies, of.c_str())) p.jelly = shown - 1;
     traceItem(v, "jelly.which");
   }
   p.jelly = std::clamp(p.jelly, 0, jellies - 1);
   JellyFields f = jellyFields(d, p.jelly);
-  ImGui::Text("%s, made of %s", f.body->what.c_str(), materialInfo(f.material->kind).name);
+  ImGui::Text("%s, %s", f.body->what.c_str(),
+              f.material->elements()
+                  ? (std::string(materialInfo(f.material->kind).name) + " elements").c_str()
+                  : "springs");
   ImGui::PushItemWidth(120);
   if (f.material->elements())
     elementFields(v, d, f);
@@ -306,6 +316,10 @@ void saveSection(Viewer& v) {
   checkbox(v, "replace files##save.replace", &p.replace);
   ImGui::SameLine();
   if (!button(v, "save as##save")) return;
+  if (p.saveName[0] == '\0') {
+    v.say("give the scene's name first (NAME.toml)");
+    return;
+  }
   const RunSettings run{v.simulation.integrator(), v.simulation.dt(), v.n};
   try {
     writeScene(p.saveName, v.model.world, run, v.state(), p.replace);

@@ -86,6 +86,8 @@ void draftChanged(Viewer& v, bool physics);
 void traceItem(Viewer& v, const char* label);
 bool numberField(Viewer& v, const char* label, double* value, double lowest, double highest,
                  bool above = false);
+// A whole number typed in the world files' grammar, checked against [lowest, highest].
+bool integerField(Viewer& v, const char* label, int* value, int lowest, int highest);
 bool vectorField(Viewer& v, const char* shown, const std::string& name, Vec3* value,
                  double largest);
 

@@ -242,4 +242,6 @@ void motion(int x, int y) {
 
 void passiveMotion(int x, int y) { panelMotion(viewer(), x, y); }
 
+void wheel(int wheel, int direction, int x, int y) { panelWheel(viewer(), wheel, direction, x, y); }
+
 }  // namespace jello

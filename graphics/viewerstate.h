@@ -33,8 +33,11 @@ constexpr double kMinPullStiffness = 100;  // N/m
 constexpr double kMessageSeconds = 4;
 constexpr double kMaxCatchUpSeconds = 0.1;  // real-time pacing never steps more than this at once
 constexpr double kFrameBudgetSeconds = 1.0 / 30;  // nor spends more wall time than this per frame
-constexpr int kStepsBetweenClockReads = 16;       // how often real-time pacing looks at that budget
-constexpr double kRateSeconds = 0.5;              // steps per second are counted over this long
+constexpr int kStepsBetweenClockReads = 16;       // how often a frame looks at its budget
+// A frame of n steps that take longer than this is drawn with those done, the rest in the next
+// frames: the window answers keys within about this long, whatever n and the integrator.
+constexpr double kLongestFrameSeconds = 0.25;
+constexpr double kRateSeconds = 0.5;  // steps per second are counted over this long
 // While nothing runs, the idle callback naps this long: the CPU goes to a diagnosis under way
 // (and to other programs), and keys are still answered well within a frame.
 constexpr auto kStillNap = std::chrono::milliseconds(10);
@@ -161,5 +164,6 @@ void specialUp(int key, int x, int y);
 void mouse(int button, int state, int x, int y);
 void motion(int x, int y);
 void passiveMotion(int x, int y);
+void wheel(int wheel, int direction, int x, int y);
 
 }  // namespace jello

@@ -193,11 +193,10 @@ SavedSceneFiles savedSceneFiles(const std::string& scenePath, bool hasScene) {
 
 std::string formatScene(const World& world, const RunSettings& run, const SavedSceneFiles& files) {
   const std::string folder = folderOf(files.scene);
-  std::string out =
-      "# Saved by jello's window: read back, this scene, " + baseName(files.world) +
-      (files.state.empty() ? "" : " and " + baseName(files.state)) +
-      " give the same world and state, bit for bit.\nworld = " + quoted(baseName(files.world)) +
-      "\n";
+  std::string out = "# Saved by jello's window: this scene with " + baseName(files.world) +
+                    (files.state.empty() ? "" : " and " + baseName(files.state)) +
+                    " reads back as the same world and state, bit for bit.\nworld = " +
+                    quoted(baseName(files.world)) + "\n";
   out += "integrator = " + quoted(integratorName(run.integrator)) + "\ndt = " + number(run.dt) +
          "\nn = " + std::to_string(run.n) + "\n";
   const SceneSpec* spec = world.scene.get();

@@ -72,7 +72,7 @@ wait_for 'grep -q "the changes were discarded" err' 5 || fail "discard did nothi
 type_into run.dt 0.0001
 wait_for 'grep -q "change.s verdict after .*: stable: dt 0.0001 s" err' 15 || fail "no verdict on dt 0.0001"
 click apply
-wait_for 'grep -q "applied: RK4 dt 0.0001 s" err' 5 || fail "apply did not apply dt 0.0001"
+wait_for 'grep -q "applied the changes: the run goes on with RK4 at dt 0.0001 s" err' 5 || fail "apply did not apply dt 0.0001"
 for frame in 1 2 3 4; do
   click run.step
   wait_for "grep -q 'stepped 25 steps to step $((25 * frame))\$' err" 10 || fail "step a frame did not reach step $((25 * frame))"
