@@ -54,7 +54,8 @@ void startJob(Viewer& v) {
 
 void askVerdict(Viewer& v) {
   PanelState& p = panel(v);
-  if (p.job.valid() || p.jobGeneration == p.generation) return;
+  // None while the panel is closed (it opens on the setup's own verdict); at most one at a time.
+  if (!p.open || p.job.valid() || p.jobGeneration == p.generation) return;
   p.jobGeneration = p.generation;
   p.jobAsked = Clock::now();
   try {
@@ -173,7 +174,9 @@ void stopPanel(Viewer& v) {
   ImGui_ImplOpenGL2_Shutdown();
   ImGui_ImplGLUT_Shutdown();
   ImGui::DestroyContext();
-  if (v.panel->job.valid()) v.panel->job.wait();
+  // A verdict under way is not waited for here (ESC closes the window at once): the viewer keeps
+  // it, and waits for it once the window is gone.
+  if (v.panel->job.valid()) v.verdictLeft = std::move(v.panel->job);
   v.panel.reset();
 }
 
@@ -181,6 +184,7 @@ void togglePanel(Viewer& v) {
   if (!v.panel) return;
   v.panel->open = !v.panel->open;
   printError(v.panel->open ? "panel: open" : "panel: closed");
+  askVerdict(v);  // the draft's, or the setup's, when none was judged while it was closed
 }
 
 void pollPanel(Viewer& v) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/stepverdict.h"
 #include "app/export.h"
 #include "graphics/graphics.h"
 #include "graphics/layout.h"
@@ -111,6 +112,7 @@ struct Viewer {
   // The parameter panel (graphics/panel.h); none in a build without Dear ImGui. Shared, not unique:
   // its type is complete only in graphics/panel*.cpp.
   std::shared_ptr<PanelState> panel;
+  std::future<StepVerdict> verdictLeft;  // its verdict under way when it stopped (stopPanel)
 
   Viewer(const WorldFile& file, const RunOptions& run, const PictureOptions& pictures)
       : model(makeModel(file.world, file.state)),
