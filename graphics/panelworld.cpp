@@ -16,20 +16,6 @@ namespace jello {
 
 namespace {
 
-const char* obstacleName(ObstacleShape shape) {
-  switch (shape) {
-    case ObstacleShape::Sphere:
-      return "ball";
-    case ObstacleShape::Box:
-      return "box";
-    case ObstacleShape::HalfSpace:
-      return "plane";
-    case ObstacleShape::Container:
-      break;
-  }
-  return "bounding box";
-}
-
 // The fields of obstacle `i` (IDs obstacle.I.KEY, I from 1); true when one changed.
 bool obstacleFields(Viewer& v, Obstacle& o, int i) {
   const std::string id = "obstacle." + std::to_string(i + 1) + ".";
@@ -103,7 +89,7 @@ void obstaclesPart(Viewer& v) {
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
     const std::string title =
-        std::string(obstacleName(obstacles[i].shape)) + " " + std::to_string(i + 1);
+        std::string(obstacleShapeName(obstacles[i].shape)) + " " + std::to_string(i + 1);
     if (ImGui::TreeNode(title.c_str())) {
       if (obstacleFields(v, obstacles[i], static_cast<int>(i))) draftChanged(v, true);
       const std::string remove = "delete##obstacle." + std::to_string(i + 1) + ".delete";
@@ -122,7 +108,7 @@ void obstaclesPart(Viewer& v) {
   for (ObstacleShape shape :
        {ObstacleShape::Sphere, ObstacleShape::Box, ObstacleShape::HalfSpace}) {
     const std::string label =
-        std::string("add a ") + obstacleName(shape) + "##add." + obstacleName(shape);
+        std::string("add a ") + obstacleShapeName(shape) + "##add." + obstacleShapeName(shape);
     if (shape != ObstacleShape::Sphere) ImGui::SameLine();
     const bool add = ImGui::Button(label.c_str());
     traceItem(v, label.c_str());

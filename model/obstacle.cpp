@@ -7,6 +7,11 @@
 
 namespace jello {
 
+const char* obstacleShapeName(ObstacleShape shape) {
+  static const char* const kNames[] = {"sphere", "box", "plane", "bounding box"};
+  return kNames[static_cast<int>(shape)];
+}
+
 namespace {
 
 Vec3 axisVector(int axis, double sign) {
@@ -280,8 +285,7 @@ void ObstacleTerm::addEnergy(const double* p, double* energy) const {
 }
 
 void ObstacleTerm::summarise(std::vector<std::string>* kept, std::vector<std::string>*) const {
-  const char* names[] = {"sphere", "box", "plane", "bounding box"};
-  kept->push_back(std::string(names[static_cast<int>(obstacle_.shape)]) +
+  kept->push_back(std::string(obstacleShapeName(obstacle_.shape)) +
                   (obstacle_.friction.muStatic > 0 ? " with friction" : "") +
                   " (when the bounding box reaches it)");
 }

@@ -40,6 +40,9 @@ enum class ObstacleShape {
   Container,  // the points are kept INSIDE the box lower..upper (a scene's bounding box)
 };
 
+// "sphere", "box", "plane" or "bounding box": the scene file's words for the shapes.
+const char* obstacleShapeName(ObstacleShape shape);
+
 struct Obstacle {
   ObstacleShape shape = ObstacleShape::Sphere;
   Vec3 centre;         // Sphere, m
