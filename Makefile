@@ -93,15 +93,19 @@ vec-report:
 		$(CXX) -std=c++17 -O3 -DNDEBUG -march=native -ffp-contract=off -fno-math-errno -fno-trapping-math -I. \
 		-c $$f -o /dev/null -fopt-info-vec-optimized 2>&1 | grep "^$$f.*loop vectorized" | sort -t: -k2 -n -u; done
 
-# The force kernel and the RK4 step of the five course worlds, this tree against TAG (default
-# before-16, built once into build-before/): a markdown table of medians of interleaved runs. TAG
-# and ROUNDS reach the script through its environment, never through a shell command line.
-TAG ?= before-16
-ROUNDS ?= 5
+# The force kernel and the RK4 step of the five course worlds (scripts/bench-against), then of
+# lattices of 8^3 to 48^3 points and a voxelised model on 1, 2 and all the cores
+# (scripts/bench-bodies), this tree against TAG (default: the last commit before issue 30's grid
+# kernel and thread pool, built once into build-before/): markdown tables of medians of
+# interleaved runs. TAG and ROUNDS reach the scripts through their environment, never through a
+# shell command line.
+TAG ?= 65a1e66a6bee4627eed654cc59d94c4ae3d7e24a
+ROUNDS ?= 3
 bench: export BENCH_TAG = $(TAG)
 bench: export BENCH_ROUNDS = $(ROUNDS)
 bench: programs
 	scripts/bench-against
+	scripts/bench-bodies
 
 # The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
 fuzz: deps

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/assert.h"
-#include "core/team.h"
+#include "core/threadpool.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
 
@@ -61,30 +61,22 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
 
 namespace {
 
-// The two threads' ranges: for the row kernel balancedSplitPoint; for the spring list, whose
-// points cost alike, halves (the first a multiple of kRangeAlignment points).
-PointRange teamPart(const Model& model, int part) {
-  static const int rowSplit = balancedSplitPoint();
-  const int n = model.points();
-  const int split = model.forces.springs->rowKernel()
-                        ? rowSplit
-                        : (n / 2 + kRangeAlignment / 2) / kRangeAlignment * kRangeAlignment;
-  return part == 0 ? PointRange{0, split} : PointRange{split, n};
-}
-
-// With two threads, a spring list's forces are computed a spring at a time, half the springs
-// each, before the points' ranges gather them (each spring once, where a range alone computes the
-// springs of its points, each at both ends). Into this thread's buffer, grown once. Null for the
-// row kernel, whose rows split as they are.
-const double* listedSpringForces(const Model& model, const double* p, const double* v, Team* team) {
+// With several threads, a spring list's forces are computed a spring at a time, an equal share of
+// the springs each, before the points' ranges gather them (each spring once, where a range alone
+// computes the springs of its points, each at both ends). Into this thread's buffer, grown once.
+// Null for the row and grid kernels, whose ranges compute their own.
+const double* listedSpringForces(const Model& model, const double* p, const double* v,
+                                 const Workers& workers) {
   const SpringTerm& springs = *model.forces.springs;
-  if (springs.rowKernel()) return nullptr;
+  if (!springs.listKernel()) return nullptr;
   thread_local std::vector<double> buffer;
-  const int count = static_cast<int>(springs.springs().size());
+  const long long count = static_cast<long long>(springs.springs().size());
   if (buffer.size() < std::size_t(3 * count)) buffer.resize(3 * count);
   double* out = buffer.data();
-  team->run([&](int part) {
-    springs.listSpringForces(part == 0 ? 0 : count / 2, part == 0 ? count / 2 : count, p, v, out);
+  const int parts = workers.threads();
+  workers.pool->run(parts, [&](int part) {
+    springs.listSpringForces(static_cast<int>(count * part / parts),
+                             static_cast<int>(count * (part + 1) / parts), p, v, out);
   });
   return out;
 }
@@ -119,31 +111,63 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
 
 }  // namespace
 
-void computeForces(const Model& model, const double* p, const double* v, double* force,
-                   const Pull* pull, Team* team) {
-  const Bounds box = model.forces.culling ? boundsOf(p, model.points()) : Bounds{};
-  const Bounds* reach = model.forces.culling ? &box : nullptr;
-  if (!team)
-    computeForcesOn(model, {0, model.points()}, p, v, reach, force, pull);
-  else {
-    const double* springForce = listedSpringForces(model, p, v, team);
-    team->run([&](int part) {
-      computeForcesOn(model, teamPart(model, part), p, v, reach, force, pull, springForce);
-    });
-  }
+int threadsFor(const Model& model, int most) {
+  return std::max(1, std::min(most, model.points() / kPointsPerThread));
 }
 
-void derivative(const Model& model, const double* y, double* dydt, const Pull* pull, Team* team) {
+Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
+  Workers workers{pool, {}};
+  const int n = model.points();
+  int threads = pool ? pool->threads() : 1;
+  if (bySize) threads = threadsFor(model, threads);
+  if (threads <= 1) return workers;
+  // Each point costs its springs' slots and one more for the other terms: the ranges split the
+  // total evenly, on multiples of kRangeAlignment.
+  const SpringTerm& springs = *model.forces.springs;
+  const int groups = (n + kRangeAlignment - 1) / kRangeAlignment;
+  std::vector<long long> before(groups + 1, 0);  // the cost of the groups of points before
+  for (int group = 0; group < groups; ++group) {
+    const PointRange r{group * kRangeAlignment, std::min(n, (group + 1) * kRangeAlignment)};
+    before[group + 1] = before[group] + springs.costOf(r) + (r.end - r.begin);
+  }
+  int begin = 0;
+  for (int t = 1; t <= threads; ++t) {
+    const long long share = before.back() * t / threads;
+    int group =
+        static_cast<int>(std::lower_bound(before.begin(), before.end(), share) - before.begin());
+    const int end = t == threads ? n : std::min(n, group * kRangeAlignment);
+    if (end > begin) workers.parts.push_back({begin, end});
+    begin = std::max(begin, end);
+  }
+  return workers;
+}
+
+void computeForces(const Model& model, const double* p, const double* v, double* force,
+                   const Pull* pull, const Workers* workers) {
+  const Bounds box = model.forces.culling ? boundsOf(p, model.points()) : Bounds{};
+  const Bounds* reach = model.forces.culling ? &box : nullptr;
+  if (!workers || workers->threads() == 1) {
+    computeForcesOn(model, {0, model.points()}, p, v, reach, force, pull);
+    return;
+  }
+  const double* springForce = listedSpringForces(model, p, v, *workers);
+  workers->pool->run(workers->threads(), [&](int part) {
+    computeForcesOn(model, workers->parts[part], p, v, reach, force, pull, springForce);
+  });
+}
+
+void derivative(const Model& model, const double* y, double* dydt, const Pull* pull,
+                const Workers* workers) {
   const Bounds box = model.forces.culling ? boundsOf(y, model.points()) : Bounds{};
   const Bounds* reach = model.forces.culling ? &box : nullptr;
-  if (!team)
+  if (!workers || workers->threads() == 1) {
     derivativeOn(model, {0, model.points()}, y, reach, dydt, pull, nullptr);
-  else {
-    const double* springForce = listedSpringForces(model, y, y + model.coords(), team);
-    team->run([&](int part) {
-      derivativeOn(model, teamPart(model, part), y, reach, dydt, pull, springForce);
-    });
+    return;
   }
+  const double* springForce = listedSpringForces(model, y, y + model.coords(), *workers);
+  workers->pool->run(workers->threads(), [&](int part) {
+    derivativeOn(model, workers->parts[part], y, reach, dydt, pull, springForce);
+  });
 }
 
 int findDivergedPoint(const State& state) {
@@ -162,7 +186,7 @@ int findDivergedPoint(const State& state) {
 OdeSystem jelloSystem(const JelloInputs& inputs) {
   OdeSystem system;
   system.derivative = [&inputs](const double* y, double* dydt) {
-    derivative(*inputs.model, y, dydt, inputs.pull, inputs.team);
+    derivative(*inputs.model, y, dydt, inputs.pull, inputs.workers);
   };
   system.newtonMatrix = [&inputs](const double* y, double cv, double cp, NewtonBlocks& matrix) {
     newtonBlocks(*inputs.model, y, y + inputs.model->coords(), inputs.pull, cv, cp, &matrix);
@@ -170,9 +194,10 @@ OdeSystem jelloSystem(const JelloInputs& inputs) {
   return system;
 }
 
-void Stepper::step(const Model& model, State& state, double dt, const Pull* pull, Team* team) {
+void Stepper::step(const Model& model, State& state, double dt, const Pull* pull,
+                   const Workers* workers) {
   JELLO_ASSERT(state.points() == model.points());
-  const JelloInputs inputs{&model, pull, team};
+  const JelloInputs inputs{&model, pull, workers};
   step(jelloSystem(inputs), state.y, dt);
 }
 

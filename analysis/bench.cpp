@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/team.h"
+#include "core/threadpool.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -27,10 +27,10 @@ using Clock = std::chrono::steady_clock;
 
 using Work = std::function<void(long long)>;
 
-// A kernel timed: a model's, on this thread alone or with a team.
+// A kernel timed: a model's, on this thread alone or with a pool's threads, all of them.
 struct Kernel {
   const Model* model;
-  Team* team;  // null: one thread
+  ThreadPool* pool;  // null: one thread
 };
 
 // Seconds per call of each work(count), the medians over `repeats` runs of each. The works
@@ -87,7 +87,7 @@ std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const Stat
   for (const Kernel& kernel : kernels) {
     simulations.push_back(
         std::make_unique<Simulation>(*kernel.model, initial, settings, run.tolerances));
-    simulations.back()->setTeam(kernel.team);
+    simulations.back()->setPool(kernel.pool, false);
   }
   std::vector<Work> works;
   for (std::size_t m = 0; m < kernels.size(); ++m) {
@@ -112,9 +112,10 @@ std::vector<double> timeForces(const std::vector<Kernel>& kernels, const State& 
   std::vector<double> force(state.coords());
   std::vector<Work> works;
   for (const Kernel& kernel : kernels) {
-    works.push_back([&, kernel](long long count) {
+    const Workers workers = workersFor(*kernel.model, kernel.pool, false);
+    works.push_back([&, kernel, workers](long long count) {
       for (long long i = 0; i < count; ++i)
-        computeForces(*kernel.model, state.p(), state.v(), force.data(), nullptr, kernel.team);
+        computeForces(*kernel.model, state.p(), state.v(), force.data(), nullptr, &workers);
     });
   }
   return medianSecondsPerCall(works, fixedCount, repeats);
@@ -144,22 +145,35 @@ std::string machineDescription() {
 
 namespace {
 
+// What --bench times, in its columns' order: the specialised kernel on one thread, the general
+// one (the reference), the specialised kernel on two threads and on all the cores (when there
+// are more than two).
+struct Columns {
+  std::vector<Kernel> kernels;
+  std::vector<std::string> names;
+};
+
 // One integrator's row: the step it was timed at (the world's, or the largest of dt/2, dt/4, ...
-// at which it does not diverge) and its timings with the specialised kernel, the general one and
-// the specialised one on two threads.
+// at which it does not diverge) and its timings with each kernel.
 struct BenchRow {
   Integrator integrator = Integrator::RK4;
   double dt = 0;
-  StepTiming specialised, general, team;
+  std::vector<StepTiming> timings;
 };
 
 // What --bench measured.
 struct BenchFigures {
   int repeats = 0;
-  double forces[3] = {0, 0, 0};  // s per evaluation: specialised, general, two threads
-  double loading = 0;            // s to parse the world's text
+  std::vector<double> forces;  // s per evaluation, by column
+  double loading = 0;          // s to parse the world's text
   std::vector<BenchRow> rows;
 };
+
+bool anyDiverged(const std::vector<StepTiming>& timings) {
+  for (const StepTiming& t : timings)
+    if (t.diverged) return true;
+  return false;
+}
 
 // Each integrator's steps, timed (a diverging run would time arithmetic on huge numbers).
 BenchRow timeIntegrator(const std::vector<Kernel>& kernels, const State& initial,
@@ -171,23 +185,18 @@ BenchRow timeIntegrator(const std::vector<Kernel>& kernels, const State& initial
   constexpr int kHalvings = 12;
   RunSettings settings{row.integrator, world.dt, world.n};
   std::vector<StepTiming> timings = timeSteps(kernels, initial, settings, run, steps, repeats);
-  for (int h = 0; h < kHalvings && (timings[0].diverged || timings[1].diverged); ++h) {
+  for (int h = 0; h < kHalvings && anyDiverged(timings); ++h) {
     settings.dt /= 2;
     timings = timeSteps(kernels, initial, settings, run, steps, repeats);
   }
-  return {row.integrator, settings.dt, timings[0], timings[1], timings[2]};
+  return {row.integrator, settings.dt, timings};
 }
 
-BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Model& specialised,
-                          const Model& general) {
+BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Columns& columns) {
   BenchFigures figures;
   const long long fixed = run.steps ? std::max(1LL, *run.steps) : 0;
   figures.repeats = run.steps ? 3 : kBenchRepeats;
-  Team team;
-  const std::vector<Kernel> kernels = {
-      {&specialised, nullptr}, {&general, nullptr}, {&specialised, &team}};
-  const std::vector<double> forces = timeForces(kernels, file.state, fixed, figures.repeats);
-  std::copy(forces.begin(), forces.end(), figures.forces);
+  figures.forces = timeForces(columns.kernels, file.state, fixed, figures.repeats);
   // The world's text is parsed from memory: the file itself may be a pipe, read once already. A
   // world file holds the course cube only: a scene's other jelly has no such text to parse.
   figures.loading = NAN;
@@ -199,20 +208,44 @@ BenchFigures measureBench(const RunOptions& run, const WorldFile& file, const Mo
                                            }},
                                            run.steps ? 1 : 0, figures.repeats)[0];
   }
+  // --integrator NAME times that one alone (a large body's IMPLICIT steps take seconds).
   for (const IntegratorInfo& row : integratorTable())
-    figures.rows.push_back(
-        timeIntegrator(kernels, file.state, row, file.run, run, fixed, figures.repeats));
+    if (!run.integrator || *run.integrator == row.integrator)
+      figures.rows.push_back(
+          timeIntegrator(columns.kernels, file.state, row, file.run, run, fixed, figures.repeats));
   return figures;
 }
 
+// The table's head: a name column, then each kernel's column (with its speed-up against the
+// first, except the general one's, whose speed-up is the first's against it).
+void printHead(const char* title, const Columns& c, const char* last) {
+  std::printf("%-22s", title);
+  for (std::size_t k = 0; k < c.names.size(); ++k) {
+    std::printf(" %14s", c.names[k].c_str());
+    if (k > 0) std::printf(" %9s", "speed-up");
+  }
+  std::printf("%s\n", last);
+}
+void printTimes(const char* name, const std::vector<double>& seconds, double scale,
+                const char* unit) {
+  std::printf("%-22s", name);
+  for (std::size_t k = 0; k < seconds.size(); ++k) {
+    std::printf(" %11.2f%s", seconds[k] * scale, unit);
+    if (k == 1) std::printf(" %8.2fx", seconds[1] / seconds[0]);
+    if (k > 1) std::printf(" %8.2fx", seconds[0] / seconds[k]);
+  }
+}
+
 void printBench(const RunOptions& run, const WorldFile& file, const Model& specialised,
-                const BenchFigures& f) {
+                const Columns& columns, int runThreads, const BenchFigures& f) {
   std::printf("%s\n", termsLine(specialised.forces).c_str());
   std::printf("bench %s on %s\n", run.worldPath.c_str(), machineDescription().c_str());
+  const int points = specialised.points();
   std::printf(
-      "medians of %d runs each, the kernels taking turns, from the initial state at dt=%.9g s;\n"
-      "general = every term at every point\n\n",
-      f.repeats, file.run.dt);
+      "%d points; medians of %d runs each, the kernels taking turns, from the initial state at "
+      "dt=%.9g s;\ngeneral = every term at every point, the springs from their list; a run of "
+      "this body uses %d thread%s (--threads, and one for each %d points)\n\n",
+      points, f.repeats, file.run.dt, runThreads, runThreads == 1 ? "" : "s", kPointsPerThread);
   const World& world = file.world;
   if (std::isnan(f.loading))
     std::printf("%-22s %14s  (a scene's jelly other than the course cube: no world file)\n",
@@ -222,26 +255,23 @@ void printBench(const RunOptions& run, const WorldFile& file, const Model& speci
                 world.field.resolution > 0
                     ? (std::to_string(world.field.resolution) + "^3 field nodes").c_str()
                     : "no field");
-  const double forcesS = f.forces[0], forcesG = f.forces[1], forcesT = f.forces[2];
-  std::printf("%-22s %14s %14s %9s %14s %9s\n", "", "specialised", "general", "speed-up",
-              "two threads", "speed-up");
-  std::printf("%-22s %11.2f us %11.2f us %8.2fx %11.2f us %8.2fx\n", "force evaluation",
-              forcesS * 1e6, forcesG * 1e6, forcesG / forcesS, forcesT * 1e6, forcesS / forcesT);
-  std::printf("%-22s %14.0f %14.0f %9s %14.0f\n", "evaluations per second", 1 / forcesS,
-              1 / forcesG, "", 1 / forcesT);
-  std::printf("\n%-22s %14s %14s %9s %14s %9s  %s\n", "us per step", "specialised", "general",
-              "speed-up", "two threads", "speed-up", "evaluations/step");
+  printHead("", columns, "");
+  printTimes("force evaluation", f.forces, 1e6, " us");
+  std::printf("\n");
+  printTimes("  per point", f.forces, 1e9 / points, " ns");
+  std::printf("\n");
+  printHead("\nus per step", columns, "  evaluations/step");
   for (const BenchRow& r : f.rows) {
-    const StepTiming &s = r.specialised, &g = r.general, &t = r.team;
+    std::vector<double> seconds;
+    for (const StepTiming& t : r.timings) seconds.push_back(t.seconds);
     char note[96] = "";
-    if (s.diverged || g.diverged)
+    if (anyDiverged(r.timings))
       std::snprintf(note, sizeof note, "  (diverges even at dt=%.3g)", r.dt);
     else if (r.dt != file.run.dt)
       std::snprintf(note, sizeof note, "  (diverges at dt=%.3g; timed at dt=%.3g)", file.run.dt,
                     r.dt);
-    std::printf("%-22s %14.2f %14.2f %8.2fx %14.2f %8.2fx  %.1f%s\n", integratorName(r.integrator),
-                s.seconds * 1e6, g.seconds * 1e6, g.seconds / s.seconds, t.seconds * 1e6,
-                s.seconds / t.seconds, s.evaluationsPerStep, note);
+    printTimes(integratorName(r.integrator), seconds, 1e6, "   ");
+    std::printf("  %.1f%s\n", r.timings[0].evaluationsPerStep, note);
   }
 }
 
@@ -252,8 +282,18 @@ Outcome runBench(const RunOptions& run) {
   if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
   const Model specialised = makeModel(file.world, file.state, KernelChoice::Specialised);
   const Model general = makeModel(file.world, file.state, KernelChoice::General);
-  const BenchFigures figures = measureBench(run, file, specialised, general);
-  printBench(run, file, specialised, figures);
+  const int cores = availableCores();
+  ThreadPool two(2), all(cores);
+  Columns columns{{{&specialised, nullptr}, {&general, nullptr}, {&specialised, &two}},
+                  {"one thread", "general", "2 threads"}};
+  if (cores > 2) {
+    columns.kernels.push_back({&specialised, &all});
+    columns.names.push_back(std::to_string(cores) + " threads");
+  }
+  ThreadPool runPool(run.threads);
+  const int runThreads = workersFor(specialised, &runPool).threads();
+  const BenchFigures figures = measureBench(run, file, columns);
+  printBench(run, file, specialised, columns, runThreads, figures);
   return succeeded();
 }
 

@@ -15,6 +15,7 @@
 #include "analysis/stability.h"
 #include "core/output.h"
 #include "core/progress.h"
+#include "core/threadpool.h"
 #include "io/scenereader.h"
 #include "io/statefile.h"
 #include "solver/integrators.h"
@@ -252,6 +253,8 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
 
   const Model model = makeModel(world, file.state, options.kernel);
   Simulation simulation(model, file.state, file.run, options.tolerances);
+  ThreadPool pool(threadsFor(model, options.threads));
+  simulation.setPool(&pool);
   RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();
   const auto showFrame = [&] {

@@ -55,6 +55,9 @@ constexpr double kLargestDensity = 1e5;    // kg/m^3 (osmium: 22,590)
 // a step, so no run meant to finish asks for more; and up to it a step count, and the time
 // s * dt of step s, are exact in a double (2^53 ~ 9e15) and far from long long's limit.
 constexpr double kMaxSteps = 1e12;
+// The most threads --threads may ask for (a run uses at most one for each kPointsPerThread
+// points, solver/physics.h, and at most the cores available by default).
+constexpr int kMostThreads = 256;
 // The default length of a run: 300 drawn frames of n steps each, or, when frames are saved by
 // simulated time (--fps), as long as --max-frames of them take.
 constexpr long long kDefaultFrames = 300;

@@ -7,12 +7,14 @@
 
 #include <chrono>
 #include <future>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "analysis/stepverdict.h"
 #include "app/export.h"
+#include "core/threadpool.h"
 #include "graphics/graphics.h"
 #include "graphics/layout.h"
 #include "graphics/showCube.h"
@@ -56,6 +58,9 @@ struct PanelState;  // graphics/panelstate.h: only a build with Dear ImGui makes
 struct Viewer {
   Model model;
   State initial;
+  // The threads the simulation shares its evaluations between (as many as the body's size makes
+  // worth it, at most --threads); declared before the simulation, which refers to it.
+  std::unique_ptr<ThreadPool> pool;
   Simulation simulation;  // of `model`, declared after it
   Tolerances tolerances;  // RK45's, for the message when they cannot be met
   State lastGood;         // the state before the current frame's steps, shown if they diverge
@@ -129,6 +134,8 @@ struct Viewer {
         width(pictures.width),
         height(pictures.height) {
     draw.colouring = static_cast<Colouring>(pictures.colouring);
+    pool = std::make_unique<ThreadPool>(threadsFor(model, run.threads));
+    simulation.setPool(pool.get());
   }
 
   double time() const { return simulation.time(); }

@@ -89,7 +89,8 @@ ForceTerms buildForceTerms(const World& world, const State& initial,
   else
     byPart.push_back(springConstantsOf(world));
   for (const SpringConstants& c : byPart) damping = damping || c.anyDamping();
-  auto springs = std::make_unique<SpringTerm>(body, std::move(byPart), general || damping);
+  auto springs = std::make_unique<SpringTerm>(body, std::move(byPart), general || damping,
+                                              general ? SpringKernel::List : SpringKernel::Fastest);
   forces.springs = springs.get();
   forces.terms.push_back(std::move(springs));
   if (hasElements(world)) {

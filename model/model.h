@@ -25,8 +25,6 @@
 
 namespace jello {
 
-class Team;  // core/team.h
-
 // Which force kernel a model uses: the one made for its scene, or the one that computes every
 // term everywhere (the reference the specialisations are tested and timed against).
 enum class KernelChoice { Specialised, General };

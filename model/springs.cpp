@@ -243,41 +243,33 @@ void addSpringForces(const Inputs& in, PointRange points, double* force) {
 
 }  // namespace
 
-int balancedSplitPoint() {
-  constexpr int rows = kNumPoints / kLatticeSize;
-  // Slots computed: a row's own, for each offset whose neighbours' row exists, and before the
-  // second range its warm-up's (warmOffset's units, counted in rows as the kernel has them).
-  auto slots = [](int row) {
-    int n = 0;
-    for (const SpringOffset& o : kSpringOffsets) n += rowHasSprings(o, row);
-    return n;
-  };
-  auto warmUp = [](int firstRow) {
-    int n = 0;
-    for (const SpringOffset& o : kSpringOffsets)
-      for (int row = std::max(0, firstRow - (springDelta(o) + kLatticeSize - 1) / kLatticeSize);
-           row < firstRow; ++row)
-        n += rowHasSprings(o, row);
-    return n;
-  };
-  int best = rows / 2, bestCost = kNumPoints * kOffsets;
-  for (int split = 1; split < rows; ++split) {
-    int first = 0, second = warmUp(split);
-    for (int row = 0; row < rows; ++row) (row < split ? first : second) += slots(row);
-    if (std::max(first, second) < bestCost) bestCost = std::max(first, second), best = split;
+SpringTerm::SpringTerm(const Body& body, const SpringConstants& constants, bool dampers,
+                       SpringKernel kernel)
+    : SpringTerm(body, std::vector<SpringConstants>{constants}, dampers, kernel) {}
+
+namespace {
+
+// Each offset's constants for springs of `constants` on a grid of `spacing`.
+OffsetConstants offsetConstants(const SpringConstants& constants, double spacing) {
+  OffsetConstants out;
+  for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) {
+    const int kind = static_cast<int>(kSpringOffsets[o].kind);
+    out.minusK[o] = -constants.k[kind];
+    out.minusD[o] = -constants.d[kind];
+    out.rest[o] = restLength(kSpringOffsets[o], spacing);
   }
-  return best * kLatticeSize;
+  return out;
 }
 
-SpringTerm::SpringTerm(const Body& body, const SpringConstants& constants, bool dampers)
-    : SpringTerm(body, std::vector<SpringConstants>{constants}, dampers) {}
+}  // namespace
 
-SpringTerm::SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers)
+SpringTerm::SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers,
+                       SpringKernel kernel)
     : ForceTerm(body.count()),
       body_(body),
       c_(std::move(byPart)),
       dampers_(dampers),
-      rowKernel_(c_.size() == 1 && courseSprings(body, c_[0])) {
+      rowKernel_(kernel == SpringKernel::Fastest && c_.size() == 1 && courseSprings(body, c_[0])) {
   JELLO_ASSERT(c_.size() == (body.joined() ? body.parts.size() : 1u));
   for (std::size_t o = 0; o < kSpringOffsets.size(); ++o) rests_[o] = restLength(kSpringOffsets[o]);
   // Each point's springs in the list's order: counted, then placed.
@@ -290,6 +282,19 @@ SpringTerm::SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bo
   for (int s = 0; s < static_cast<int>(body.springs.size()); ++s) {
     springsOf_[next[body.springs[s].a]++] = s;
     springsOf_[next[body.springs[s].b]++] = s;
+  }
+  if (kernel == SpringKernel::List || rowKernel_ || body.springs.empty()) return;
+  std::vector<const Body*> parts;
+  for (const auto& part : body.parts) parts.push_back(part.get());
+  if (parts.empty()) parts.push_back(&body);
+  for (std::size_t part = 0; part < parts.size(); ++part) {
+    grids_.emplace_back(*parts[part]);
+    offsetConstants_.push_back(offsetConstants(c_[part], parts[part]->spacing));
+    if (!grids_.back().represents()) {  // a body the grid kernel does not know: the list
+      grids_.clear();
+      offsetConstants_.clear();
+      return;
+    }
   }
 }
 
@@ -367,8 +372,36 @@ void SpringTerm::addListedForces(PointRange points, const double* springForce,
       force);
 }
 
+// Each part's points of the range, through its grid (a body that is not joined: its one part).
+void SpringTerm::addGridForces(PointRange points, const double* p, const double* v,
+                               double* force) const {
+  const int n = pointCount();
+  for (std::size_t part = 0; part < grids_.size(); ++part) {
+    const int first = body_.joined() ? body_.partFirst[part] : 0;
+    const int end = first + grids_[part].points();
+    const PointRange mine{std::max(points.begin, first) - first, std::min(points.end, end) - first};
+    if (mine.begin >= mine.end) continue;
+    grids_[part].addForces(mine, {p + first, v + first, force + first, n}, offsetConstants_[part],
+                           dampers_);
+  }
+}
+
+long long SpringTerm::costOf(PointRange points) const {
+  if (rowKernel_) return 16LL * (points.end - points.begin);
+  if (grids_.empty()) return springsStart_[points.end] - springsStart_[points.begin];
+  long long slots = 0;
+  for (std::size_t part = 0; part < grids_.size(); ++part) {
+    const int first = body_.joined() ? body_.partFirst[part] : 0;
+    const int end = first + grids_[part].points();
+    const PointRange mine{std::max(points.begin, first) - first, std::min(points.end, end) - first};
+    if (mine.begin < mine.end) slots += grids_[part].slotsFor(mine);
+  }
+  return slots;
+}
+
 void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                              double* force) const {
+  if (!grids_.empty()) return addGridForces(points, p, v, force);
   if (!rowKernel_) return addListForces(points, p, v, force);
   // The row kernel is the course cube's: 512 points, ranges of whole lattice rows.
   JELLO_ASSERT(pointCount() == kNumPoints);

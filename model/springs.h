@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/body.h"
+#include "model/springgrid.h"
 #include "model/term.h"
 
 namespace jello {
@@ -30,11 +31,6 @@ constexpr bool slotKept(const SpringOffset& o, int lane) {
 // The course cube's springs one by one (6,220; courseBody's), grouped by offset in the order of
 // kSpringOffsets, each group in the order of its points a: the kernel's kept slots.
 const std::vector<Spring>& buildSprings();
-
-// Where two threads split the kernel's rows so that each has as many slots to compute: the first
-// point of the second range. The second range also computes again the slots of the rows just
-// before it whose springs end in it (the kernel's rings), so it is the shorter.
-int balancedSplitPoint();
 
 // Spring and damper, as magnitudes along u = L/|L| (positive pushes a away from b).
 inline double springTension(double len, double k, double rest) { return -k * (len - rest); }
@@ -67,22 +63,35 @@ inline bool courseSprings(const Body& body, const SpringConstants& constants) {
   return body.courseLattice && constants.uniform();
 }
 
+// How a SpringTerm computes its forces: the kernels made for its body (the row kernel for the
+// course cube with one stiffness and one damping, the grid kernel of springgrid.h for any other
+// grid body), or the spring list alone (the reference the kernels are tested and timed against).
+enum class SpringKernel { Fastest, List };
+
 // All the springs of a body (body.h). The course cube with one stiffness and one damping goes
-// through the row kernel above; any other body through the spring list: on all its points a pass
+// through the row kernel above; any other grid body (a joined body's part by part) through the
+// grid kernel (springgrid.h); the reference through the spring list: on all its points a pass
 // over the springs in their order, adding each spring's force to its end a and taking it from its
 // end b; on a range of points, each point's springs in the same order (each spring is computed at
-// both its ends), which rounds alike. Both sum docs/physics.md's order, as the row kernel does.
-// Without dampers (no damping, and not the reference) the kernel leaves their term out.
+// both its ends), which rounds alike. All sum docs/physics.md's order, bit for bit alike.
+// Without dampers (no damping, and not the reference) the kernels leave their term out.
 class SpringTerm final : public ForceTerm {
  public:
-  SpringTerm(const Body& body, const SpringConstants& constants, bool dampers);
+  SpringTerm(const Body& body, const SpringConstants& constants, bool dampers,
+             SpringKernel kernel = SpringKernel::Fastest);
   // A joined body's (Body::parts): each part's springs with its own constants.
-  SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers);
+  SpringTerm(const Body& body, std::vector<SpringConstants> byPart, bool dampers,
+             SpringKernel kernel = SpringKernel::Fastest);
   const std::vector<Spring>& springs() const { return body_.springs; }
   // The constants of the springs of part `part` (0 for one body).
   const SpringConstants& constants(int part = 0) const { return c_[part]; }
-  // Whether the row kernel computes the forces (else the spring list does).
+  // Whether the row kernel computes the forces; whether the spring list does (else the row or the
+  // grid kernel).
   bool rowKernel() const { return rowKernel_; }
+  bool listKernel() const { return !rowKernel_ && grids_.empty(); }
+  // The slots the kernel computes for a range of points (its cost, for splitting a body between
+  // threads): for the spring list, each point's springs.
+  long long costOf(PointRange points) const;
   // The spring list in two passes, for two threads: each spring's force on its end a, for the
   // springs [first, end), into springForce (3 doubles a spring, xyz); then on a range of points,
   // each point's springs' forces from it, added in the list's order: what addForcesOn adds there,
@@ -104,6 +113,7 @@ class SpringTerm final : public ForceTerm {
 
  private:
   void addListForces(PointRange points, const double* p, const double* v, double* force) const;
+  void addGridForces(PointRange points, const double* p, const double* v, double* force) const;
   // Adds to each point of `points` its springs' forces forceOf(spring), in the list's order.
   template <class ForceOf>
   void gather(PointRange points, const ForceOf& forceOf, double* force) const;
@@ -114,6 +124,9 @@ class SpringTerm final : public ForceTerm {
   std::array<double, kSpringOffsets.size()> rests_;  // m, restLength of each offset
   // Each point's springs, in their order: springsOf_[springsStart_[q] .. springsStart_[q + 1]).
   std::vector<int> springsStart_, springsOf_;
+  // The grid kernel's layout and constants, a part each (none: the row kernel or the list).
+  std::vector<SpringGrid> grids_;
+  std::vector<OffsetConstants> offsetConstants_;
 };
 
 }  // namespace jello

@@ -33,7 +33,7 @@ Bounds boundsOf(const double* p, int points);
 // 8 points at a time stay aligned; whole lattice rows in the course cube), end one too or the last
 // point's. Every result is computed point by point in the same order whatever the range: the
 // forces on a range are those of the whole call there, bit for bit, which lets two threads share
-// an evaluation (core/team.h).
+// an evaluation (core/threadpool.h).
 struct PointRange {
   int begin = 0, end = 0;
 };

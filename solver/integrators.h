@@ -18,7 +18,7 @@
 
 namespace jello {
 
-class Team;           // core/team.h
+struct Workers;       // physics.h
 struct NewtonBlocks;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
 struct OdeSystem {
@@ -107,7 +107,7 @@ class Stepper {
   void step(const OdeSystem& system, std::vector<double>& y, double dt);
   // The jello: one step of the model, with the user's pull if any (defined by physics.cpp).
   void step(const Model& model, State& state, double dt, const Pull* pull = nullptr,
-            Team* team = nullptr);
+            const Workers* workers = nullptr);
 
   Integrator integrator() const { return integrator_; }
   const StepStats& stats() const;

@@ -6,20 +6,42 @@
 // force ON the point it is asked about (model/term.h).
 #pragma once
 
+#include <vector>
+
 #include "model/model.h"
 #include "model/world.h"
 #include "solver/integrators.h"
 
 namespace jello {
 
-class Team;  // core/team.h
+class ThreadPool;  // core/threadpool.h
+
+// How a model's evaluations are shared between threads: the pool, and the ranges of points that
+// are its parts (each one a thread's at a time), in order, covering the points. No pool, or one
+// part: this thread alone.
+struct Workers {
+  ThreadPool* pool = nullptr;
+  std::vector<PointRange> parts;
+  int threads() const { return pool && parts.size() > 1 ? static_cast<int>(parts.size()) : 1; }
+};
+// The fewest points a thread is given: a body of fewer than twice as many is computed by one
+// thread, which measured faster (docs/performance.md, "Threads").
+constexpr int kPointsPerThread = 8192;
+// The threads a run of `model` shares its evaluations between, given at most `most`: one for each
+// kPointsPerThread points, at least one.
+int threadsFor(const Model& model, int most);
+// The workers of `model` with `pool`: as many threads as the pool has, at most one for each
+// kPointsPerThread points (bySize; else the pool's threads, for timing each count), each given a
+// range of about equal cost (the springs' slots and the points; ranges begin on multiples of
+// kRangeAlignment).
+Workers workersFor(const Model& model, ThreadPool* pool, bool bySize = true);
 
 // The force kernel: total force on every point (per-point arrays, see coordIndex) for
 // positions p and velocities v, with the user's pull when there is one: the model's terms,
-// each skipped when the positions are out of its reach. With a team, its two threads take a
-// range of points each (balancedSplitPoint), with the same result bit for bit.
+// each skipped when the positions are out of its reach. With workers, their threads take a
+// range of points each, with the same result bit for bit.
 void computeForces(const Model& model, const double* p, const double* v, double* force,
-                   const Pull* pull = nullptr, Team* team = nullptr);
+                   const Pull* pull = nullptr, const Workers* workers = nullptr);
 
 // The same on the points of `points` alone (force elsewhere is left as it was), with `reach` the
 // bounds of all the positions when the scene culls (null when it does not): what computeForces
@@ -31,10 +53,9 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
                      const double* springForce = nullptr);
 
 // The derivative of a state y = [p; v] (2 * model.coords() doubles): dp/dt = v, dv/dt = F/mass.
-// With a team, its two threads take half the points each (balancedSplitPoint for the course
-// cube's row kernel, halves of a spring list's points), with the same result.
+// With workers, their threads take a range of points each, with the same result.
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr,
-                Team* team = nullptr);
+                const Workers* workers = nullptr);
 
 constexpr double kDivergenceRadius = 100.0;  // m: a point further from the origin has diverged
 
@@ -42,12 +63,12 @@ constexpr double kDivergenceRadius = 100.0;  // m: a point further from the orig
 // kDivergenceRadius from the origin; -1 when the state is sane.
 int findDivergedPoint(const State& state);
 
-// What the jello's system is made of: the model, the user's pull if any, and the team whose two
-// threads share each derivative (derivative, above) if any.
+// What the jello's system is made of: the model, the user's pull if any, and the workers that
+// share each derivative (derivative, above) if any.
 struct JelloInputs {
   const Model* model;
   const Pull* pull = nullptr;
-  Team* team = nullptr;
+  const Workers* workers = nullptr;
 };
 // The jello's system: derivative() and newtonMatrix() of `inputs`, which it references:
 // they must outlive it. (One reference fits std::function's own storage: a step allocates

@@ -25,6 +25,7 @@ struct RunOptions {
   std::optional<std::string> saveStatePath;         // --save-state FILE (io/statefile.h)
   Tolerances tolerances;                            // RK45's error control
   KernelChoice kernel = KernelChoice::Specialised;  // --kernel general: every term at every point
+  int threads = 1;  // --threads N: the most threads a run shares its evaluations between
 };
 
 // Reads the world of `options` and applies its overrides. Fails, saying why, on bad input; a

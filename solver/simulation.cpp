@@ -57,7 +57,7 @@ bool Simulation::stepAndCheck(double h, double timeAfter, const Pull* pull) {
   if (pulled_ && !pull) guard_.restart(state_, time_);
   pulled_ = pull != nullptr;
   const long long failedBefore = stepper_.stats().failed;
-  stepper_.step(model_, state_, h, pull, team_);
+  stepper_.step(model_, state_, h, pull, &workers_);
   ++step_;
   time_ = timeAfter;
   if (stepper_.stats().failed != failedBefore) {
@@ -134,6 +134,12 @@ void Simulation::change(const RunSettings& run) {
   guard_.restart(state_, time_);
   pulled_ = false;
   outcome_ = {};
+  if (workers_.pool) setPool(workers_.pool, workersBySize_);  // the model's ranges again
+}
+
+void Simulation::setPool(ThreadPool* pool, bool bySize) {
+  workers_ = workersFor(model_, pool, bySize);
+  workersBySize_ = bySize;
 }
 
 std::string tooManyStepsMessage(double time, double dt) {

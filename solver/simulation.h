@@ -110,10 +110,12 @@ class Simulation {
   Integrator integrator() const { return stepper_.integrator(); }
   const StepStats& stats() const { return stepper_.stats(); }  // the stepper's, since the start
   const Model& model() const { return model_; }
-  // Shares each force evaluation between `team`'s two threads (physics.h's derivative,
-  // solver/physics.h), with the same results; null: this thread alone (the default). The team must
-  // outlive its use here.
-  void setTeam(Team* team) { team_ = team; }
+  // Shares each force evaluation between the threads of `pool` (physics.h's workersFor: as many
+  // as the body's size makes worth it; bySize false: all of them), with the same results bit for
+  // bit; null: this thread alone (the default). The pool must outlive its use here.
+  void setPool(ThreadPool* pool, bool bySize = true);
+  // The threads each evaluation is shared between.
+  int threads() const { return workers_.threads(); }
 
  private:
   bool stepAndCheck(double h, double timeAfter, const Pull* pull);
@@ -133,7 +135,8 @@ class Simulation {
   bool pulled_ = false;  // the last step had a pull: the next one without restarts the bound
   Tolerances tolerances_;
   Stepper stepper_;
-  Team* team_ = nullptr;
+  Workers workers_;
+  bool workersBySize_ = true;
   DivergenceGuard guard_;
   RunOutcome outcome_;
 };

@@ -12,7 +12,7 @@
 #include <tuple>
 
 #include "analysis/stability.h"
-#include "core/team.h"
+#include "core/threadpool.h"
 #include "io/scenereader.h"
 #include "model/body.h"
 #include "model/scenespec.h"
@@ -173,16 +173,20 @@ TEST(SpringList, SumsTheCourseCubeAsTheRowKernelDoesBitForBit) {
   for (bool dampers : {true, false}) {
     const SpringConstants c = SpringConstants::same(437.5, dampers ? 0.3 : 0);
     // A body with the course's points and springs that is not marked as the course's cube goes
-    // through the spring list.
+    // through the grid kernel; the reference through the spring list.
     Body listed = courseBody();
     listed.courseLattice = false;
-    const SpringTerm row(courseBody(), c, dampers), list(listed, c, dampers);
+    const SpringTerm row(courseBody(), c, dampers), grid(listed, c, dampers),
+        list(courseBody(), c, dampers, SpringKernel::List);
     ASSERT_TRUE(row.rowKernel());
-    ASSERT_FALSE(list.rowKernel());
-    std::vector<double> a(kNumCoords, 0.0), b(kNumCoords, 0.0);
+    ASSERT_FALSE(grid.rowKernel() || grid.listKernel());
+    ASSERT_TRUE(list.listKernel());
+    std::vector<double> a(kNumCoords, 0.0), b(kNumCoords, 0.0), l(kNumCoords, 0.0);
     row.addForces(s.p(), s.v(), nullptr, a.data());
-    list.addForces(s.p(), s.v(), nullptr, b.data());
+    grid.addForces(s.p(), s.v(), nullptr, b.data());
+    list.addForces(s.p(), s.v(), nullptr, l.data());
     EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * kNumCoords), 0) << dampers;
+    EXPECT_EQ(std::memcmp(a.data(), l.data(), sizeof(double) * kNumCoords), 0) << dampers;
   }
 }
 
@@ -205,9 +209,9 @@ TEST(SpringList, OnEveryRangeAndOnTwoThreadsGivesTheWholePassBitForBit) {
     }
     // The whole model on two threads, its derivative over RK4 steps.
     const Model model = makeModel(springWorld(bodySpec(body)), s);
-    Team team;
+    ThreadPool pool(2);
     Simulation one(model, s, Integrator::RK4, 1e-3), two(model, s, Integrator::RK4, 1e-3);
-    two.setTeam(&team);
+    two.setPool(&pool, false);
     ASSERT_TRUE(one.advance(200).ran() && two.advance(200).ran());
     EXPECT_EQ(std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 6 * n), 0)
         << body.what;

@@ -47,10 +47,48 @@ TEST(Cli, BenchTimesEveryIntegratorWithBothKernels) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("scene: kept: ", 0), 0u) << r.out;
   for (const char* part :
-       {"specialised", "general", "speed-up", "force evaluation", "evaluations per second", "EULER",
-        "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT", "world parsing"}) {
+       {"512 points", "one thread", "general", "2 threads", "speed-up", "force evaluation",
+        "per point", "EULER", "MIDPOINT", "RK4", "SYMPLECTIC", "VERLET", "RK45", "IMPLICIT",
+        "world parsing", "a run of this body uses 1 thread"}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " missing from: " << r.out;
   }
+}
+
+// --integrator NAME times that integrator alone (a large body's IMPLICIT steps take seconds).
+TEST(Cli, BenchTimesTheIntegratorItIsGivenAlone) {
+  test::CommandResult r =
+      runJello("--bench --steps 2 --integrator RK4 '" + dataPath("rotate.w") + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nRK4 "), std::string::npos) << r.out;
+  for (const char* other : {"EULER", "MIDPOINT", "IMPLICIT", "RK45"})
+    EXPECT_EQ(r.out.find(other), std::string::npos) << other << " in: " << r.out;
+}
+
+// --threads N: a whole number from 1 to 256, refused otherwise in one line; a run on several
+// threads ends in the state of a run on one, byte for byte (a 26^3 lattice: two threads or more).
+TEST(Cli, ThreadsAreAWholeNumberAndChangeNoResult) {
+  for (const char* bad : {"0", "257", "2.5", "two", "-1"}) {
+    test::CommandResult r = runJello(std::string("--headless --steps 1 --threads ") + bad + " '" +
+                                     dataPath("rotate.w") + "'");
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const std::string dir = test::makeTempDir();
+  test::writeText(dir + "/big.toml",
+                  "dt = 0.0001\ngravity = [0, 0, -9.81]\n[jelly]\nshape = \"lattice\"\n"
+                  "size = [26, 26, 26]\nspacing = 0.04\nstiffness = 2000\ndamping = 0.5\n");
+  for (const char* threads : {"1", "2", "5"}) {
+    test::CommandResult r =
+        runJello(std::string("--headless --steps 20 --threads ") + threads + " --save-state '" +
+                 dir + "/state" + threads + ".csv' '" + dir + "/big.toml'");
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const std::string one = test::readText(dir + "/state1.csv");
+  EXPECT_GT(one.size(), 100000u);
+  EXPECT_EQ(test::readText(dir + "/state2.csv"), one);
+  EXPECT_EQ(test::readText(dir + "/state5.csv"), one);
+  test::removeTree(dir);
 }
 
 // A scene's jelly other than the course cube has no world file to time the parsing of (formatWorld

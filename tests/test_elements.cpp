@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "analysis/stability.h"
-#include "core/team.h"
+#include "core/threadpool.h"
 #include "io/inputerror.h"
 #include "io/scenereader.h"
 #include "io/tetmesh.h"
@@ -400,7 +400,7 @@ TEST(Elements, AJellyOfElementsCollidesWithOneOfSpringsKeepingMomentum) {
 }
 
 // The element term on ranges of points adds what the whole call adds there, bit for bit, at
-// every split; and a run on two threads (core/team.h) is the run on one, bit for bit.
+// every split; and a run on two threads (core/threadpool.h) is the run on one, bit for bit.
 TEST(Elements, RangesAndTwoThreadsGiveTheSameBits) {
   WorldFile file =
       elementScene("corotated", "[5, 4, 6]", 0.05, "gravity = [0, 0, -9.81]", 1e4, 0.4);
@@ -422,10 +422,10 @@ TEST(Elements, RangesAndTwoThreadsGiveTheSameBits) {
     term.addForcesOn({split, n}, file.state.p(), file.state.v(), nullptr, parts.data());
     ASSERT_EQ(std::memcmp(whole.data(), parts.data(), sizeof(double) * 3 * n), 0) << split;
   }
-  Team team;
+  ThreadPool pool(2);
   Simulation one(model, file.state, Integrator::RK4, 1e-4),
       two(model, file.state, Integrator::RK4, 1e-4);
-  two.setTeam(&team);
+  two.setPool(&pool, false);
   ASSERT_TRUE(one.advance(100).ran() && two.advance(100).ran());
   EXPECT_EQ(std::memcmp(one.state().y.data(), two.state().y.data(), sizeof(double) * 6 * n), 0);
 }

@@ -9,7 +9,7 @@
 #include <random>
 #include <thread>
 
-#include "core/team.h"
+#include "core/threadpool.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -235,16 +235,18 @@ TEST(KernelRanges, EverySplitIntoTwoRangesGivesTheWholePassBitForBit) {
   EXPECT_EQ(compared, 6 * 2 * 3 * 63);
 }
 
-// Two threads (core/team.h) step exactly as one: 1000 RK4 steps of each course world, compared
-// bit for bit along the way.
+// Two threads (core/threadpool.h; a course cube is given one by its size, here two whatever the
+// size) step exactly as one: 1000 RK4 steps of each course world, compared bit for bit along the
+// way.
 TEST(KernelRanges, ATwoThreadRunIsTheOneThreadRunBitForBit) {
-  Team team;
+  ThreadPool pool(2);
   for (const char* name : {"jello.w", "rotate.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
     const WorldFile f = readWorldFile(test::dataPath(name));
     const Model model = makeModel(f.world, f.state);
     Simulation one(model, f.state, Integrator::RK4, f.run.dt);
     Simulation two(model, f.state, Integrator::RK4, f.run.dt);
-    two.setTeam(&team);
+    two.setPool(&pool, false);
+    ASSERT_EQ(two.threads(), 2);
     for (int step = 0; step < 1000; ++step) {
       ASSERT_TRUE(one.advance(1).ran() && two.advance(1).ran()) << name;
       ASSERT_EQ(std::memcmp(one.state().y.data(), two.state().y.data(),
@@ -253,46 +255,6 @@ TEST(KernelRanges, ATwoThreadRunIsTheOneThreadRunBitForBit) {
           << name << " at step " << step + 1;
     }
   }
-}
-
-// The team runs each part of each job exactly once, whichever thread takes part 1: jobs whose
-// part 0 is slow (the helper may take part 1) and whose part 0 is instant (the caller may take
-// it), and jobs after the helper has gone to sleep. Every thousandth job's part 0 (job 10001's
-// just after that sleep) waits until part 1 has begun, which only the helper can begin then: the
-// helper must take it, however busy the machine (a fixed spin let the caller take every part 1
-// under load).
-TEST(Team, RunsEachPartOfEachJobExactlyOnce) {
-  Team team;
-  std::atomic<int> counts[2] = {{0}, {0}};
-  const std::thread::id caller = std::this_thread::get_id();
-  for (int job = 0; job < 20000; ++job) {
-    const bool waitForHelper = job % 1000 == 1;
-    int seen[2] = {0, 0};
-    std::atomic<bool> partOneBegun{false}, helperTookIt{false};
-    team.run([&](int part) {
-      if (part == 1) {
-        helperTookIt = std::this_thread::get_id() != caller;
-        partOneBegun = true;
-      }
-      if (part == 0 && waitForHelper) {
-        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-        while (!partOneBegun && std::chrono::steady_clock::now() < until) std::this_thread::yield();
-      } else if (part == 0 && job % 2 == 0) {
-        for (volatile int spin = 0; spin < 2000; ++spin) {
-        }
-      }
-      ++seen[part];
-      ++counts[part];
-    });
-    ASSERT_EQ(seen[0], 1);
-    ASSERT_EQ(seen[1], 1);
-    if (waitForHelper) {
-      ASSERT_TRUE(helperTookIt) << "job " << job;
-    }
-    if (job == 10000) std::this_thread::sleep_for(2 * Team::kSpinFor);  // the helper sleeps
-  }
-  EXPECT_EQ(counts[0], 20000);
-  EXPECT_EQ(counts[1], 20000);
 }
 
 // The field as the specialised kernel interpolates it (8 points at a time, on padded nodes)
