@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/assert.h"
+#include "core/limits.h"
 #include "core/threadpool.h"
 #include "solver/integrators.h"
 #include "solver/jacobian.h"
@@ -142,14 +143,37 @@ Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
   return workers;
 }
 
+namespace {
+
+// The bounds of the positions p, a range a thread, put together.
+Bounds boundsOnThreads(const double* p, int n, const Workers& workers) {
+  Bounds part[kMostThreads];
+  workers.pool->run(workers.threads(),
+                    [&](int t) { part[t] = boundsOf(p, n, workers.parts[t]); });
+  Bounds all = part[0];
+  for (int t = 1; t < workers.threads(); ++t) {
+    const Bounds& b = part[t];
+    all.lower = {std::min(all.lower.x, b.lower.x), std::min(all.lower.y, b.lower.y),
+                 std::min(all.lower.z, b.lower.z)};
+    all.upper = {std::max(all.upper.x, b.upper.x), std::max(all.upper.y, b.upper.y),
+                 std::max(all.upper.z, b.upper.z)};
+  }
+  return all;
+}
+
+}  // namespace
+
 void computeForces(const Model& model, const double* p, const double* v, double* force,
                    const Pull* pull, const Workers* workers) {
-  const Bounds box = model.forces.culling ? boundsOf(p, model.points()) : Bounds{};
-  const Bounds* reach = model.forces.culling ? &box : nullptr;
   if (!workers || workers->threads() == 1) {
-    computeForcesOn(model, {0, model.points()}, p, v, reach, force, pull);
+    const Bounds box = model.forces.culling ? boundsOf(p, model.points()) : Bounds{};
+    computeForcesOn(model, {0, model.points()}, p, v, model.forces.culling ? &box : nullptr, force,
+                    pull);
     return;
   }
+  const Bounds box =
+      model.forces.culling ? boundsOnThreads(p, model.points(), *workers) : Bounds{};
+  const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, p, v, *workers);
   workers->pool->run(workers->threads(), [&](int part) {
     computeForcesOn(model, workers->parts[part], p, v, reach, force, pull, springForce);
@@ -158,12 +182,15 @@ void computeForces(const Model& model, const double* p, const double* v, double*
 
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull,
                 const Workers* workers) {
-  const Bounds box = model.forces.culling ? boundsOf(y, model.points()) : Bounds{};
-  const Bounds* reach = model.forces.culling ? &box : nullptr;
   if (!workers || workers->threads() == 1) {
-    derivativeOn(model, {0, model.points()}, y, reach, dydt, pull, nullptr);
+    const Bounds box = model.forces.culling ? boundsOf(y, model.points()) : Bounds{};
+    derivativeOn(model, {0, model.points()}, y, model.forces.culling ? &box : nullptr, dydt, pull,
+                 nullptr);
     return;
   }
+  const Bounds box =
+      model.forces.culling ? boundsOnThreads(y, model.points(), *workers) : Bounds{};
+  const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, y, y + model.coords(), *workers);
   workers->pool->run(workers->threads(), [&](int part) {
     derivativeOn(model, workers->parts[part], y, reach, dydt, pull, springForce);
@@ -191,6 +218,16 @@ OdeSystem jelloSystem(const JelloInputs& inputs) {
   system.newtonMatrix = [&inputs](const double* y, double cv, double cp, NewtonBlocks& matrix) {
     newtonBlocks(*inputs.model, y, y + inputs.model->coords(), inputs.pull, cv, cp, &matrix);
   };
+  // The integrators' element-wise loops on the same threads, in ranges of whole cache lines.
+  if (inputs.workers && inputs.workers->threads() > 1)
+    system.inRanges = [&inputs](std::size_t n, const RangeBody& body) {
+      const Workers& workers = *inputs.workers;
+      const std::size_t parts = workers.threads();
+      auto edge = [&](std::size_t part) { return part == parts ? n : n * part / parts / 8 * 8; };
+      workers.pool->run(static_cast<int>(parts), [&](int part) {
+        body.call(body.context, edge(part), edge(part + 1));
+      });
+    };
   return system;
 }
 

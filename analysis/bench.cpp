@@ -36,12 +36,18 @@ struct Kernel {
 // Seconds per call of each work(count), the medians over `repeats` runs of each. The works
 // take turns, so that a change in the machine's load falls on both alike and their ratio
 // holds. Without a fixed count, the first work's first calls size it to about kBenchSeconds.
+// setups[w], when given, runs before each call of works[w], untimed (a run back to its start).
 std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long long fixedCount,
-                                         int repeats) {
+                                         int repeats,
+                                         const std::vector<std::function<void()>>& setups = {}) {
+  auto setUp = [&setups](std::size_t w) {
+    if (w < setups.size()) setups[w]();
+  };
   long long count = fixedCount;
   if (count <= 0) {
     count = 1;
     for (;;) {
+      setUp(0);
       Clock::time_point start = Clock::now();
       works.front()(count);
       double seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -56,6 +62,7 @@ std::vector<double> medianSecondsPerCall(const std::vector<Work>& works, long lo
   std::vector<std::vector<double>> perCall(works.size());
   for (int r = 0; r < repeats; ++r) {
     for (std::size_t w = 0; w < works.size(); ++w) {
+      setUp(w);
       Clock::time_point start = Clock::now();
       works[w](count);
       perCall[w].push_back(std::chrono::duration<double>(Clock::now() - start).count() / count);
@@ -89,17 +96,20 @@ std::vector<StepTiming> timeSteps(const std::vector<Kernel>& kernels, const Stat
         std::make_unique<Simulation>(*kernel.model, initial, settings, run.tolerances));
     simulations.back()->setPool(kernel.pool, false);
   }
+  // Back to the start before each timed run, untimed: a restart computes the state's energy,
+  // which for a large body costs as much as a few steps.
   std::vector<Work> works;
+  std::vector<std::function<void()>> restarts;
   for (std::size_t m = 0; m < kernels.size(); ++m) {
+    restarts.push_back([&, m] { simulations[m]->restart(initial); });
     works.push_back([&, m](long long count) {
       Simulation& simulation = *simulations[m];
-      simulation.restart(initial);
       timings[m].diverged = !simulation.advance(count).ran() || timings[m].diverged;
       steps[m] += simulation.step();
       evaluations[m] += simulation.stats().evaluations + simulation.stats().jacobians;
     });
   }
-  std::vector<double> seconds = medianSecondsPerCall(works, fixedSteps, repeats);
+  std::vector<double> seconds = medianSecondsPerCall(works, fixedSteps, repeats, restarts);
   for (std::size_t m = 0; m < kernels.size(); ++m) {
     timings[m].seconds = seconds[m];
     timings[m].evaluationsPerStep = static_cast<double>(evaluations[m]) / steps[m];

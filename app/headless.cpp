@@ -146,10 +146,11 @@ Outcome runFailure(const RunOptions& options, const Simulation& run, const State
 
 // The summary line on stdout.
 void printSummary(const RunOptions& options, const RunSettings& world, long long steps, double wall,
-                  const StepStats& stats, const FrameObserver* frames) {
+                  const StepStats& stats, int threads, const FrameObserver* frames) {
   std::printf("%s: %s dt=%.9g steps=%lld simulated=%.9g s wall=%.6f s %.2f us/step",
               options.worldPath.c_str(), integratorName(world.integrator), world.dt, steps,
               steps * world.dt, wall, steps > 0 ? wall * 1e6 / steps : 0.0);
+  if (threads > 1) std::printf(" on %d threads", threads);
   if (world.integrator == Integrator::RK45) {
     std::printf("; %lld substeps accepted, %lld rejected, %lld evaluations", stats.steps,
                 stats.rejected, stats.evaluations);
@@ -291,7 +292,8 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
     progress.update(simulation.step());
   }
   progress.finish(steps);
-  printSummary(options, file.run, steps, secondsSince(start), simulation.stats(), frames);
+  printSummary(options, file.run, steps, secondsSince(start), simulation.stats(),
+               simulation.threads(), frames);
   if (frames && !frames->wantsMore() && lastFrame < steps)
     printError(frameLimitNote(*frames, lastFrame * simulation.dt(), steps * simulation.dt()));
 

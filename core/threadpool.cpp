@@ -94,7 +94,9 @@ bool ThreadPool::awaitJob(std::uint32_t seen) {
   for (int spins = 0; generationOf(job_.load(std::memory_order_acquire)) == seen && !stopping_;
        ++spins) {
     relax();
-    if (spins % 256 == 255 && std::chrono::steady_clock::now() > until) {
+    if (spins % 256 != 255) continue;
+    std::this_thread::yield();  // another program waiting for this core runs first
+    if (std::chrono::steady_clock::now() > until) {
       std::unique_lock<std::mutex> lock(mutex_);
       ++sleeping_;
       wake_.wait(lock, [&] { return stopping_ || generationOf(job_.load()) != seen; });

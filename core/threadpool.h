@@ -29,7 +29,7 @@ int availableCores();
 class ThreadPool {
  public:
   // How long a worker spins for the next job before it sleeps.
-  static constexpr std::chrono::microseconds kSpinFor{100};
+  static constexpr std::chrono::microseconds kSpinFor{2000};
   // The most parts a job may have.
   static constexpr int kMostParts = 0xffff;
 

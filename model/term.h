@@ -41,6 +41,9 @@ constexpr int kRangeAlignment = 8;
 // The end of the range's whole groups of `lanes` points (the rest, a body's last few points, are
 // taken one by one).
 constexpr int groupedEnd(PointRange r, int lanes) { return r.end - (r.end - r.begin) % lanes; }
+// The bounds of the points of `range` alone (one point at least). For finite positions the
+// bounds of several ranges' bounds are those of all of them, whatever the ranges.
+Bounds boundsOf(const double* p, int points, PointRange range);
 
 // printf into a std::string, for the terms' descriptions (up to 511 characters).
 std::string textf(const char* pattern, ...) __attribute__((format(printf, 1, 2)));

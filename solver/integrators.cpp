@@ -61,10 +61,22 @@ void sized(std::vector<double>& buffer, std::size_t n) {
   if (buffer.size() != n) buffer.assign(n, 0.0);
 }
 
+// body(begin, end) on ranges covering [0, n): the system's threads', or [0, n) here.
+template <class Body>
+void forRanges(const OdeSystem& system, std::size_t n, const Body& body) {
+  if (!system.inRanges) return body(std::size_t{0}, n);
+  system.inRanges(n, RangeBody{[](const void* context, std::size_t begin, std::size_t end) {
+                                 (*static_cast<const Body*>(context))(begin, end);
+                               },
+                               &body});
+}
+
 // out = y + h * k
-void axpy(const std::vector<double>& y, double h, const std::vector<double>& k,
-          std::vector<double>& out) {
-  for (std::size_t i = 0; i < y.size(); ++i) out[i] = y[i] + h * k[i];
+void axpy(const OdeSystem& system, const std::vector<double>& y, double h,
+          const std::vector<double>& k, std::vector<double>& out) {
+  forRanges(system, y.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) out[i] = y[i] + h * k[i];
+  });
 }
 
 bool allFinite(const std::vector<double>& y) {
@@ -135,7 +147,9 @@ void evaluate(StepWork& w, const OdeSystem& system, const std::vector<double>& a
 void stepEuler(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   std::vector<double>& k1 = w.k[0];
   evaluate(w, system, y, k1);
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] += dt * k1[i];
+  forRanges(system, y.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) y[i] += dt * k1[i];
+  });
   ++w.stats.steps;
 }
 
@@ -153,9 +167,11 @@ void stepSymplectic(StepWork& w, const OdeSystem& system, std::vector<double>& y
 void stepMidpoint(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   std::vector<double>&k1 = w.k[0], &k2 = w.k[1];
   evaluate(w, system, y, k1);
-  axpy(y, dt / 2, k1, w.temp);
+  axpy(system, y, dt / 2, k1, w.temp);
   evaluate(w, system, w.temp, k2);
-  for (std::size_t i = 0; i < y.size(); ++i) y[i] += dt * k2[i];
+  forRanges(system, y.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) y[i] += dt * k2[i];
+  });
   ++w.stats.steps;
 }
 
@@ -182,14 +198,16 @@ void stepVerlet(StepWork& w, const OdeSystem& system, std::vector<double>& y, do
 void stepRk4(StepWork& w, const OdeSystem& system, std::vector<double>& y, double dt) {
   std::vector<double>&k1 = w.k[0], &k2 = w.k[1], &k3 = w.k[2], &k4 = w.k[3];
   evaluate(w, system, y, k1);
-  axpy(y, dt / 2, k1, w.temp);
+  axpy(system, y, dt / 2, k1, w.temp);
   evaluate(w, system, w.temp, k2);
-  axpy(y, dt / 2, k2, w.temp);
+  axpy(system, y, dt / 2, k2, w.temp);
   evaluate(w, system, w.temp, k3);
-  axpy(y, dt, k3, w.temp);
+  axpy(system, y, dt, k3, w.temp);
   evaluate(w, system, w.temp, k4);
-  for (std::size_t i = 0; i < y.size(); ++i)
-    y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  forRanges(system, y.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  });
   ++w.stats.steps;
 }
 
@@ -471,6 +489,14 @@ Stepper::Stepper(Integrator integrator, Tolerances tolerances)
 Stepper::~Stepper() = default;
 Stepper::Stepper(Stepper&&) noexcept = default;
 Stepper& Stepper::operator=(Stepper&&) noexcept = default;
+
+void Stepper::restart() {
+  auto fresh = std::make_unique<StepWork>(work_->tolerances);
+  for (int s = 0; s < kStages; ++s) fresh->k[s].swap(work_->k[s]);
+  fresh->temp.swap(work_->temp);
+  fresh->next.swap(work_->next);
+  work_ = std::move(fresh);
+}
 
 const StepStats& Stepper::stats() const { return work_->stats; }
 

@@ -21,12 +21,22 @@ namespace jello {
 struct Workers;       // physics.h
 struct NewtonBlocks;  // jacobian.h: only IMPLICIT's step needs its Eigen types
 
+// A body to run on a range [begin, end) of a state's elements (OdeSystem::inRanges).
+struct RangeBody {
+  void (*call)(const void* context, std::size_t begin, std::size_t end);
+  const void* context;
+};
+
 struct OdeSystem {
   // Writes f(y) into dydt; both hold the same number of doubles.
   std::function<void(const double* y, double* dydt)> derivative;
   // For y = [p; v]: the matrix I - cv dA/dv - cp dA/dp, A the accelerations. Needed by IMPLICIT
   // only.
   std::function<void(const double* y, double cv, double cp, NewtonBlocks& matrix)> newtonMatrix;
+  // Runs body on ranges covering [0, n), on the threads that share the derivative (the jello's,
+  // physics.h); empty: on [0, n) here. The integrators' element-wise loops go through it: each
+  // element's arithmetic is the same whichever range it falls in, so the results are the same bits.
+  std::function<void(std::size_t n, const RangeBody& body)> inRanges;
 };
 
 // Error control of RK45: a substep is accepted when its estimated local error, per component,
@@ -109,6 +119,11 @@ class Stepper {
   void step(const Model& model, State& state, double dt, const Pull* pull = nullptr,
             const Workers* workers = nullptr);
 
+  // A new Stepper's memory (RK45's last step, IMPLICIT's solver, the statistics), the buffers of
+  // the stages kept (their values are never read before a step writes them): the next steps are a
+  // new Stepper's bit for bit, without allocating again (a large body's first touch of fresh
+  // buffers costs as much as a step).
+  void restart();
   Integrator integrator() const { return integrator_; }
   const StepStats& stats() const;
 

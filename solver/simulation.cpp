@@ -101,7 +101,7 @@ void Simulation::restart(const State& start) {
   timeBase_ = 0;
   stepBase_ = 0;
   pulled_ = false;
-  stepper_ = Stepper(stepper_.integrator(), tolerances_);
+  stepper_.restart();
   guard_.restart(start, 0);
   outcome_ = {};
 }
