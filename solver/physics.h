@@ -25,8 +25,10 @@ struct Workers {
   int threads() const { return pool && parts.size() > 1 ? static_cast<int>(parts.size()) : 1; }
 };
 // The fewest points a thread is given: a body of fewer than twice as many is computed by one
-// thread, which measured faster (docs/performance.md, "Threads").
-constexpr int kPointsPerThread = 8192;
+// thread. Two threads measured slower than one up to 1,000 points (the course cube 0.93x to 1.00x,
+// 10^3 0.88x) and faster from 1,728 (12^3 1.13x, 16^3 1.26x, 24^3 1.56x; docs/performance.md,
+// "Threads").
+constexpr int kPointsPerThread = 2048;
 // The threads a run of `model` shares its evaluations between, given at most `most`: one for each
 // kPointsPerThread points, at least one.
 int threadsFor(const Model& model, int most);

@@ -227,10 +227,24 @@ TEST(Simulation, AToleranceBeyondDoublesIsItsOwnOutcome) {
   EXPECT_EQ(outcome.step, 1);
 }
 
-// restart() gives a run that repeats the first bit for bit; restore() goes back to a saved state.
+// restart() gives a run that repeats the first bit for bit, with the same counts (the stepper's
+// memory afresh, its buffers kept: RK45's last step, IMPLICIT's solver); restore() goes back to a
+// saved state.
 TEST(Simulation, RestartRepeatsTheRunAndRestoreGoesBack) {
   WorldFile f = readWorldFile(test::dataPath("rotate.w"));
   Model model = makeModel(f.world, f.state);
+  for (Integrator integrator : {Integrator::RK45, Integrator::Implicit}) {
+    Simulation run(model, f.state, integrator, 0.001);
+    ASSERT_TRUE(run.advance(20).ran());
+    const State once = run.state();
+    const StepStats stats = run.stats();
+    run.restart(f.state);
+    EXPECT_EQ(run.stats().evaluations, 0);
+    ASSERT_TRUE(run.advance(20).ran());
+    EXPECT_TRUE(sameBits(run.state(), once)) << integratorName(integrator);
+    EXPECT_EQ(run.stats().evaluations, stats.evaluations) << integratorName(integrator);
+    EXPECT_EQ(run.stats().rejected, stats.rejected) << integratorName(integrator);
+  }
   Simulation simulation(model, f.state, Integrator::RK45, 0.001);
   ASSERT_TRUE(simulation.advance(40).ran());
   const State first = simulation.state();

@@ -182,6 +182,30 @@ World gridSceneWorld(const Body& body, double mass) {
   return w;
 }
 
+// The bounds of a state's ranges, put together, are the bounds of the whole state, whatever the
+// ranges (the threads' culling box), to the bit.
+TEST(Threads, TheBoundsOfRangesAreTheBoundsOfTheWhole) {
+  std::mt19937_64 random(35);
+  const Body body = latticeBody(7, 5, 9, 0.1);
+  const int n = body.count();
+  const State s = shakenBody(body, random, 0.3);
+  const Bounds whole = boundsOf(s.p(), n);
+  for (int split = kRangeAlignment; split < n; split += kRangeAlignment) {
+    const Bounds a = boundsOf(s.p(), n, {0, split}), b = boundsOf(s.p(), n, {split, n});
+    const Vec3 lower{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y),
+                     std::min(a.lower.z, b.lower.z)};
+    const Vec3 upper{std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y),
+                     std::max(a.upper.z, b.upper.z)};
+    ASSERT_TRUE(lower.x == whole.lower.x && lower.y == whole.lower.y && lower.z == whole.lower.z)
+        << split;
+    ASSERT_TRUE(upper.x == whole.upper.x && upper.y == whole.upper.y && upper.z == whole.upper.z)
+        << split;
+  }
+  const Bounds one = boundsOf(s.p(), n, {8, 9});
+  EXPECT_EQ(one.lower.x, s.p()[8]);
+  EXPECT_EQ(one.upper.z, s.p()[2 * n + 8]);
+}
+
 // A run on 1, 2, 3 and 8 threads (the ranges by cost, whatever the body's size) takes the same
 // steps, bit for bit: RK4 steps of a lattice that does not fill whole units and of a ball of
 // voxels, and of a body of a thousand points given a part each of more threads than it has ranges.
