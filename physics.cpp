@@ -148,8 +148,7 @@ namespace {
 // The bounds of the positions p, a range a thread, put together.
 Bounds boundsOnThreads(const double* p, int n, const Workers& workers) {
   Bounds part[kMostThreads];
-  workers.pool->run(workers.threads(),
-                    [&](int t) { part[t] = boundsOf(p, n, workers.parts[t]); });
+  workers.pool->run(workers.threads(), [&](int t) { part[t] = boundsOf(p, n, workers.parts[t]); });
   Bounds all = part[0];
   for (int t = 1; t < workers.threads(); ++t) {
     const Bounds& b = part[t];
@@ -171,8 +170,7 @@ void computeForces(const Model& model, const double* p, const double* v, double*
                     pull);
     return;
   }
-  const Bounds box =
-      model.forces.culling ? boundsOnThreads(p, model.points(), *workers) : Bounds{};
+  const Bounds box = model.forces.culling ? boundsOnThreads(p, model.points(), *workers) : Bounds{};
   const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, p, v, *workers);
   workers->pool->run(workers->threads(), [&](int part) {
@@ -188,8 +186,7 @@ void derivative(const Model& model, const double* y, double* dydt, const Pull* p
                  nullptr);
     return;
   }
-  const Bounds box =
-      model.forces.culling ? boundsOnThreads(y, model.points(), *workers) : Bounds{};
+  const Bounds box = model.forces.culling ? boundsOnThreads(y, model.points(), *workers) : Bounds{};
   const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, y, y + model.coords(), *workers);
   workers->pool->run(workers->threads(), [&](int part) {
@@ -224,9 +221,8 @@ OdeSystem jelloSystem(const JelloInputs& inputs) {
       const Workers& workers = *inputs.workers;
       const std::size_t parts = workers.threads();
       auto edge = [&](std::size_t part) { return part == parts ? n : n * part / parts / 8 * 8; };
-      workers.pool->run(static_cast<int>(parts), [&](int part) {
-        body.call(body.context, edge(part), edge(part + 1));
-      });
+      workers.pool->run(static_cast<int>(parts),
+                        [&](int part) { body.call(body.context, edge(part), edge(part + 1)); });
     };
   return system;
 }

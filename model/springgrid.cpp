@@ -325,7 +325,8 @@ long long SpringGrid::slotsFor(PointRange points) const {
     const int unit = (compact_ ? q : nodeOf_[q]) / kLanes;
     if (unit == last) continue;
     last = unit;
-    for (int o = 0; o < kOffsets; ++o) slots += keep_[std::size_t(unit) * kOffsets + o] ? kLanes : 0;
+    for (int o = 0; o < kOffsets; ++o)
+      slots += keep_[std::size_t(unit) * kOffsets + o] ? kLanes : 0;
   }
   return slots;
 }
