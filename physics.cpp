@@ -17,13 +17,24 @@
 
 namespace jello {
 
+namespace {
+
+// This thread's 3 n doubles for the point terms' sum, grown once.
+double* pointSumsOf(int n) {
+  thread_local std::vector<double> grown;
+  if (grown.size() < std::size_t(3 * n)) grown.resize(3 * n);
+  return grown.data();
+}
+
+}  // namespace
+
 // The pair terms add into the total; the point terms in reach add into their own sum first,
 // which then joins the total (one term alone adds directly: x + (0 + y) is x + y). This is the
 // order docs/physics.md gives the terms in, so every kernel rounds alike, and every range of
 // points gets the forces the whole pass gives it.
 void computeForcesOn(const Model& model, PointRange points, const double* p, const double* v,
                      const Bounds* reach, double* force, const Pull* pull,
-                     const double* springForce) {
+                     const double* springForce, double* pointSums) {
   const int n = model.points();
   // A range begins on a multiple of kRangeAlignment (model/term.h) and lies within the body.
   JELLO_ASSERT(points.begin % kRangeAlignment == 0);
@@ -44,11 +55,10 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
   if (count == 1) {
     inReach[0]->addForcesOn(points, p, v, reach, force);
   } else if (count > 1) {
-    // The course cube's sum fits on the stack; a larger body's is this thread's own, grown once.
+    // The course cube's sum fits on the stack; a larger body's is the threads' shared one, or this
+    // thread's own.
     alignas(64) double onStack[kNumCoords];
-    thread_local std::vector<double> grown;
-    if (3 * n > kNumCoords && grown.size() < std::size_t(3 * n)) grown.resize(3 * n);
-    double* sum = 3 * n > kNumCoords ? grown.data() : onStack;
+    double* sum = pointSums ? pointSums : 3 * n > kNumCoords ? pointSumsOf(n) : onStack;
     for (int a = 0; a < 3; ++a)
       std::fill(sum + a * n + points.begin, sum + a * n + points.end, 0.0);
     for (int t = 0; t < count; ++t) inReach[t]->addForcesOn(points, p, v, reach, sum);
@@ -69,7 +79,7 @@ namespace {
 const double* listedSpringForces(const Model& model, const double* p, const double* v,
                                  const Workers& workers) {
   const SpringTerm& springs = *model.forces.springs;
-  if (!springs.listKernel()) return nullptr;
+  if (!springs.listKernel() || springs.springs().empty()) return nullptr;
   thread_local std::vector<double> buffer;
   const long long count = static_cast<long long>(springs.springs().size());
   if (buffer.size() < std::size_t(3 * count)) buffer.resize(3 * count);
@@ -84,12 +94,12 @@ const double* listedSpringForces(const Model& model, const double* p, const doub
 
 // dp/dt and dv/dt = F/mass on the points of `points`.
 void derivativeOn(const Model& model, PointRange points, const double* y, const Bounds* reach,
-                  double* dydt, const Pull* pull, const double* springForce) {
+                  double* dydt, const Pull* pull, const double* springForce, double* pointSums) {
   const int n = model.points();
   const double* p = y;
   const double* v = y + 3 * n;
   double* a = dydt + 3 * n;
-  computeForcesOn(model, points, p, v, reach, a, pull, springForce);
+  computeForcesOn(model, points, p, v, reach, a, pull, springForce, pointSums);
   JELLO_ASSERT(model.pointMass.size() == std::size_t(n));
   for (int axis = 0; axis < 3; ++axis) {
     const int first = axis * n + points.begin, end = axis * n + points.end;
@@ -113,7 +123,9 @@ void derivativeOn(const Model& model, PointRange points, const double* y, const 
 }  // namespace
 
 int threadsFor(const Model& model, int most) {
-  return std::max(1, std::min(most, model.points() / kPointsPerThread));
+  const int n = model.points();
+  if (n < kFewestPointsShared || most <= 1) return 1;
+  return std::min(most, std::max(2, n / kPointsPerThread));
 }
 
 Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
@@ -122,8 +134,9 @@ Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
   int threads = pool ? pool->threads() : 1;
   if (bySize) threads = threadsFor(model, threads);
   if (threads <= 1) return workers;
-  // Each point costs its springs' slots and one more for the other terms: the ranges split the
-  // total evenly, on multiples of kRangeAlignment.
+  // Each point costs its springs' slots and one more for the other terms, and each range after the
+  // first the slots it computes again (w): the first range costs E = (total + (T - 1) w) / T, the
+  // others E - w; ranges on multiples of kRangeAlignment.
   const SpringTerm& springs = *model.forces.springs;
   const int groups = (n + kRangeAlignment - 1) / kRangeAlignment;
   std::vector<long long> before(groups + 1, 0);  // the cost of the groups of points before
@@ -131,9 +144,11 @@ Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
     const PointRange r{group * kRangeAlignment, std::min(n, (group + 1) * kRangeAlignment)};
     before[group + 1] = before[group] + springs.costOf(r) + (r.end - r.begin);
   }
+  const long long again = springs.warmUpCost();
+  const long long first = (before.back() + (threads - 1) * again) / threads;
   int begin = 0;
   for (int t = 1; t <= threads; ++t) {
-    const long long share = before.back() * t / threads;
+    const long long share = t * first - (t - 1) * again;
     int group =
         static_cast<int>(std::lower_bound(before.begin(), before.end(), share) - before.begin());
     const int end = t == threads ? n : std::min(n, group * kRangeAlignment);
@@ -173,8 +188,9 @@ void computeForces(const Model& model, const double* p, const double* v, double*
   const Bounds box = model.forces.culling ? boundsOnThreads(p, model.points(), *workers) : Bounds{};
   const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, p, v, *workers);
+  double* sums = pointSumsOf(model.points());
   workers->pool->run(workers->threads(), [&](int part) {
-    computeForcesOn(model, workers->parts[part], p, v, reach, force, pull, springForce);
+    computeForcesOn(model, workers->parts[part], p, v, reach, force, pull, springForce, sums);
   });
 }
 
@@ -183,14 +199,15 @@ void derivative(const Model& model, const double* y, double* dydt, const Pull* p
   if (!workers || workers->threads() == 1) {
     const Bounds box = model.forces.culling ? boundsOf(y, model.points()) : Bounds{};
     derivativeOn(model, {0, model.points()}, y, model.forces.culling ? &box : nullptr, dydt, pull,
-                 nullptr);
+                 nullptr, nullptr);
     return;
   }
   const Bounds box = model.forces.culling ? boundsOnThreads(y, model.points(), *workers) : Bounds{};
   const Bounds* reach = model.forces.culling ? &box : nullptr;
   const double* springForce = listedSpringForces(model, y, y + model.coords(), *workers);
+  double* sums = pointSumsOf(model.points());
   workers->pool->run(workers->threads(), [&](int part) {
-    derivativeOn(model, workers->parts[part], y, reach, dydt, pull, springForce);
+    derivativeOn(model, workers->parts[part], y, reach, dydt, pull, springForce, sums);
   });
 }
 

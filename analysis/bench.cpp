@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/limits.h"
 #include "core/threadpool.h"
 #include "solver/integrators.h"
 #include "solver/physics.h"
@@ -292,7 +293,7 @@ Outcome runBench(const RunOptions& run) {
   if (Outcome loaded = loadRun(run, &file); !loaded.ok()) return loaded;
   const Model specialised = makeModel(file.world, file.state, KernelChoice::Specialised);
   const Model general = makeModel(file.world, file.state, KernelChoice::General);
-  const int cores = availableCores();
+  const int cores = std::min(availableCores(), kMostThreads);
   ThreadPool two(2), all(cores);
   Columns columns{{{&specialised, nullptr}, {&general, nullptr}, {&specialised, &two}},
                   {"one thread", "general", "2 threads"}};
@@ -300,8 +301,7 @@ Outcome runBench(const RunOptions& run) {
     columns.kernels.push_back({&specialised, &all});
     columns.names.push_back(std::to_string(cores) + " threads");
   }
-  ThreadPool runPool(run.threads);
-  const int runThreads = workersFor(specialised, &runPool).threads();
+  const int runThreads = threadsFor(specialised, run.threads);
   const BenchFigures figures = measureBench(run, file, columns);
   printBench(run, file, specialised, columns, runThreads, figures);
   return succeeded();

@@ -368,7 +368,8 @@ Outcome readRunOptions(const Given& g, JelloCommand* c) {
     run.integrator = chosen;
   }
   if (*g.kernelOption && g.kernel == "general") run.kernel = KernelChoice::General;
-  run.threads = *g.threadsOption ? static_cast<int>(g.threads) : availableCores();
+  run.threads =
+      *g.threadsOption ? static_cast<int>(g.threads) : std::min(availableCores(), kMostThreads);
   if (*g.stepsOption) run.steps = g.steps;
   if (*g.timeOption) run.time = g.time;
   if (*g.dtOption) run.dt = g.dt;

@@ -253,8 +253,8 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   if (Outcome dumpable = checkDump(options, world); !dumpable.ok()) return dumpable;
 
   const Model model = makeModel(world, file.state, options.kernel);
+  ThreadPool pool(threadsFor(model, options.threads));  // before the simulation, which uses it
   Simulation simulation(model, file.state, file.run, options.tolerances);
-  ThreadPool pool(threadsFor(model, options.threads));
   simulation.setPool(&pool);
   RunProgress progress(steps, frames);
   Clock::time_point start = Clock::now();

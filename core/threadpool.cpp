@@ -7,6 +7,8 @@
 
 #include <sched.h>
 
+#include <system_error>
+
 #include "core/assert.h"
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -33,7 +35,11 @@ int availableCores() {
 
 ThreadPool::ThreadPool(int threads) {
   JELLO_ASSERT(threads >= 1);
-  for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { workerLoop(); });
+  // A system that starts no more threads (a cgroup's limit) leaves the pool with those it did.
+  try {
+    for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { workerLoop(); });
+  } catch (const std::system_error&) {
+  }
 }
 
 ThreadPool::~ThreadPool() {

@@ -33,7 +33,8 @@ class ThreadPool {
   // The most parts a job may have.
   static constexpr int kMostParts = 0xffff;
 
-  // `threads` threads in all (at least 1): this one and threads - 1 workers.
+  // `threads` threads in all (at least 1): this one and threads - 1 workers (fewer when the
+  // system starts no more: threads() says how many).
   explicit ThreadPool(int threads);
   ~ThreadPool();
   ThreadPool(const ThreadPool&) = delete;
@@ -64,7 +65,8 @@ class ThreadPool {
   std::atomic<std::uint64_t> job_{0};
   std::atomic<Call> call_{nullptr};
   std::atomic<const void*> context_{nullptr};
-  std::atomic<int> finished_{0};  // parts of the current job that have returned
+  alignas(64) std::atomic<int> finished_{0};  // parts of the current job that have returned,
+                                              // on a cache line apart from job_ (taken by CAS)
   std::atomic<int> sleeping_{0};
   std::atomic<bool> stopping_{false};
   std::mutex mutex_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <utility>
 
 #include "core/assert.h"
@@ -269,8 +270,9 @@ int offsetBetween(const std::array<int, 3>& a, const std::array<int, 3>& b) {
 
 SpringGrid::SpringGrid(const Body& body) : points_(body.count()) {
   if (body.springs.empty()) return;  // nothing to compute (a jelly of elements)
-  if (body.joined() || body.gridless()) {
-    represents_ = false;
+  if (body.joined() || body.gridless() ||
+      !std::is_sorted(body.nodeOf.begin(), body.nodeOf.end(), std::less_equal<int>())) {
+    represents_ = false;  // the kernel takes points in node order, node q of a lattice point q
     return;
   }
   nodes_ = body.nx * body.ny * body.nz;
@@ -315,6 +317,12 @@ bool SpringGrid::kept(int node, int o) const {
 SpringGrid::Span SpringGrid::unitsFor(int nodeBegin, int nodeEnd) const {
   const int begin = nodeBegin / kLanes, end = (nodeEnd + kLanes - 1) / kLanes;
   return {std::max(0, begin - reachUnits_), begin, end};
+}
+
+long long SpringGrid::warmUpSlots() const {
+  long long slots = 0;
+  for (int o = 0; o < kOffsets; ++o) slots += present_[o] ? unitsBack_[o] * kLanes : 0;
+  return slots;
 }
 
 long long SpringGrid::slotsFor(PointRange points) const {

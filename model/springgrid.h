@@ -55,13 +55,16 @@ class SpringGrid {
   // Adds to arrays.force, on the points of `points` (the body's point numbers, any range within
   // it), the forces of their springs, as the spring list adds them, bit for bit; without dampers
   // their term is left out. Other points' forces are not touched, so that threads may share a
-  // call's arrays, a range each.
+  // call's arrays, a range each. (A slot that is no spring adds +0 where the list adds nothing: the
+  // same bits for every force but -0, which a sum that starts from the kernel's +0 never is.)
   void addForces(PointRange points, const BodyArrays& arrays, const OffsetConstants& c,
                  bool dampers) const;
   // Slots the kernel computes in the units that hold the points of `points` (the cost of a range,
   // for splitting a body between threads; a range after the first computes again some of the
   // slots of the units before it, whose springs end in it).
   long long slotsFor(PointRange points) const;
+  // The slots a range after the first computes again, before it (whose springs end in it), about.
+  long long warmUpSlots() const;
 
   // How the kernel sees the body (for tests): nodes a unit, and whether a node's spring of
   // offset `o` is kept.

@@ -399,6 +399,12 @@ long long SpringTerm::costOf(PointRange points) const {
   return slots;
 }
 
+long long SpringTerm::warmUpCost() const {
+  long long most = 0;
+  for (const SpringGrid& grid : grids_) most = std::max(most, grid.warmUpSlots());
+  return most;
+}
+
 void SpringTerm::addForcesOn(PointRange points, const double* p, const double* v, const Bounds*,
                              double* force) const {
   if (!grids_.empty()) return addGridForces(points, p, v, force);

@@ -92,7 +92,9 @@ class SpringTerm final : public ForceTerm {
   // The slots the kernel computes for a range of points (its cost, for splitting a body between
   // threads): for the spring list, each point's springs.
   long long costOf(PointRange points) const;
-  // The spring list in two passes, for two threads: each spring's force on its end a, for the
+  // The slots a range after the first computes again (the grid kernel's warm-up), about.
+  long long warmUpCost() const;
+  // The spring list in two passes, for several threads: each spring's force on its end a, for the
   // springs [first, end), into springForce (3 doubles a spring, xyz); then on a range of points,
   // each point's springs' forces from it, added in the list's order: what addForcesOn adds there,
   // bit for bit.

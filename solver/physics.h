@@ -24,18 +24,20 @@ struct Workers {
   std::vector<PointRange> parts;
   int threads() const { return pool && parts.size() > 1 ? static_cast<int>(parts.size()) : 1; }
 };
-// The fewest points a thread is given: a body of fewer than twice as many is computed by one
-// thread. Two threads measured slower than one up to 1,000 points (the course cube 0.93x to 1.00x,
-// 10^3 0.88x) and faster from 1,728 (12^3 1.13x, 16^3 1.26x, 24^3 1.56x; docs/performance.md,
-// "Threads").
+// A body of fewer points is computed by one thread: two measured slower than one up to 1,000
+// points (the course cube 0.93x to 1.00x, 10^3 0.88x) and faster from 1,728 (12^3 1.13x, 16^3
+// 1.26x, 24^3 1.56x; docs/performance.md, "Threads").
+constexpr int kFewestPointsShared = 1500;
+// Beyond two threads, one for each kPointsPerThread points: a range after the first computes again
+// the slots of up to two planes before it, which a range of a few planes pays for.
 constexpr int kPointsPerThread = 2048;
-// The threads a run of `model` shares its evaluations between, given at most `most`: one for each
-// kPointsPerThread points, at least one.
+// The threads a run of `model` shares its evaluations between, given at most `most`: one below
+// kFewestPointsShared points, else one for each kPointsPerThread points, at least two.
 int threadsFor(const Model& model, int most);
-// The workers of `model` with `pool`: as many threads as the pool has, at most one for each
-// kPointsPerThread points (bySize; else the pool's threads, for timing each count), each given a
-// range of about equal cost (the springs' slots and the points; ranges begin on multiples of
-// kRangeAlignment).
+// The workers of `model` with `pool`: as many threads as the pool has, at most threadsFor's
+// (bySize; else the pool's threads, for timing each count), each given a range of about equal cost
+// (the springs' slots, those a range after the first computes again included, and the points;
+// ranges begin on multiples of kRangeAlignment).
 Workers workersFor(const Model& model, ThreadPool* pool, bool bySize = true);
 
 // The force kernel: total force on every point (per-point arrays, see coordIndex) for
@@ -49,10 +51,11 @@ void computeForces(const Model& model, const double* p, const double* v, double*
 // bounds of all the positions when the scene culls (null when it does not): what computeForces
 // does, a range at a time, bit for bit.
 // springForce: the spring list's forces a spring at a time (SpringTerm::listSpringForces), to
-// gather rather than compute; null to compute them.
+// gather rather than compute; null to compute them. pointSums: 3 n doubles where the point terms
+// sum (threads share one: their ranges do not overlap); null: this thread's own.
 void computeForcesOn(const Model& model, PointRange points, const double* p, const double* v,
                      const Bounds* reach, double* force, const Pull* pull,
-                     const double* springForce = nullptr);
+                     const double* springForce = nullptr, double* pointSums = nullptr);
 
 // The derivative of a state y = [p; v] (2 * model.coords() doubles): dp/dt = v, dv/dt = F/mass.
 // With workers, their threads take a range of points each, with the same result.

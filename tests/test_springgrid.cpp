@@ -233,8 +233,9 @@ TEST(Threads, AnyNumberOfThreadsStepsAsOneBitForBit) {
 }
 
 // The ranges of a run: in order, covering every point once, each beginning on a multiple of
-// kRangeAlignment, of about equal cost; and a body gets one thread for each kPointsPerThread
-// points at most (a course cube none but one).
+// kRangeAlignment, of about equal cost (a range after the first computing again the slots before
+// it); and a body gets one thread below kFewestPointsShared points, else one for each
+// kPointsPerThread points, two at least.
 TEST(Threads, ARunIsSplitIntoRangesOfEqualCostAndThreadsBySize) {
   ThreadPool pool(4);
   const Body big = latticeBody(30, 30, 30, 0.01), ball = voxelBody(voxelBall(14), 0.01, "a ball");
@@ -250,7 +251,8 @@ TEST(Threads, ARunIsSplitIntoRangesOfEqualCostAndThreadsBySize) {
       EXPECT_EQ(r.begin % kRangeAlignment, 0);
       EXPECT_GT(r.end, r.begin);
       next = r.end;
-      const long long cost = model.forces.springs->costOf(r) + (r.end - r.begin);
+      const long long cost = model.forces.springs->costOf(r) + (r.end - r.begin) +
+                             (r.begin > 0 ? model.forces.springs->warmUpCost() : 0);
       least = least < 0 ? cost : std::min(least, cost);
       most = std::max(most, cost);
     }
@@ -263,7 +265,13 @@ TEST(Threads, ARunIsSplitIntoRangesOfEqualCostAndThreadsBySize) {
   const Model large = makeModel(gridSceneWorld(big, 0.001), State(big.count()));
   EXPECT_EQ(threadsFor(large, 16), 27000 / kPointsPerThread);
   EXPECT_EQ(threadsFor(large, 2), 2);
+  EXPECT_EQ(threadsFor(large, 1), 1);
   EXPECT_EQ(workersFor(large, &pool).threads(), std::min(4, 27000 / kPointsPerThread));
+  for (int edge : {11, 12, 16}) {  // 1,331, 1,728 and 4,096 points
+    const Body lattice = latticeBody(edge, edge, edge, 0.05);
+    const Model m = makeModel(gridSceneWorld(lattice, 0.001), State(lattice.count()));
+    EXPECT_EQ(threadsFor(m, 8), lattice.count() < kFewestPointsShared ? 1 : 2) << edge;
+  }
 }
 
 // The pool runs each part of each job exactly once, whichever thread takes it: jobs of 1 to 40
