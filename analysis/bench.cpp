@@ -255,8 +255,9 @@ void printBench(const RunOptions& run, const WorldFile& file, const Model& speci
   std::printf(
       "%d points; medians of %d runs each, the kernels taking turns, from the initial state at "
       "dt=%.9g s;\ngeneral = every term at every point, the springs from their list; a run of "
-      "this body uses %d thread%s (--threads, and one for each %d points)\n\n",
-      points, f.repeats, file.run.dt, runThreads, runThreads == 1 ? "" : "s", kPointsPerThread);
+      "this body uses %d thread%s (--threads; one below %d points, else one for each %d)\n\n",
+      points, f.repeats, file.run.dt, runThreads, runThreads == 1 ? "" : "s", kFewestPointsShared,
+      kPointsPerThread);
   const World& world = file.world;
   if (std::isnan(f.loading))
     std::printf("%-22s %14s  (a scene's jelly other than the course cube: no world file)\n",
