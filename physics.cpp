@@ -131,7 +131,7 @@ int threadsFor(const Model& model, int most) {
 Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
   Workers workers{pool, {}};
   const int n = model.points();
-  int threads = pool ? pool->threads() : 1;
+  int threads = pool ? std::min(pool->threads(), kMostThreads) : 1;
   if (bySize) threads = threadsFor(model, threads);
   if (threads <= 1) return workers;
   // Each point costs its springs' slots and one more for the other terms, and each range after the
@@ -163,6 +163,7 @@ namespace {
 // The bounds of the positions p, a range a thread, put together.
 Bounds boundsOnThreads(const double* p, int n, const Workers& workers) {
   Bounds part[kMostThreads];
+  JELLO_ASSERT(workers.threads() <= kMostThreads);
   workers.pool->run(workers.threads(), [&](int t) { part[t] = boundsOf(p, n, workers.parts[t]); });
   Bounds all = part[0];
   for (int t = 1; t < workers.threads(); ++t) {
