@@ -372,14 +372,19 @@ void SpringTerm::addListedForces(PointRange points, const double* springForce,
       force);
 }
 
+PointRange SpringTerm::inPart(std::size_t part, PointRange points, int* first) const {
+  *first = body_.joined() ? body_.partFirst[part] : 0;
+  const int end = *first + grids_[part].points();
+  return {std::max(points.begin, *first) - *first, std::min(points.end, end) - *first};
+}
+
 // Each part's points of the range, through its grid (a body that is not joined: its one part).
 void SpringTerm::addGridForces(PointRange points, const double* p, const double* v,
                                double* force) const {
   const int n = pointCount();
   for (std::size_t part = 0; part < grids_.size(); ++part) {
-    const int first = body_.joined() ? body_.partFirst[part] : 0;
-    const int end = first + grids_[part].points();
-    const PointRange mine{std::max(points.begin, first) - first, std::min(points.end, end) - first};
+    int first;
+    const PointRange mine = inPart(part, points, &first);
     if (mine.begin >= mine.end) continue;
     grids_[part].addForces(mine, {p + first, v + first, force + first, n}, offsetConstants_[part],
                            dampers_);
@@ -391,9 +396,8 @@ long long SpringTerm::costOf(PointRange points) const {
   if (grids_.empty()) return springsStart_[points.end] - springsStart_[points.begin];
   long long slots = 0;
   for (std::size_t part = 0; part < grids_.size(); ++part) {
-    const int first = body_.joined() ? body_.partFirst[part] : 0;
-    const int end = first + grids_[part].points();
-    const PointRange mine{std::max(points.begin, first) - first, std::min(points.end, end) - first};
+    int first;
+    const PointRange mine = inPart(part, points, &first);
     if (mine.begin < mine.end) slots += grids_[part].slotsFor(mine);
   }
   return slots;

@@ -116,6 +116,8 @@ class SpringTerm final : public ForceTerm {
  private:
   void addListForces(PointRange points, const double* p, const double* v, double* force) const;
   void addGridForces(PointRange points, const double* p, const double* v, double* force) const;
+  // The points of `points` in grid part `part`, numbered from its first point (in *first).
+  PointRange inPart(std::size_t part, PointRange points, int* first) const;
   // Adds to each point of `points` its springs' forces forceOf(spring), in the list's order.
   template <class ForceOf>
   void gather(PointRange points, const ForceOf& forceOf, double* force) const;
