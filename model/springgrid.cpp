@@ -253,8 +253,6 @@ void runPass(Pass s, int warm, int begin, int end, const int* unitsBack, int rin
 
 }  // namespace
 
-int SpringGrid::unitLanes() { return kLanes; }
-
 namespace {
 
 // The offset (its place in kSpringOffsets) from grid index a to grid index b, or -1.
@@ -308,10 +306,6 @@ SpringGrid::SpringGrid(const Body& body) : points_(body.count()) {
     farthest_ = std::max(farthest_, delta_[o]);
   }
   if (!compact_) nodeOf_ = body.nodeOf;
-}
-
-bool SpringGrid::kept(int node, int o) const {
-  return keep_[std::size_t(node / kLanes) * kOffsets + o] >> (node % kLanes) & 1u;
 }
 
 SpringGrid::Span SpringGrid::unitsFor(int nodeBegin, int nodeEnd) const {

@@ -66,11 +66,6 @@ class SpringGrid {
   // The slots a range after the first computes again, before it (whose springs end in it), about.
   long long warmUpSlots() const;
 
-  // How the kernel sees the body (for tests): nodes a unit, and whether a node's spring of
-  // offset `o` is kept.
-  static int unitLanes();
-  bool kept(int node, int o) const;
-
  private:
   struct Span {  // the units a call goes through: warm-up, then its own
     int warm, begin, end;
