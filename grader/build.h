@@ -30,7 +30,9 @@ struct BuildResult {
   double seconds = 0;
 };
 
-// Builds the submission in the sandbox and copies the program to `probePath`.
+// Builds the submission in the sandbox and copies the program to `probePath`, and the files
+// beside its source (what it may read as it starts: textures, worlds) to
+// programFilesOf(probePath), where its runs start (probe.h).
 BuildResult buildSubmission(const Submission& submission, const std::string& probePath);
 
 }  // namespace jello::grader

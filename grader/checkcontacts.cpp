@@ -100,6 +100,50 @@ std::vector<bool> acrossWall(const State& s, int axis, double side) {
 const char* const kWallNames[6] = {"wall x = -2", "wall x = +2", "wall y = -2",
                                    "wall y = +2", "wall z = -2", "wall z = +2"};
 
+// This project's force (N) on each point of `state` in `world` (physics.md).
+std::vector<double> projectForces(const World& world, const State& state) {
+  Model model = makeModel(world, state);
+  std::vector<double> force(kNumCoords);
+  computeForces(model, state.p(), state.v(), force.data());
+  return force;
+}
+
+// A point across two walls (an edge) or three (a corner), as the course's worlds have when a
+// cube lands on an edge: each wall pushes and damps on its own (physics.md), not one spring to
+// the box's edge. The cube moved rigidly 1.5 cm across the walls named, moving into them: its
+// force change against the cube just inside, compared with this project's. "" when right.
+std::string judgeEdges(const std::string& probe, const World& world) {
+  struct Edge {
+    const char* name;
+    Vec3 out;  // the walls crossed: +1 or -1 on each axis crossed, 0 on the others
+  };
+  const Edge edges[] = {{"the edge of walls x = +2 and y = +2", {1, 1, 0}},
+                        {"the corner of walls x = -2, y = +2 and z = -2", {-1, 1, -1}}};
+  for (const Edge& edge : edges) {
+    State inside = restLattice(kCentred + 1.49 * edge.out), across = inside;
+    for (int q = 0; q < kNumPoints; ++q) {
+      store(across.p(), q, load(inside.p(), q) + 0.025 * edge.out);
+      store(across.v(), q, 0.4 * edge.out + Vec3{0.1, 0.2, 0.3});
+    }
+    std::string failure;
+    auto answers = accelerationsAt(probe, world, {inside, across}, &failure);
+    if (!failure.empty()) return failure + " at " + edge.name;
+    std::vector<double> expected = projectForces(world, across), before = projectForces(world, inside);
+    for (int q = 0; q < kNumPoints; ++q) {
+      Vec3 want = load(expected.data(), q) - load(before.data(), q);
+      Vec3 got = forceChange(answers[1], answers[0], q);
+      if (!(length(got - want) <= kExact * std::max(1.0, length(want)))) {
+        return textf("at %s (points across both or all three): the force on %s is (%.6g, %.6g, "
+                     "%.6g) N, (%.6g, %.6g, %.6g) N expected: each wall pushes and damps on its "
+                     "own, along its own normal",
+                     edge.name, pointName(q).c_str(), got.x, got.y, got.z, want.x, want.y,
+                     want.z);
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 CheckResult checkWalls(const std::string& probe) {
@@ -137,8 +181,11 @@ CheckResult checkWalls(const std::string& probe) {
       same->second += ", " + name.substr(5);  // "wall x = -2" -> "x = -2"
   }
   if (findings.empty()) {
+    std::string edges = judgeEdges(probe, world);
+    if (!edges.empty()) return failed("walls", edges);
     return passed("walls",
-                  "all six: kCollision, rest length 0, only beyond the wall, damping into it");
+                  "all six: kCollision, rest length 0, only beyond the wall, damping into it; "
+                  "an edge and a corner, each wall on its own");
   }
   std::string line;
   for (const auto& [what, walls] : findings) {

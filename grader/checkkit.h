@@ -78,11 +78,11 @@ CheckResult checkSprings(const std::string& probe, const std::string& kind);
 CheckResult checkDampers(const std::string& probe);
 CheckResult checkWalls(const std::string& probe);
 CheckResult checkPlane(const std::string& probe);
-CheckResult checkField(const std::string& probe);
+CheckResult checkField(const std::string& probe, const GradingSetup& setup);
 CheckResult checkEuler(const std::string& probe);
 CheckResult checkRk4(const std::string& probe);
 CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup);
-CheckResult checkRobust(const std::string& probe);
+CheckResult checkRobust(const std::string& probe, const GradingSetup& setup);
 CheckResult checkSpeed(const std::string& probe, const GradingSetup& setup);
 
 }  // namespace jello::grader

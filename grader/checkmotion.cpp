@@ -213,11 +213,20 @@ CheckResult checkRk4(const std::string& probe) {
   if (!failure.empty()) return failed("rk4", failure + " on a smooth scene");
   std::string orderLine = textf("observed order %.2f on a smooth scene", order);
   if (!wrong.empty()) return failed("rk4", wrong + " (" + orderLine + ")");
-  if (!(std::fabs(order - 4) <= 0.5)) return failed("rk4", orderLine + ", 4 expected");
+  // Its step is classic RK4 on its own accelerations: an order below 4 then comes from those
+  // accelerations (a term of its own that is not smooth, an obstacle beyond the course's), which
+  // the term checks and the agreement judge, not from the integrator.
+  if (!std::isfinite(order)) return failed("rk4", orderLine + ": NaN or infinity in its run");
+  if (!(std::fabs(order - 4) <= 0.5))
+    return passed("rk4", "classic RK4 on its own accelerations; " + orderLine +
+                             ", not 4: its own accelerations are not smooth on that scene (a "
+                             "term of its own? the term checks and the agreement judge them)");
   return passed("rk4", "classic RK4 on its own accelerations; " + orderLine);
 }
 
-CheckResult checkRobust(const std::string& probe) {
+// Beyond the course's worlds (each finding through outsideDomain): a cube thrown at 52 m/s into
+// the corner, one collapsed to a point, one collapsed flat.
+CheckResult checkRobust(const std::string& probe, const GradingSetup& setup) {
   World world = probeWorld();
   State thrown = restLattice(kCentred), point = thrown, flat = thrown;
   for (int q = 0; q < kNumPoints; ++q) {
@@ -235,18 +244,14 @@ CheckResult checkRobust(const std::string& probe) {
     reference.advance(40);
     throw_.push_back(reference.state());
   }
+  const char* throwWords = "a cube thrown at 52 m/s into the corner (-2,-2,-2)";
   std::string failure;
   auto answers = accelerationsAt(probe, world, throw_, &failure);
-  if (!failure.empty())
-    return failed("robust", failure + " on a cube thrown hard into the corner (-2,-2,-2)");
-  for (const auto& a : answers) {
-    if (!allUsable(a))
-      return failed(
-          "robust",
-          "NaN or infinity in the accelerations of a cube thrown hard into the corner (-2,-2,-2)");
-  }
+  if (!failure.empty()) return outsideDomain("robust", failure + " on " + throwWords, setup);
   for (const auto& [what, state] : {std::pair<const char*, const State&>{
-                                        "a collapsed cube (all 512 points at one place)", point},
+                                        "a cube collapsed to one point (all 512 points at one "
+                                        "place)",
+                                        point},
                                     {"a cube collapsed flat (eight points at each place)", flat}}) {
     Script script;
     script.world(world, probeRun(), state);
@@ -254,10 +259,13 @@ CheckResult checkRobust(const std::string& probe) {
     script.steps(Integrator::RK4, 10);
     script.read();
     ProbeRun run = runProbe(probe, script);
-    if (!run.complete()) return crashed("robust", run, std::string("on ") + what);
+    if (!run.complete())
+      return outsideDomain("robust", run.failure + " on " + std::string(what), setup);
     if (!allUsable(run.answers[0]) || !allUsable(run.answers[2])) {
-      return failed("robust", std::string("NaN or infinity on ") + what +
-                                  ": a spring of zero length must exert no force");
+      return outsideDomain("robust",
+                           std::string("NaN or infinity on ") + what +
+                               ": a spring of zero length should exert no force",
+                           setup);
     }
   }
   return passed("robust", "finite through a hard corner throw and two collapses");

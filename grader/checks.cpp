@@ -28,6 +28,12 @@ template <CheckResult (*check)(const std::string&)>
 CheckResult probeOnly(const std::string& probe, const GradingSetup&) {
   return check(probe);
 }
+CheckResult field(const std::string& probe, const GradingSetup& setup) {
+  return checkField(probe, setup);
+}
+CheckResult robust(const std::string& probe, const GradingSetup& setup) {
+  return checkRobust(probe, setup);
+}
 CheckResult structural(const std::string& probe, const GradingSetup&) {
   return checkSprings(probe, "structural");
 }
@@ -54,14 +60,13 @@ const std::vector<CheckInfo>& checkTable() {
        probeOnly<checkWalls>},
       {"plane", "the inclined plane: the positive side allowed, rest length 0, damping",
        probeOnly<checkPlane>},
-      {"field", "the force field: trilinear, node order, cells at the walls, R = 1",
-       probeOnly<checkField>},
+      {"field", "the force field: trilinear, node order, the cells at the walls", field},
       {"euler", "one Euler step is the course's Euler on its own accelerations",
        probeOnly<checkEuler>},
       {"rk4", "one RK4 step is classic RK4 on its own accelerations; order 4", probeOnly<checkRk4>},
       {"agreement", "2000 steps of the course worlds and of unseen worlds against this project",
        checkAgreement},
-      {"robust", "no NaN and no crash: thrown into a corner, collapsed", probeOnly<checkRobust>},
+      {"robust", "no NaN and no crash beyond the course: thrown into a corner, collapsed", robust},
       {"speed", "microseconds per RK4 step (reported, not graded)", checkSpeed},
   };
   return table;
@@ -78,6 +83,20 @@ CheckResult runCheck(const std::string& name, const std::string& probe, const Gr
   for (const CheckInfo& check : checkTable())
     if (name == check.name && check.run) return check.run(probe, setup);
   return failed(name, "no such check");
+}
+
+CheckResult outsideDomain(const std::string& check, const std::string& line,
+                          const GradingSetup& setup) {
+  if (setup.strict) return failed(check, line + " (graded: --strict)");
+  return info(check, line + " (not asked by the course's worlds: not graded; --strict grades it)");
+}
+
+void addOutsideDomain(CheckResult& result, const std::string& line, const GradingSetup& setup) {
+  CheckResult finding = outsideDomain(result.check, line, setup);
+  if (finding.grade == Grade::Fail && result.grade != Grade::Fail)
+    result = finding;
+  else if (finding.grade != Grade::Fail)
+    result.notes.push_back(finding.diagnosis);
 }
 
 RunSettings probeRun() { return {Integrator::RK4, 0.0005, 1}; }

@@ -27,7 +27,19 @@ struct CheckResult {
 struct GradingSetup {
   std::string worldDir;    // the course worlds (rotate.w, ...)
   std::uint64_t seed = 1;  // the unseen worlds of "agreement"
+  // Whether what the course never asks of its worlds (docs/grading.md, "The course's domain": a
+  // field of resolution 1, points exactly on a wall, a collapsed cube, a hard throw) is graded:
+  // by default each is a note a student can read, never a FAIL.
+  bool strict = false;
 };
+
+// A finding outside the course's domain: `line` ("NaN on a cube collapsed to one point") with
+// what the course asks, as a FAIL under --strict, else as information.
+CheckResult outsideDomain(const std::string& check, const std::string& line,
+                          const GradingSetup& setup);
+// The same finding beside a check's graded verdict: it fails the check under --strict (when the
+// check passed so far), else it is a note.
+void addOutsideDomain(CheckResult& result, const std::string& line, const GradingSetup& setup);
 
 // A check, as the table carries it: its name, its line, and what runs it (null for "builds",
 // which the grader's build answers).

@@ -27,6 +27,7 @@
 #include "grader/probe.h"
 #include "grader/report.h"
 #include "grader/sandbox.h"
+#include "grader/shards.h"
 #include "grader/submission.h"
 #include "model/term.h"
 
@@ -52,9 +53,11 @@ std::string worldDir() {
                            programPath() + " nor in " + sources);
 }
 
-// The grade of a check that could not run: FAIL, but never for speed, which is not graded.
-CheckResult notRun(const std::string& check, const std::string& why) {
+// The grade of a check that could not run: FAIL, but never for speed, which is not graded, nor
+// for robust, beyond the course's domain (unless --strict).
+CheckResult notRun(const std::string& check, const std::string& why, bool strict = false) {
   if (check == "speed") return {check, Grade::Info, "not measured: " + why, {}};
+  if (check == "robust" && !strict) return {check, Grade::Info, why, {}};
   return {check, Grade::Fail, why, {}};
 }
 
@@ -92,18 +95,22 @@ Graded gradeOne(const Submission& submission, const std::vector<std::string>& ch
   Graded graded{submission, {}, {}, {}, 0};
   std::string probePath = workDir + "/" + submission.name + ".probe";
   graded.results.push_back(buildCheck(submission, probePath, graded));
+  std::string hungIn;  // the check in which the submission did not return
   for (std::size_t n = 1; n < checks.size(); ++n) {
     const std::string& check = checks[n];
     if (graded.results.front().grade == Grade::Fail) {
       graded.results.push_back(notRun(check, "not built"));
-    } else if (probeHung()) {
-      graded.results.push_back(
-          notRun(check, "not run: the submission did not return in an earlier check"));
+    } else if (!hungIn.empty()) {
+      graded.results.push_back(notRun(
+          check, "not run: the submission did not return in the " + hungIn + " check (see it)",
+          setup.strict));
     } else {
       graded.results.push_back(runCheckSafely(check, probePath, setup));
+      if (probeHung()) hungIn = check;
     }
   }
   fs::remove(probePath);
+  fs::remove_all(programFilesOf(probePath));
   graded.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return graded;
 }
@@ -111,6 +118,7 @@ Graded gradeOne(const Submission& submission, const std::vector<std::string>& ch
 // The lines a finished submission prints: its summary, then what is wrong, a line a check.
 std::string finishedLines(const Graded& graded) {
   std::string lines = summaryLine(graded) + "\n";
+  if (!rootCause(graded).empty()) lines += "  root cause: " + rootCause(graded) + "\n";
   for (const auto& r : graded.results) {
     if (r.grade == Grade::Fail || r.grade == Grade::Near)
       lines += "  " + r.check + " (" + gradeName(r.grade) + "): " + printable(r.diagnosis) + "\n";
@@ -119,13 +127,32 @@ std::string finishedLines(const Graded& graded) {
   return lines;
 }
 
-int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::string>& checks,
-             const GradingSetup& setup, const std::string& dir, bool overwrite, int jobs) {
+// Makes `dir` ready for the report of `submissions` (a grade or a merge), or throws saying why
+// not; whether the grader's own files there are replaced.
+Existing prepareReportFolder(const std::string& dir, const std::vector<Submission>& submissions,
+                             bool overwrite) {
   bool made = !fs::exists(dir);
-  // A folder this grader wrote before is graded into again: its own files are replaced.
+  // A folder this grader wrote before is graded into again: its own files are replaced. Grading
+  // only some of its class there would drop the others from its summary: refused in words,
+  // unless --overwrite asks for this grade alone.
   bool regrade = !made && isGradingReport(dir);
+  if (regrade && !overwrite) {
+    std::vector<std::string> dropped;
+    for (const auto& name : earlierSubmissions(dir)) {
+      bool again = std::any_of(submissions.begin(), submissions.end(),
+                               [&](const Submission& s) { return s.name == name; });
+      if (!again) dropped.push_back(name);
+    }
+    if (!dropped.empty())
+      throw std::invalid_argument(textf(
+          "%s: holds the reports of %zu other submission%s (%s%s), which this grade would drop "
+          "from its summary: grade the whole class again into it, choose another -o, or add "
+          "--overwrite to keep only this grade",
+          dir.c_str(), dropped.size(), dropped.size() == 1 ? "" : "s", dropped.front().c_str(),
+          dropped.size() > 1 ? ", ..." : ""));
+  }
   Existing existing = overwrite || regrade ? Existing::Replace : Existing::Refuse;
-  FolderClaim claim = claimOutputs(dir, {"summary.md", "summary.csv", "junit.xml"}, existing);
+  claimOutputs(dir, {"summary.md", "summary.csv", "junit.xml", kRecordName}, existing);
   if (made) removeIfEmptyOnSignal(dir);
   for (const auto& file : reportFiles(submissions)) {
     fs::path folder = fs::path(dir + "/" + file).parent_path();
@@ -141,6 +168,12 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
     std::string why = whyNotWritable(dir + "/" + file, existing);
     if (!why.empty()) throw std::runtime_error(dir + "/" + file + ": " + why);
   }
+  return existing;
+}
+
+int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::string>& checks,
+             const GradingSetup& setup, const std::string& dir, bool overwrite, int jobs) {
+  Existing existing = prepareReportFolder(dir, submissions, overwrite);
   Scratch work;  // the built programs, trusted: never shown to a sandbox but by copy
   jobs = std::max(1, std::min(jobs, static_cast<int>(submissions.size())));
   std::cerr << textf("grading %zu submission%s, %d at a time; unseen worlds from seed %llu\n",
@@ -164,15 +197,51 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
   std::vector<std::thread> threads;
   for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
   for (auto& thread : threads) thread.join();
-  writeReport(dir, graded, setup.seed, existing == Existing::Replace);
+  writeReport(dir, graded, setup.seed, setup.strict, existing == Existing::Replace);
   std::cout << dir << "/summary.md, summary.csv, junit.xml; a report.md per submission\n";
+  return 0;
+}
+
+// The reports of a class's parts (grade --shard K/N, each into its own folder) joined into `dir`,
+// as one grade of the whole class writes it but for the measured times.
+int mergeReports(const std::string& dir, const std::vector<std::string>& parts, bool overwrite) {
+  std::vector<Graded> all;
+  std::uint64_t seed = 0;
+  bool strict = false;
+  for (std::size_t n = 0; n < parts.size(); ++n) {
+    GradedRecord record = readGradedRecord(parts[n]);
+    if (n > 0 && (record.seed != seed || record.strict != strict))
+      throw std::invalid_argument(parts[n] + ": graded with another --seed or --strict than " +
+                                  parts[0] + ": its worlds differ; grade the parts alike");
+    seed = record.seed;
+    strict = record.strict;
+    all.insert(all.end(), record.graded.begin(), record.graded.end());
+  }
+  // One grade of the class takes its submissions in the order of their paths (a class's entries
+  // in name order).
+  std::stable_sort(all.begin(), all.end(), [](const Graded& a, const Graded& b) {
+    return a.submission.path < b.submission.path;
+  });
+  std::vector<Submission> submissions;
+  for (const Graded& g : all) {
+    for (const Submission& s : submissions)
+      if (s.name == g.submission.name)
+        throw std::invalid_argument(g.submission.name + ": in two of the parts");
+    submissions.push_back(g.submission);
+  }
+  if (submissions.empty()) throw std::invalid_argument("--merge: the parts hold no submission");
+  Existing existing = prepareReportFolder(dir, submissions, overwrite);
+  writeReport(dir, all, seed, strict, existing == Existing::Replace);
+  std::cout << dir << "/summary.md, summary.csv, junit.xml: " << submissions.size()
+            << " submissions from " << parts.size() << " parts\n";
   return 0;
 }
 
 // One check of one submission, as a CTest test: the build goes to dir/NAME/probe.
 int gradeOneCheck(const std::string& check, std::size_t item, const std::string& dir) {
   GradingSetup setup{worldDir(), 0};
-  std::vector<Submission> submissions = nameSubmissions(readCTestList(dir, &setup.seed));
+  std::vector<Submission> submissions =
+      nameSubmissions(readCTestList(dir, &setup.seed, &setup.strict));
   if (item >= submissions.size())
     throw std::runtime_error("--item " + std::to_string(item) + ": no such submission");
   const Submission& s = submissions[item];
@@ -216,8 +285,9 @@ struct Options {
   std::vector<std::string> paths;
   std::string checkList;  // --checks, comma-separated
   std::string dir = "grading", one;
-  bool overwrite = false, ctest = false;
-  std::uint64_t seed = std::random_device{}();
+  bool overwrite = false, ctest = false, strict = false;
+  std::string shard, merge;  // --shard K/N; --merge OUT
+  std::optional<std::uint64_t> seed;  // --seed; else the report folder's, else a new one
   std::size_t item = 0;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
@@ -231,11 +301,21 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("SUBMISSION", o.paths, "a folder, .zip, .tar.gz or .tgz holding physics.cpp");
   app.add_option("-o,--output", o.dir, "the report's folder (default grading/)");
   app.add_flag("--overwrite", o.overwrite, "replace an earlier report in that folder");
-  app.add_option("--seed", o.seed, "the seed of the unseen worlds (default: a new one, printed)")
+  app.add_option("--seed", o.seed,
+                 "the seed of the unseen worlds (default: the report folder's, or a new one, "
+                 "printed)")
       ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
   app.add_option("--checks", o.checkList, "only these checks (and builds), e.g. --checks rest,rk4");
   app.add_option("-j,--jobs", o.jobs, "submissions graded at once (default: the cores)")
       ->transform(wholeNumber(1, 256));
+  app.add_option("--shard", o.shard,
+                 "grade only part K of N of the class (K/N; a submission is always in the same "
+                 "part), for --merge");
+  app.add_option("--merge", o.merge,
+                 "join the report folders given (the parts of grade --shard) into this one");
+  app.add_flag("--strict", o.strict,
+               "grade what the course's worlds never ask too (resolution 1, points on a wall, a "
+               "collapsed cube, a hard throw): FAIL, not notes");
   app.add_flag("--ctest", o.ctest, "write a CTest file into the report folder instead of grading");
   app.add_option("--one", o.one, "(for the CTest file) run one check")->group("");
   app.add_option("--item", o.item, "(for the CTest file) of this submission")
@@ -259,7 +339,7 @@ int writeCTest(const Options& o, const std::vector<std::string>& paths,
   for (const auto& p : paths) absolute.push_back(fs::absolute(p).string());
   fs::create_directories(o.dir);
   writeCTestFiles(fs::absolute(o.dir).string(), programPath(), nameSubmissions(absolute), checks,
-                  o.seed, o.overwrite);
+                  o.seed.value_or(std::random_device{}()), o.strict, o.overwrite);
   std::cout << "cd " << o.dir << " && ctest -j" << o.jobs << "   # " << paths.size() * checks.size()
             << " tests; --output-junit junit.xml for a learning platform\n";
   return 0;
@@ -273,6 +353,10 @@ int run(int argc, char** argv) {
       throw std::invalid_argument("--one CHECK --item N DIR");
     requireSandbox();
     return gradeOneCheck(o.one, o.item, o.paths[0]);
+  }
+  if (!o.merge.empty()) {
+    if (o.paths.empty()) throw std::invalid_argument("--merge OUT PART...: no part given");
+    return mergeReports(o.merge, o.paths, o.overwrite);
   }
   std::vector<std::string> checks = chosenChecks(o.checkList);
   if (o.paths.empty())
@@ -289,7 +373,20 @@ int run(int argc, char** argv) {
   for (const auto& note : notes) std::cerr << "grade: " << note << "\n";
   if (o.ctest) return writeCTest(o, paths, checks);
   requireSandbox();
-  return gradeAll(nameSubmissions(paths), checks, {worldDir(), o.seed}, o.dir, o.overwrite, o.jobs);
+  std::vector<Submission> submissions = nameSubmissions(paths);
+  if (!o.shard.empty()) {
+    // Named as in the whole class first: a part's names are the whole run's.
+    Shard shard = parseShard(o.shard);
+    submissions.erase(std::remove_if(submissions.begin(), submissions.end(),
+                                     [&](const Submission& s) { return !inShard(s.name, shard); }),
+                      submissions.end());
+    std::cerr << textf("grade: part %d of %d: %zu submission%s\n", shard.part, shard.parts,
+                       submissions.size(), submissions.size() == 1 ? "" : "s");
+    if (submissions.empty()) throw std::invalid_argument("--shard " + o.shard + ": no submission in this part");
+  }
+  // A regrade into a report folder uses its seed, so that it is judged on the same worlds.
+  std::uint64_t seed = o.seed ? *o.seed : earlierSeed(o.dir).value_or(std::random_device{}());
+  return gradeAll(submissions, checks, {worldDir(), seed, o.strict}, o.dir, o.overwrite, o.jobs);
 }
 
 }  // namespace

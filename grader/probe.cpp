@@ -10,6 +10,7 @@
 #include "core/output.h"
 #include "grader/submission.h"
 #include "io/input.h"
+#include "model/term.h"
 
 namespace jello::grader {
 namespace {
@@ -55,6 +56,19 @@ std::vector<double> toArrays(const std::vector<double>& lines, std::size_t point
   return arrays;
 }
 
+constexpr double kFirstStretch = 1.05;
+
+// `state` with its positions scaled by `factor` about their mean.
+State stretched(const State& state, double factor) {
+  Vec3 centre = {0, 0, 0};
+  for (int q = 0; q < kNumPoints; ++q) centre = centre + load(state.p(), q);
+  centre = (1.0 / kNumPoints) * centre;
+  State out = state;
+  for (int q = 0; q < kNumPoints; ++q)
+    store(out.p(), q, centre + factor * (load(state.p(), q) - centre));
+  return out;
+}
+
 thread_local double probeBudget = kProbeSeconds;
 thread_local bool hung = false;
 
@@ -69,7 +83,11 @@ bool probeHung() { return hung; }
 
 void Script::world(const World& world, const RunSettings& run, const State& state) {
   std::string text = formatWorld(world, run, state);
-  if (firstWorld_.empty()) firstWorld_ = text;
+  // The world file the student's main() reads: this world, its cube stretched 5% about its
+  // centre, so that a setup that takes rest lengths from the initial positions (wrong on a
+  // course world that starts deformed, skewedCorner.w) shows in the spring checks. The W
+  // request then sets the state itself.
+  if (firstWorld_.empty()) firstWorld_ = formatWorld(world, run, stretched(state, kFirstStretch));
   pending_ += "W\n" + text;
 }
 
@@ -104,6 +122,8 @@ State ProbeRun::state(std::size_t answer) const {
   return state;
 }
 
+std::string programFilesOf(const std::string& probePath) { return probePath + ".files"; }
+
 ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits) {
   ProbeRun run;
   Scratch scratch;
@@ -115,9 +135,28 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   job.argv = {"/work/probe", "/work/world.w"};
   job.hostDir = scratch.path();
   job.workingDir = "/tmp";
+  // It starts among its own files, as from its project's folder: a texture it loads in its
+  // setup is there. The probe copies them from /work/files (read-only) into /tmp, its working
+  // directory, before the program starts: a program that writes over one of them can.
+  // A link to each file where the file system allows (the run's own scratch folder is what the
+  // sandbox's user can reach), else a copy.
+  if (std::filesystem::is_directory(programFilesOf(probePath))) {
+    std::error_code linked;
+    std::filesystem::copy(programFilesOf(probePath), scratch.path() + "/files",
+                          std::filesystem::copy_options::recursive |
+                              std::filesystem::copy_options::create_hard_links,
+                          linked);
+    if (linked) {
+      std::filesystem::remove_all(scratch.path() + "/files");
+      std::filesystem::copy(programFilesOf(probePath), scratch.path() + "/files",
+                            std::filesystem::copy_options::recursive);
+    }
+  }
   job.requests = script.requests();
-  job.limits.wallSeconds = limits.scale * probeBudget;
+  // Time is judged in CPU seconds, which a busy machine does not take from the program; the
+  // wall clock is a backstop for a program that waits (sleeps, reads) instead of computing.
   job.limits.cpuSeconds = limits.scale * probeBudget;
+  job.limits.wallSeconds = kWallBackstop * job.limits.cpuSeconds;
   job.limits.memoryBytes = 1LL << 30;
   job.limits.processes = 8;
   job.limits.fileBytes = 16LL << 20;
@@ -129,7 +168,14 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   const std::string& replies = run.sandbox.replies;
   std::size_t at = 0;
   std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
-  if (run.sandbox.signal == 9 && !run.sandbox.timedOut) how = "was killed (out of memory?)";
+  if (run.sandbox.signal == SIGXCPU || run.sandbox.timedOut)
+    how = run.sandbox.timedOut
+              ? textf("did not return within %g s, waiting without computing: a read of the "
+                      "keyboard or a sleep?",
+                      job.limits.wallSeconds)
+              : textf("did not return within %g s: an endless loop?", job.limits.cpuSeconds);
+  else if (run.sandbox.signal == SIGKILL && !run.sandbox.outputCut)
+    how = "was killed (out of memory?)";
   if (!readWord(replies, at, "jello-probe") || !readWord(replies, at, ".")) {
     run.failure = "the program never reached the grader: it " +
                   (run.sandbox.exitedWith(0) ? std::string("ended") : how) +

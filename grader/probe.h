@@ -62,7 +62,8 @@ struct ProbeRun {
 // run" (probeHung), so that one that never returns costs seconds, not minutes. Under CTest
 // each check is a process of its own and waits its own kProbeSeconds. resetProbeBudget() when
 // a thread starts on the next submission.
-constexpr double kProbeSeconds = 5;
+constexpr double kProbeSeconds = 5;  // CPU seconds
+constexpr double kWallBackstop = 4;  // wall-clock seconds a run may take, per CPU second
 constexpr double kProbeSecondsAfterHang = 2;
 void resetProbeBudget();
 // Whether a probe run on this thread did not finish in time since resetProbeBudget().
@@ -70,6 +71,10 @@ bool probeHung();
 struct ProbeLimits {
   double scale = 1;
 };
+
+// The folder of the files beside a built program's source (buildSubmission): a run finds a
+// copy of them in its working directory (/tmp).
+std::string programFilesOf(const std::string& probePath);
 
 ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits = {});
 

@@ -1,10 +1,15 @@
 // report.cpp: the grader's files (report.h). Every file is written whole by core/output's writer.
 #include "grader/report.h"
+#include "grader/shards.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -84,6 +89,52 @@ std::string cmakeQuote(const std::string& text) {
 }
 
 // A check's cell in the summary: its grade, or the figure it measured (speed).
+// A submission's overall grade: FAIL when a check fails, near when one is near, else pass.
+Grade overallGrade(const Graded& g) {
+  Grade overall = Grade::Pass;
+  for (const auto& r : g.results) {
+    if (r.grade == Grade::Fail) return Grade::Fail;
+    if (r.grade == Grade::Near) overall = Grade::Near;
+  }
+  return overall;
+}
+
+// The graded checks (pass, near or FAIL: info is not graded), and those of them that pass.
+int gradedChecks(const Graded& g) {
+  return static_cast<int>(std::count_if(g.results.begin(), g.results.end(),
+                                        [](const CheckResult& r) { return r.grade != Grade::Info; }));
+}
+int passedChecks(const Graded& g) {
+  return static_cast<int>(std::count_if(g.results.begin(), g.results.end(),
+                                        [](const CheckResult& r) { return r.grade == Grade::Pass; }));
+}
+
+}  // namespace
+
+std::string rootCause(const Graded& g) {
+  // One mistake that shows in several checks, as their sentences name it.
+  struct Cause {
+    const char* mark;   // in each failing check's sentence
+    const char* words;  // the cause, once
+  };
+  const Cause causes[] = {
+      {"is the force not divided by the mass?", "the forces are not divided by the mass"},
+      {"multiplied by the mass instead of divided", "the forces are multiplied by the mass"},
+      {"did not return within", "it does not return (an endless loop?)"}};
+  for (const Cause& cause : causes) {
+    std::string checks;
+    int count = 0;
+    for (const auto& r : g.results) {
+      if (r.grade != Grade::Fail || r.diagnosis.find(cause.mark) == std::string::npos) continue;
+      checks += (count++ ? ", " : "") + r.check;
+    }
+    if (count >= 2) return std::string(cause.words) + " (it explains " + checks + ")";
+  }
+  return "";
+}
+
+namespace {
+
 std::string gradeCell(const CheckResult& r, const char* unit) {
   return r.figure >= 0 ? textf("%.0f%s", r.figure, unit) : std::string(gradeName(r.grade));
 }
@@ -92,8 +143,9 @@ std::string submissionReport(const Graded& g) {
   std::ostringstream md;
   md << "# " << g.submission.name << "\n\nSubmission: " << markdownText(g.submission.path);
   if (!g.how.empty()) md << ", built from " << g.how;
-  md << textf(". Graded in %.1f s.\n\n| check | grade | what it found |\n|---|---|---|\n",
-              g.seconds);
+  md << textf(". Graded in %.1f s.\n\n", g.seconds);
+  if (!rootCause(g).empty()) md << "**Root cause**: " << markdownText(rootCause(g)) << ".\n\n";
+  md << "| check | grade | what it found |\n|---|---|---|\n";
   for (const auto& r : g.results)
     md << "| " << r.check << " | " << gradeName(r.grade) << " | " << markdownText(r.diagnosis)
        << " |\n";
@@ -129,13 +181,23 @@ std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t see
   return md.str() + "\n";
 }
 
+// summary.csv: a row a submission, its overall verdict and score first (columns an instructor
+// can sort), then a column a check: its grade, and for speed the microseconds a step (a number,
+// or empty when not measured).
 std::string summaryCsv(const std::vector<Graded>& graded) {
   std::ostringstream csv;
-  csv << "submission";
-  for (const auto& c : graded.front().results) csv << "," << c.check;
+  csv << "submission,verdict,score";
+  for (const auto& c : graded.front().results)
+    csv << "," << c.check << (c.check == "speed" ? "_us" : "");
   for (const auto& g : graded) {
-    csv << "\n" << csvField(g.submission.name);
-    for (const auto& r : g.results) csv << "," << gradeCell(r, "");
+    csv << "\n" << csvField(g.submission.name) << "," << gradeName(overallGrade(g)) << ","
+        << textf("%d/%d", passedChecks(g), gradedChecks(g));
+    for (const auto& r : g.results) {
+      if (r.check == "speed")
+        csv << "," << (r.figure >= 0 ? textf("%.0f", r.figure) : std::string());
+      else
+        csv << "," << gradeName(r.grade);
+    }
   }
   return csv.str() + "\n";
 }
@@ -193,9 +255,6 @@ bool isGradingReport(const std::string& dir) {
   return lstat((dir + "/" + kMark).c_str(), &info) == 0 && S_ISREG(info.st_mode);
 }
 
-namespace {
-
-// The submissions an earlier grade of `dir` wrote, from its mark.
 std::vector<std::string> earlierSubmissions(const std::string& dir) {
   std::vector<std::string> names;
   if (!isGradingReport(dir)) return names;
@@ -208,17 +267,48 @@ std::vector<std::string> earlierSubmissions(const std::string& dir) {
   return names;
 }
 
+std::optional<std::uint64_t> earlierSeed(const std::string& dir) {
+  if (!isGradingReport(dir)) return std::nullopt;
+  std::ifstream mark(dir + "/" + kMark);
+  for (std::string line; std::getline(mark, line);) {
+    if (line.rfind("# seed ", 0) == 0) {
+      try {
+        return std::stoull(line.substr(7));
+      } catch (const std::exception&) {
+        return std::nullopt;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// Removes the report files of submission `name` in `dir`, never through a link: the folder is
+// opened without following one (a link planted in its place, or a name in a planted mark,
+// reaches nothing outside), and only the grader's two files are removed from it.
+void removeEarlierReport(const std::string& dir, const std::string& name) {
+  int top = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (top < 0) return;
+  int folder = openat(top, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (folder >= 0) {
+    for (const char* file : {"report.md", "build.log"}) unlinkat(folder, file, 0);
+    close(folder);
+    unlinkat(top, name.c_str(), AT_REMOVEDIR);  // only when empty
+  }
+  close(top);
+}
+
 }  // namespace
 
 void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
-                 bool overwrite) {
+                 bool strict, bool overwrite) {
   Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
-  std::string mark = "# made by ./grade: the submissions graded here, a name a line\n";
+  std::string mark = "# made by ./grade: the submissions graded here, a name a line\n# seed " +
+                     std::to_string(seed) + "\n";
   for (const auto& g : graded) mark += g.submission.name + "\n";
   for (const auto& name : earlierSubmissions(dir)) {
-    if (mark.find("\n" + name + "\n") != std::string::npos) continue;
-    for (const char* file : {"/report.md", "/build.log"}) unlink((dir + "/" + name + file).c_str());
-    rmdir((dir + "/" + name).c_str());
+    if (mark.find("\n" + name + "\n") == std::string::npos) removeEarlierReport(dir, name);
   }
   for (const auto& g : graded) {
     makeFolder(dir + "/" + g.submission.name);
@@ -228,6 +318,7 @@ void writeReport(const std::string& dir, const std::vector<Graded>& graded, std:
   writeFileWhole(dir + "/summary.md", summaryMarkdown(graded, seed), existing);
   writeFileWhole(dir + "/summary.csv", summaryCsv(graded), existing);
   writeFileWhole(dir + "/junit.xml", junit(graded), existing);
+  writeFileWhole(dir + "/" + kRecordName, gradedRecord(graded, seed, strict), existing);
   writeFileWhole(dir + "/" + kMark, mark, Existing::Replace);
 }
 
@@ -243,17 +334,44 @@ std::string summaryLine(const Graded& g) {
                g.seconds);
 }
 
+// A path as one line of grading.txt: every byte but letters, digits and "/._-" as %XX, so that
+// a name holding a line break (or anything else) reads back as itself, bound to its submission.
+std::string escapedPath(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || c == '/' || c == '.' || c == '_' || c == '-')
+      out += static_cast<char>(c);
+    else
+      out += textf("%%%02X", c);
+  }
+  return out;
+}
+
+std::string unescapedPath(const std::string& line) {
+  std::string out;
+  for (std::size_t n = 0; n < line.size(); ++n) {
+    if (line[n] == '%' && n + 2 < line.size()) {
+      out += static_cast<char>(std::stoi(line.substr(n + 1, 2), nullptr, 16));
+      n += 2;
+    } else {
+      out += line[n];
+    }
+  }
+  return out;
+}
+
 void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
                      const std::vector<Submission>& submissions,
-                     const std::vector<std::string>& checks, std::uint64_t seed, bool overwrite) {
+                     const std::vector<std::string>& checks, std::uint64_t seed, bool strict,
+                     bool overwrite) {
   Existing existing = overwrite ? Existing::Replace : Existing::Refuse;
   std::ostringstream list, tests;
-  list << "seed " << seed << "\n";
+  list << "seed " << seed << " strict " << (strict ? 1 : 0) << "\n";
   tests
       << "# Made by grade --ctest: a test SUBMISSION/CHECK for every check of every submission.\n";
   for (std::size_t n = 0; n < submissions.size(); ++n) {
     const Submission& s = submissions[n];
-    list << s.path << "\n";
+    list << escapedPath(s.path) << "\n";  // one line a path, whatever bytes it holds
     for (const auto& check : checks) {
       std::string name = s.name + "/" + check;
       tests << "add_test(" << cmakeQuote(name) << " " << cmakeQuote(gradeProgram) << " --one "
@@ -267,15 +385,20 @@ void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
   writeFileWhole(dir + "/CTestTestfile.cmake", tests.str(), existing);
 }
 
-std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed) {
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed,
+                                       bool* strict) {
   std::ifstream in(dir + "/grading.txt");
   std::string line;
   if (!std::getline(in, line) || line.rfind("seed ", 0) != 0) {
     throw std::runtime_error(dir + "/grading.txt: not made by grade --ctest");
   }
-  *seed = std::stoull(line.substr(5));
+  std::istringstream header(line.substr(5));
+  std::string word;
+  int strictFlag = 0;
+  header >> *seed >> word >> strictFlag;
+  *strict = word == "strict" && strictFlag == 1;
   std::vector<std::string> paths;
-  while (std::getline(in, line)) paths.push_back(line);
+  while (std::getline(in, line)) paths.push_back(unescapedPath(line));
   return paths;
 }
 

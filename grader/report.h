@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,19 @@ std::vector<std::string> reportFiles(const std::vector<Submission>& submissions)
 // Writes them all under `dir` (made), replacing earlier ones only with `overwrite`, and the mark
 // .jello-grade (the submissions' names); the report files of an earlier grade's submissions
 // that this one does not grade are removed. Throws std::runtime_error with a one-line message.
+// The submissions an earlier grade wrote into `dir`, and its seed, from the folder's mark (none
+// when `dir` is no report of the grader's).
+std::vector<std::string> earlierSubmissions(const std::string& dir);
+std::optional<std::uint64_t> earlierSeed(const std::string& dir);
+
+// One mistake that explains several FAILs, named once ("the forces are not divided by the mass
+// (it explains structural, dampers, walls)"), or "".
+std::string rootCause(const Graded& g);
+
+// The report folder's files: summary.md, summary.csv, junit.xml, grading.json (the record a
+// merge reads, shards.h), a report.md and build.log per submission, and the mark.
 void writeReport(const std::string& dir, const std::vector<Graded>& graded, std::uint64_t seed,
-                 bool overwrite);
+                 bool strict, bool overwrite);
 // One line a submission for the terminal: "alice: 12 pass, 1 near, 1 FAIL (rk4) in 9.8 s".
 std::string summaryLine(const Graded& graded);
 
@@ -37,8 +49,11 @@ std::string summaryLine(const Graded& graded);
 // running `grade --one CHECK --item N dir`; "builds" is the fixture the others need.
 void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
                      const std::vector<Submission>& submissions,
-                     const std::vector<std::string>& checks, std::uint64_t seed, bool overwrite);
-// Reads dir/grading.txt back: the seed and the submissions' paths.
-std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed);
+                     const std::vector<std::string>& checks, std::uint64_t seed, bool strict,
+                     bool overwrite);
+// Reads dir/grading.txt back: the seed, --strict, and the submissions' paths (each written with
+// its bytes escaped, so that a name holding a line break stays one path).
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed,
+                                       bool* strict);
 
 }  // namespace jello::grader

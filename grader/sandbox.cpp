@@ -171,8 +171,9 @@ std::size_t countEnds(const std::string& text, std::size_t from, bool& atLineSta
 // Feeds the input and the requests (one at a time: the next once the last reply has ended) and
 // collects the output, the errors and the replies until they all close, or a limit is hit.
 // Reads what the program wrote on stdout (which 0), stderr (1) or the replies' pipe (2) into
-// `result`, up to each one's cap: a descriptor at its end is closed, and output beyond its cap
-// closes all three (result.outputCut).
+// `result`, up to each one's cap: a descriptor at its end is closed; standard output and error
+// beyond their caps are read and counted (result.outputDiscarded); replies beyond theirs close
+// all three (result.outputCut).
 void readOutput(int which, const SandboxJob& job, int& out, int& err, int& replies,
                 bool& atLineStart, SandboxResult& result) {
   int& fd = which == 0 ? out : which == 1 ? err : replies;
@@ -186,9 +187,13 @@ void readOutput(int which, const SandboxJob& job, int& out, int& err, int& repli
   std::string& kept = which == 0 ? result.output : which == 1 ? result.errors : result.replies;
   std::size_t cap = which == 1 ? kErrorsKept : static_cast<std::size_t>(job.limits.outputBytes);
   std::size_t before = kept.size();
-  kept.append(buffer, std::min(static_cast<std::size_t>(n), cap - std::min(cap, kept.size())));
+  std::size_t taken = std::min(static_cast<std::size_t>(n), cap - std::min(cap, kept.size()));
+  kept.append(buffer, taken);
+  // What the program prints beyond the cap is read on and counted, never kept: a right program
+  // that prints a line a point for 2000 steps is not killed for it. The answers are capped.
+  if (which != 2) result.outputDiscarded += static_cast<std::size_t>(n) - taken;
   if (which == 2) result.repliesEnded += countEnds(kept, before, atLineStart);
-  if (which != 1 && kept.size() >= cap) {
+  if (which == 2 && kept.size() >= cap) {
     result.outputCut = true;
     closeFd(out);
     closeFd(err);
@@ -375,7 +380,7 @@ SandboxResult runSandboxed(const SandboxJob& job) {
 std::string SandboxResult::describe() const {
   if (!started) return "could not start: " + error;
   if (timedOut) return "did not finish in time";
-  if (outputCut) return "wrote too much output";
+  if (outputCut) return "answered more than the grader reads";
   if (signal == SIGXCPU) return "ran out of CPU time";
   if (signal == SIGXFSZ) return "wrote a file larger than allowed";
   if (signal != 0)

@@ -12,8 +12,8 @@
 // Limits, each enforced by the kernel: CPU seconds and address space per process, processes
 // (RLIMIT_NPROC, counted per user: when the grader runs as root each sandbox gets a user id of its
 // own, so one submission's fork bomb cannot starve another's), size of any file it writes, and
-// the wall clock (the whole sandbox is killed). Standard output and error are read up to a cap;
-// a program that writes more is killed.
+// the wall clock (the whole sandbox is killed). Standard output and error are kept up to a cap;
+// what is written beyond it is read, counted and discarded (never a reason to kill a program).
 //
 // A conversation (SandboxJob::requests): the grader's requests go in on descriptor 3 and the
 // replies come out on descriptor 4, one request at a time. The program speaks first (a greeting,
@@ -35,7 +35,7 @@ struct SandboxLimits {
   long long memoryBytes = 2LL << 30;   // address space of each process
   int processes = 16;                  // at once, in the sandbox
   long long fileBytes = 64LL << 20;    // the largest file it may write
-  long long outputBytes = 64LL << 20;  // standard output kept; more and it is killed
+  long long outputBytes = 64LL << 20;  // standard output kept (more is discarded) and answers
 };
 
 struct SandboxJob {
@@ -54,7 +54,8 @@ struct SandboxResult {
   int exitCode = -1;             // when it exited
   int signal = 0;                // when a signal ended it (SIGKILL also for limits below)
   bool timedOut = false;         // killed at the wall-clock limit
-  bool outputCut = false;        // killed for writing more than outputBytes
+  bool outputCut = false;        // killed for answering more than outputBytes
+  std::size_t outputDiscarded = 0;  // bytes of standard output and error beyond their caps
   std::string output;            // standard output
   std::string replies;           // a conversation's replies, each ending in a line "."
   std::size_t repliesEnded = 0;  // how many replies ended

@@ -25,10 +25,16 @@ namespace fs = std::filesystem;
 namespace jello::grader {
 namespace {
 
-// What is copied out of a submission: source files only, within these bounds.
-constexpr int kMostEntries = 5000;
-constexpr int kMostFiles = 300;
-constexpr std::uintmax_t kMostBytes = 16u << 20;
+// What is copied out of a submission: its source files and, beside them, the files its program
+// reads (pictures, worlds: any other regular file, each of at most kMostDataFileBytes), within
+// these bounds. The folder that holds physics.cpp is copied first, then the rest: a copy of a
+// library beside the program (hundreds of headers) never crowds out the course's files.
+constexpr int kMostEntries = 20000;
+constexpr int kMostFiles = 2000;
+constexpr std::uintmax_t kMostBytes = 32u << 20;
+constexpr int kMostDataFiles = 500;
+constexpr std::uintmax_t kMostDataFileBytes = 8u << 20;
+constexpr std::uintmax_t kMostDataBytes = 32u << 20;
 constexpr int kDeepest = 8;  // folders below the submission's own
 const std::set<std::string> kSourceExtensions = {".cpp", ".cc", ".cxx", ".c",  ".h",
                                                  ".hpp", ".hh", ".hxx", ".inl"};
@@ -77,9 +83,9 @@ class StudentRights {
 };
 
 struct CopyBudget {
-  int entries = 0, files = 0;
-  std::uintmax_t bytes = 0;
-  bool full = false;
+  int entries = 0, files = 0, dataFiles = 0;
+  std::uintmax_t bytes = 0, dataBytes = 0;
+  bool full = false, dataFull = false;
 };
 
 // The whole of a regular file open at `fd`, up to `most` bytes; false when larger or unreadable.
@@ -92,26 +98,75 @@ bool readAll(int fd, std::uintmax_t most, std::string& text) {
   return true;
 }
 
-// Copies the source files of the folder open at `dir` into `to` / `relative`, keeping the
-// layout. Every step is an openat without following a link, and what is read is what was
-// opened (fstat of the descriptor): no name is looked up twice.
-void copyFolder(int dir, const fs::path& to, const fs::path& relative, int depth,
-                const StudentRights& rights, CopyBudget& budget, std::vector<std::string>& notes) {
-  DIR* listing = fdopendir(dup(dir));
-  if (!listing) return;
+// The names in the folder open at `dir`, sorted.
+std::vector<std::string> namesIn(int dir) {
   std::vector<std::string> names;
+  DIR* listing = fdopendir(dup(dir));
+  if (!listing) return names;
+  rewinddir(listing);  // a duplicate shares the position of an earlier listing of `dir`
   while (dirent* entry = readdir(listing)) {
     std::string name = entry->d_name;
     if (name != "." && name != "..") names.push_back(name);
   }
   closedir(listing);
   std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The relative folder of the shallowest physics.cpp under the folder open at `dir` (searched
+// level by level, links not followed), or "" when there is none.
+fs::path physicsFolder(int top, const StudentRights& rights) {
+  std::vector<std::pair<int, fs::path>> level = {{dup(top), ""}};
+  int entries = 0;
+  fs::path found;
+  bool done = false;
+  for (int depth = 0; depth <= kDeepest && !level.empty() && !done; ++depth) {
+    std::vector<std::pair<int, fs::path>> next;
+    for (auto& [dir, relative] : level) {
+      for (const std::string& name : namesIn(dir)) {
+        if (done || ++entries > kMostEntries) break;
+        int fd = rights.openat(dir, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) continue;
+        struct stat info;
+        bool known = fstat(fd, &info) == 0;
+        if (known && S_ISREG(info.st_mode) && name == "physics.cpp") {
+          found = relative;
+          done = true;
+        }
+        if (known && S_ISDIR(info.st_mode) && depth < kDeepest && next.size() < 256)
+          next.emplace_back(fd, relative / name);
+        else
+          close(fd);
+      }
+      close(dir);
+    }
+    level.swap(next);
+  }
+  for (auto& [dir, relative] : level) close(dir);
+  return found;
+}
+
+// Copies the source and data files of the folder open at `dir` into `to` / `relative`, keeping
+// the layout: its files first, then its folders, the one on the way to `first` (physics.cpp's
+// folder) before the others. Every step is an openat without following a link, and what is read
+// is what was opened (fstat of the descriptor): no name is looked up twice.
+void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs::path& first,
+                int depth, const StudentRights& rights, CopyBudget& budget,
+                std::vector<std::string>& notes) {
+  std::vector<std::string> names = namesIn(dir);
+  // The folder on the way to physics.cpp's comes first among the folders.
+  std::string towards;
+  fs::path rest = first.lexically_relative(relative);
+  if (!rest.empty() && *rest.begin() != "..") towards = rest.begin()->string();
+  std::stable_partition(names.begin(), names.end(),
+                        [&](const std::string& name) { return name == towards; });
+  std::vector<std::string> folders;  // opened again after the files, without following a link
   for (const std::string& name : names) {
-    if (budget.full) return;
+    if (budget.full) break;
     if (++budget.entries > kMostEntries) {
       notes.push_back("more than " + std::to_string(kMostEntries) + " entries: the rest ignored");
       budget.full = true;
-      return;
+      break;
     }
     fs::path path = relative / name;
     int fd = rights.openat(dir, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
@@ -123,20 +178,45 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, int depth
     struct stat info;
     bool known = fstat(fd, &info) == 0;
     if (known && S_ISDIR(info.st_mode) && depth < kDeepest) {
-      copyFolder(fd, to, path, depth + 1, rights, budget, notes);
-    } else if (known && S_ISREG(info.st_mode) &&
-               kSourceExtensions.count(fs::path(name).extension().string())) {
+      folders.push_back(name);
+      close(fd);
+      continue;
+    }
+    bool source = kSourceExtensions.count(fs::path(name).extension().string()) > 0;
+    std::uintmax_t size = known ? static_cast<std::uintmax_t>(info.st_size) : 0;
+    if (known && S_ISREG(info.st_mode) && source) {
       std::string text;
-      budget.bytes += static_cast<std::uintmax_t>(info.st_size);
+      budget.bytes += size;
       if (++budget.files > kMostFiles || budget.bytes > kMostBytes ||
           !readAll(fd, kMostBytes, text)) {
-        notes.push_back("more source than the grader takes (300 files, 16 MB): the rest ignored");
+        notes.push_back("more source than the grader takes (" + std::to_string(kMostFiles) +
+                        " files, " + std::to_string(kMostBytes >> 20) + " MB): the rest ignored");
         budget.full = true;
       } else {
-        fs::create_directories(to / relative);
         writeText(to / path, text);
       }
+    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull &&
+               size <= kMostDataFileBytes) {
+      // A file the program may read (a texture, a world), for its run.
+      std::string bytes;
+      budget.dataBytes += size;
+      if (++budget.dataFiles > kMostDataFiles || budget.dataBytes > kMostDataBytes ||
+          !readAll(fd, kMostDataFileBytes, bytes)) {
+        notes.push_back("more files beside the source than the grader takes (" +
+                        std::to_string(kMostDataFiles) + " files, " +
+                        std::to_string(kMostDataBytes >> 20) + " MB): the rest left out");
+        budget.dataFull = true;
+      } else {
+        writeText(to / path, bytes);
+      }
     }
+    close(fd);
+  }
+  for (const std::string& name : folders) {
+    if (budget.full) break;
+    int fd = rights.openat(dir, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) continue;
+    copyFolder(fd, to, relative / name, first, depth + 1, rights, budget, notes);
     close(fd);
   }
 }
@@ -154,7 +234,7 @@ std::string copyTree(const std::string& from, const fs::path& to, bool asOwner,
   StudentRights rights(info);
   CopyBudget budget;
   fs::create_directories(to);
-  copyFolder(top, to, "", 0, rights, budget, notes);
+  copyFolder(top, to, "", physicsFolder(top, rights), 0, rights, budget, notes);
   close(top);
   return "";
 }

@@ -41,7 +41,11 @@ inline std::map<std::string, std::map<std::string, std::string>> readSummary(
     std::string name;
     std::getline(row, name, ',');
     name = name.substr(1, name.size() - 2);
-    for (std::size_t n = 1; std::getline(row, field, ','); ++n) grades[name][checks[n]] = field;
+    for (std::size_t n = 1; std::getline(row, field, ','); ++n) {
+      std::string check = checks[n];
+      if (check == "speed_us") check = "speed", field = field.empty() ? "info" : field;
+      if (check != "verdict" && check != "score") grades[name][check] = field;
+    }
   }
   return grades;
 }

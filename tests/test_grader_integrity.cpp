@@ -278,3 +278,65 @@ TEST(GraderIntegrity, AnInterruptedGradeLeavesNoScratchFolderAndOthersCannotEnte
   EXPECT_FALSE(fs::exists(report));
   removeTree(root);
 }
+
+// A program that prints more than the sandbox keeps is read to its end and not killed: what is
+// beyond the cap is counted and dropped (a right program that prints a line a point for 2000
+// steps passes); only answers beyond their cap end a run.
+TEST(GraderIntegrity, OutputBeyondTheCapIsDiscardedNotAKill) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  jello::grader::Scratch scratch;
+  jello::grader::SandboxJob job;
+  job.argv = {"/bin/sh", "-c", "head -c 3000000 /dev/zero; head -c 500000 /dev/zero >&2; exit 7"};
+  job.hostDir = scratch.path();
+  job.limits.outputBytes = 1 << 20;
+  jello::grader::SandboxResult result = jello::grader::runSandboxed(job);
+  EXPECT_TRUE(result.exitedWith(7)) << result.describe();
+  EXPECT_FALSE(result.outputCut);
+  EXPECT_EQ(result.output.size(), 1u << 20);
+  EXPECT_EQ(result.outputDiscarded, 3000000u - (1u << 20) + 500000u - (64u << 10));
+}
+
+// In --ctest mode each test reads its submission back from grading.txt by number: a class
+// entry whose name holds a line break is still one submission, graded with its own code (a
+// wrong one fails, the right one beside it passes).
+TEST(GraderIntegrity, ACTestListBindsANameWithALineBreakToItsOwnSubmission) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), cls = root + "/class", ctest = root + "/ctest";
+  fs::create_directories(cls);
+  fs::copy(kSubmissions + "/bend-rest", cls + "/a\nb");
+  fs::copy(kSubmissions + "/correct", cls + "/c");
+  ASSERT_EQ(grade({"--ctest", "-o", ctest, "--checks", "bend", cls}).status, 0);
+  EXPECT_EQ(grade({"--one", "builds", "--item", "0", ctest}).status, 0);
+  CommandResult wrong = grade({"--one", "bend", "--item", "0", ctest});
+  EXPECT_EQ(wrong.status, 1) << wrong.out;
+  EXPECT_NE(wrong.out.find("rest length"), std::string::npos) << wrong.out;
+  EXPECT_EQ(grade({"--one", "builds", "--item", "1", ctest}).status, 0);
+  CommandResult right = grade({"--one", "bend", "--item", "1", ctest});
+  EXPECT_EQ(right.status, 0) << right.out;
+  removeTree(root);
+}
+
+// A regrade removes the reports of the submissions graded before and not now, and nothing else:
+// not through a link planted where a submission's report folder was, nor for a name a planted
+// mark lists.
+TEST(GraderIntegrity, ARegradeRemovesNothingThroughALinkOrAPlantedMark) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), report = root + "/report", outside = root + "/outside";
+  ASSERT_EQ(grade({"-o", report, "--seed", "5", "--checks", "rest", kSubmissions + "/correct",
+                   kSubmissions + "/bend-rest"})
+                .status,
+            0);
+  fs::create_directories(outside);
+  writeText(outside + "/report.md", "someone else's\n");
+  writeText(outside + "/build.log", "someone else's\n");
+  fs::remove_all(report + "/bend-rest");
+  fs::create_directory_symlink(outside, report + "/bend-rest");
+  writeText(report + "/.jello-grade", readText(report + "/.jello-grade") + "../outside\n");
+  CommandResult r = grade({"-o", report, "--overwrite", "--seed", "5", "--checks", "rest",
+                           kSubmissions + "/correct"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(outside + "/report.md"));
+  EXPECT_TRUE(fs::exists(outside + "/build.log"));
+  EXPECT_TRUE(fs::exists(report + "/correct/report.md"));
+  removeTree(root);
+}

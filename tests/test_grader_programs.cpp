@@ -124,3 +124,46 @@ TEST(GraderPrograms, BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSay
       << r.err;
   removeTree(root);
 }
+
+// What the course's worlds never ask (a field of resolution 1, a collapsed cube) is a note by
+// default and a FAIL with --strict: the course-domain shape, right on every course world.
+TEST(GraderPrograms, StrictGradesWhatTheCoursesWorldsNeverAsk) {
+  if (!jello::grader::sandboxProblem().empty()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), cls = root + "/class";
+  ASSERT_EQ(runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls,
+                        "course-domain"})
+                .status,
+            0);
+  CommandResult r = grade({"-o", root + "/strict", "--strict", "--seed", "5", "--checks",
+                           "field,robust", cls + "/course-domain"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  Report strict = readReport(root + "/strict/course-domain/report.md");
+  EXPECT_EQ(strict.rows["field"].first, "FAIL") << strict.rows["field"].second;
+  EXPECT_NE(strict.rows["field"].second.find("with R = 1"), std::string::npos);
+  EXPECT_NE(strict.rows["field"].second.find("(graded: --strict)"), std::string::npos);
+  EXPECT_EQ(strict.rows["robust"].first, "FAIL") << strict.rows["robust"].second;
+  EXPECT_NE(strict.rows["robust"].second.find("a cube collapsed to one point"), std::string::npos);
+  removeTree(root);
+}
+
+// A copy of a library beside the program, its headers more than the grader copies and named
+// before physics.cpp, crowds out none of the course's files: the folder holding physics.cpp is
+// copied first.
+TEST(GraderPrograms, ALibraryCopyOfAnySizeCrowdsOutNoneOfTheCoursesFiles) {
+  if (!jello::grader::sandboxProblem().empty()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), cls = root + "/class";
+  ASSERT_EQ(runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls}).status,
+            0);
+  std::string hand = cls + "/course";
+  fs::create_directories(hand + "/aaa-library/include");
+  for (int n = 0; n < 2100; ++n)
+    writeText(hand + "/aaa-library/include/h" + std::to_string(n) + ".h", "/* a header */\n");
+  CommandResult r = grade({"-o", root + "/report", "--seed", "5", "--checks", "rest", hand});
+  ASSERT_EQ(r.status, 0) << r.err;
+  Report report = readReport(root + "/report/course/report.md");
+  EXPECT_EQ(report.rows["builds"].first, "pass") << report.rows["builds"].second;
+  EXPECT_EQ(report.rows["rest"].first, "pass") << report.rows["rest"].second;
+  EXPECT_NE(report.notes.find("more source than the grader takes"), std::string::npos)
+      << report.notes;
+  removeTree(root);
+}
