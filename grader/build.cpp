@@ -31,7 +31,10 @@ constexpr int kMostCompiled = 100;  // source files compiled in one attempt
 constexpr int kRewriteRounds = 3;
 constexpr std::size_t kPrintedKept = 4000;
 // What a program that looks for a grader may test (docs/grading.md, "What no grader can prevent").
-const char* const kTells[] = {"F_GETFD", "/proc/self/fd", "isatty", "getenv(\"DISPLAY\")"};  // of what a program that stops early printed   // compilations again after Visual C++'s rewrites
+const char* const kTells[] = {
+    "F_GETFD", "/proc/self/fd", "isatty",
+    "getenv(\"DISPLAY\")"};  // of what a program that stops early printed   // compilations again
+                             // after Visual C++'s rewrites
 // GCC's warnings, all off (-w would hide the one rewriteMissingReturns reads) but -Wreturn-type;
 // then those of C++ and of C alone.
 const char* const kQuietWarnings =
@@ -240,7 +243,8 @@ Tree readTree(const fs::path& physics) {
   tree.headerDirs.assign(headerDirs.begin(), headerDirs.end());
   tree.cxxStandard = makefileStandard(tree.root);
   if (tree.cxxStandard != "gnu++17")
-    tree.notes.push_back("compiled as " + tree.cxxStandard + ", the standard its Makefile asks for");
+    tree.notes.push_back("compiled as " + tree.cxxStandard +
+                         ", the standard its Makefile asks for");
   return tree;
 }
 
@@ -311,8 +315,9 @@ struct SystemLibrary {
   const char* top;     // the library's own top folder, as its headers include each other
   const char* folder;  // the system's folder holding `top`
 };
-const SystemLibrary kSystemLibraries[] = {
-    {"Eigen", "/usr/include/eigen3"}, {"unsupported", "/usr/include/eigen3"}, {"glm", "/usr/include"}};
+const SystemLibrary kSystemLibraries[] = {{"Eigen", "/usr/include/eigen3"},
+                                          {"unsupported", "/usr/include/eigen3"},
+                                          {"glm", "/usr/include"}};
 
 // A link in `caseDir` that serves `wanted` from the system's copy of its library; the note, or ""
 // when `wanted` names no such library or the system has no copy.
@@ -524,8 +529,8 @@ bool rewritePointerComparison(std::string& l, std::size_t column, std::string& h
   auto isZero = [&](std::size_t from, std::size_t to) {
     std::size_t b = l.find_first_not_of(" \t", from);
     return b != std::string::npos && b < to && l[b] == '0' &&
-           (b + 1 >= l.size() || !(std::isalnum(static_cast<unsigned char>(l[b + 1])) ||
-                                   l[b + 1] == '.' || l[b + 1] == '_'))
+                   (b + 1 >= l.size() || !(std::isalnum(static_cast<unsigned char>(l[b + 1])) ||
+                                           l[b + 1] == '.' || l[b + 1] == '_'))
                ? b
                : std::string::npos;
   };
@@ -541,7 +546,8 @@ bool rewritePointerComparison(std::string& l, std::size_t column, std::string& h
     zero = b - 1;
   }
   l.replace(zero, 1, "(const volatile void*)0");
-  how = "a pointer compared with " + op + " 0 kept as Visual C++ compares it (the address as a "
+  how = "a pointer compared with " + op +
+        " 0 kept as Visual C++ compares it (the address as a "
         "number: p > 0 is p != 0, p < 0 is never true)";
   return true;
 }
@@ -791,8 +797,8 @@ bool tryAttempt(const Tree& tree, Attempt attempt, const Scratch& scratch,
         std::string said = printed.substr(0, printed.find('\n'));
         programError = "its whole program built, but " + notReaching +
                        (said.empty() ? "" : " (it printed \"" + said.substr(0, 120) + "\")");
-        result.log += "--- its whole program, run: " + notReaching + "; it printed:\n" + printed +
-                      "\n";
+        result.log +=
+            "--- its whole program, run: " + notReaching + "; it printed:\n" + printed + "\n";
         return false;
       }
     }

@@ -142,10 +142,10 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   // sandbox's user can reach), else a copy.
   if (std::filesystem::is_directory(programFilesOf(probePath))) {
     std::error_code linked;
-    std::filesystem::copy(programFilesOf(probePath), scratch.path() + "/files",
-                          std::filesystem::copy_options::recursive |
-                              std::filesystem::copy_options::create_hard_links,
-                          linked);
+    std::filesystem::copy(
+        programFilesOf(probePath), scratch.path() + "/files",
+        std::filesystem::copy_options::recursive | std::filesystem::copy_options::create_hard_links,
+        linked);
     if (linked) {
       std::filesystem::remove_all(scratch.path() + "/files");
       std::filesystem::copy(programFilesOf(probePath), scratch.path() + "/files",
@@ -170,9 +170,10 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
   std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
   if (run.sandbox.signal == SIGXCPU || run.sandbox.timedOut)
     how = run.sandbox.timedOut
-              ? textf("did not return within %g s, waiting without computing: a read of the "
-                      "keyboard or a sleep?",
-                      job.limits.wallSeconds)
+              ? textf(
+                    "did not return within %g s, waiting without computing: a read of the "
+                    "keyboard or a sleep?",
+                    job.limits.wallSeconds)
               : textf("did not return within %g s: an endless loop?", job.limits.cpuSeconds);
   else if (run.sandbox.signal == SIGKILL && !run.sandbox.outputCut)
     how = "was killed (out of memory?)";

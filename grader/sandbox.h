@@ -50,18 +50,18 @@ struct SandboxJob {
 };
 
 struct SandboxResult {
-  bool started = false;          // false: bubblewrap itself could not run (see `error`)
-  int exitCode = -1;             // when it exited
-  int signal = 0;                // when a signal ended it (SIGKILL also for limits below)
-  bool timedOut = false;         // killed at the wall-clock limit
-  bool outputCut = false;        // killed for answering more than outputBytes
+  bool started = false;             // false: bubblewrap itself could not run (see `error`)
+  int exitCode = -1;                // when it exited
+  int signal = 0;                   // when a signal ended it (SIGKILL also for limits below)
+  bool timedOut = false;            // killed at the wall-clock limit
+  bool outputCut = false;           // killed for answering more than outputBytes
   std::size_t outputDiscarded = 0;  // bytes of standard output and error beyond their caps
-  std::string output;            // standard output
-  std::string replies;           // a conversation's replies, each ending in a line "."
-  std::size_t repliesEnded = 0;  // how many replies ended
-  std::string errors;            // standard error, at most 64 KB
-  std::string error;             // why it did not start
-  double seconds = 0;            // wall clock
+  std::string output;               // standard output
+  std::string replies;              // a conversation's replies, each ending in a line "."
+  std::size_t repliesEnded = 0;     // how many replies ended
+  std::string errors;               // standard error, at most 64 KB
+  std::string error;                // why it did not start
+  double seconds = 0;               // wall clock
   bool exitedWith(int code) const { return signal == 0 && !timedOut && exitCode == code; }
   // "killed by SIGSEGV (segmentation fault)", "did not finish within 15 s", "exited with 3".
   std::string describe() const;

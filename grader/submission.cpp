@@ -195,8 +195,7 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs:
       } else {
         writeText(to / path, text);
       }
-    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull &&
-               size <= kMostDataFileBytes) {
+    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull && size <= kMostDataFileBytes) {
       // A file the program may read (a texture, a world), for its run.
       std::string bytes;
       budget.dataBytes += size;

@@ -23,10 +23,10 @@
    it was, so that a program that builds its lists on the first step has them. Exit status 3: a
    request it could not read. It includes no <unistd.h>: the course's jello.h declares a global
    `int pause`, which would clash with pause(2). */
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <dirent.h>
 #include <sys/stat.h>
 #include <time.h>
 
@@ -66,7 +66,8 @@ static void copyFiles(const char* from, const char* to) {
       FILE* in = fopen(source, "rb");
       FILE* out = in ? fopen(target, "wb") : NULL;
       char buffer[1 << 15];
-      for (size_t n; out && (n = fread(buffer, 1, sizeof buffer, in)) > 0;) fwrite(buffer, 1, n, out);
+      for (size_t n; out && (n = fread(buffer, 1, sizeof buffer, in)) > 0;)
+        fwrite(buffer, 1, n, out);
       if (in) fclose(in);
       if (out) fclose(out);
     }
