@@ -128,16 +128,17 @@ std::string judgeEdges(const std::string& probe, const World& world) {
     std::string failure;
     auto answers = accelerationsAt(probe, world, {inside, across}, &failure);
     if (!failure.empty()) return failure + " at " + edge.name;
-    std::vector<double> expected = projectForces(world, across), before = projectForces(world, inside);
+    std::vector<double> expected = projectForces(world, across),
+                        before = projectForces(world, inside);
     for (int q = 0; q < kNumPoints; ++q) {
       Vec3 want = load(expected.data(), q) - load(before.data(), q);
       Vec3 got = forceChange(answers[1], answers[0], q);
       if (!(length(got - want) <= kExact * std::max(1.0, length(want)))) {
-        return textf("at %s (points across both or all three): the force on %s is (%.6g, %.6g, "
-                     "%.6g) N, (%.6g, %.6g, %.6g) N expected: each wall pushes and damps on its "
-                     "own, along its own normal",
-                     edge.name, pointName(q).c_str(), got.x, got.y, got.z, want.x, want.y,
-                     want.z);
+        return textf(
+            "at %s (points across both or all three): the force on %s is (%.6g, %.6g, "
+            "%.6g) N, (%.6g, %.6g, %.6g) N expected: each wall pushes and damps on its "
+            "own, along its own normal",
+            edge.name, pointName(q).c_str(), got.x, got.y, got.z, want.x, want.y, want.z);
       }
     }
   }

@@ -125,8 +125,9 @@ CheckResult checkField(const std::string& probe, const GradingSetup& setup) {
   if (why.empty())
     why = probeField(probe, field, scattered(Spread::NearWalls),
                      "near the walls (in the last cells, within 2 cm of a wall)", false);
-  CheckResult result = why.empty() ? passed("field", "trilinear, node order, the cells at the walls")
-                                   : failed("field", why);
+  CheckResult result = why.empty()
+                           ? passed("field", "trilinear, node order, the cells at the walls")
+                           : failed("field", why);
   // Beyond the course's worlds (R = 30, points never exactly on a wall): notes, or --strict.
   std::string onWalls =
       probeField(probe, field, scattered(Spread::OnWalls), "exactly on the walls", false);
@@ -138,8 +139,9 @@ CheckResult checkField(const std::string& probe, const GradingSetup& setup) {
                                "with R = 1 (one uniform force)", false);
   if (!one.empty())
     addOutsideDomain(result,
-                     one + " (the course's spacing 4/(R-1) divides by zero there; physics.md: "
-                           "the single node's force everywhere in the box)",
+                     one +
+                         " (the course's spacing 4/(R-1) divides by zero there; physics.md: "
+                         "the single node's force everywhere in the box)",
                      setup);
   // R = 0, a world without a field (createWorld's default): not a course world either.
   ForceField none;

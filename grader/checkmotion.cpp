@@ -248,11 +248,11 @@ CheckResult checkRobust(const std::string& probe, const GradingSetup& setup) {
   std::string failure;
   auto answers = accelerationsAt(probe, world, throw_, &failure);
   if (!failure.empty()) return outsideDomain("robust", failure + " on " + throwWords, setup);
-  for (const auto& [what, state] : {std::pair<const char*, const State&>{
-                                        "a cube collapsed to one point (all 512 points at one "
-                                        "place)",
-                                        point},
-                                    {"a cube collapsed flat (eight points at each place)", flat}}) {
+  for (const auto& [what, state] :
+       {std::pair<const char*, const State&>{"a cube collapsed to one point (all 512 points at one "
+                                             "place)",
+                                             point},
+        {"a cube collapsed flat (eight points at each place)", flat}}) {
     Script script;
     script.world(world, probeRun(), state);
     script.accelerations();
