@@ -286,7 +286,7 @@ struct Options {
   std::string checkList;  // --checks, comma-separated
   std::string dir = "grading", one;
   bool overwrite = false, ctest = false, strict = false;
-  std::string shard, merge;  // --shard K/N; --merge OUT
+  std::string shard, merge;           // --shard K/N; --merge OUT
   std::optional<std::uint64_t> seed;  // --seed; else the report folder's, else a new one
   std::size_t item = 0;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -382,7 +382,8 @@ int run(int argc, char** argv) {
                       submissions.end());
     std::cerr << textf("grade: part %d of %d: %zu submission%s\n", shard.part, shard.parts,
                        submissions.size(), submissions.size() == 1 ? "" : "s");
-    if (submissions.empty()) throw std::invalid_argument("--shard " + o.shard + ": no submission in this part");
+    if (submissions.empty())
+      throw std::invalid_argument("--shard " + o.shard + ": no submission in this part");
   }
   // A regrade into a report folder uses its seed, so that it is judged on the same worlds.
   std::uint64_t seed = o.seed ? *o.seed : earlierSeed(o.dir).value_or(std::random_device{}());

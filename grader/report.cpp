@@ -1,6 +1,5 @@
 // report.cpp: the grader's files (report.h). Every file is written whole by core/output's writer.
 #include "grader/report.h"
-#include "grader/shards.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,6 +13,7 @@
 #include <stdexcept>
 
 #include "core/output.h"
+#include "grader/shards.h"
 #include "model/term.h"
 
 namespace jello::grader {
@@ -101,12 +101,14 @@ Grade overallGrade(const Graded& g) {
 
 // The graded checks (pass, near or FAIL: info is not graded), and those of them that pass.
 int gradedChecks(const Graded& g) {
-  return static_cast<int>(std::count_if(g.results.begin(), g.results.end(),
-                                        [](const CheckResult& r) { return r.grade != Grade::Info; }));
+  return static_cast<int>(
+      std::count_if(g.results.begin(), g.results.end(),
+                    [](const CheckResult& r) { return r.grade != Grade::Info; }));
 }
 int passedChecks(const Graded& g) {
-  return static_cast<int>(std::count_if(g.results.begin(), g.results.end(),
-                                        [](const CheckResult& r) { return r.grade == Grade::Pass; }));
+  return static_cast<int>(
+      std::count_if(g.results.begin(), g.results.end(),
+                    [](const CheckResult& r) { return r.grade == Grade::Pass; }));
 }
 
 }  // namespace
@@ -190,7 +192,8 @@ std::string summaryCsv(const std::vector<Graded>& graded) {
   for (const auto& c : graded.front().results)
     csv << "," << c.check << (c.check == "speed" ? "_us" : "");
   for (const auto& g : graded) {
-    csv << "\n" << csvField(g.submission.name) << "," << gradeName(overallGrade(g)) << ","
+    csv << "\n"
+        << csvField(g.submission.name) << "," << gradeName(overallGrade(g)) << ","
         << textf("%d/%d", passedChecks(g), gradedChecks(g));
     for (const auto& r : g.results) {
       if (r.check == "speed")
@@ -385,8 +388,7 @@ void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
   writeFileWhole(dir + "/CTestTestfile.cmake", tests.str(), existing);
 }
 
-std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed,
-                                       bool* strict) {
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed, bool* strict) {
   std::ifstream in(dir + "/grading.txt");
   std::string line;
   if (!std::getline(in, line) || line.rfind("seed ", 0) != 0) {

@@ -53,7 +53,6 @@ void writeCTestFiles(const std::string& dir, const std::string& gradeProgram,
                      bool overwrite);
 // Reads dir/grading.txt back: the seed, --strict, and the submissions' paths (each written with
 // its bytes escaped, so that a name holding a line break stays one path).
-std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed,
-                                       bool* strict);
+std::vector<std::string> readCTestList(const std::string& dir, std::uint64_t* seed, bool* strict);
 
 }  // namespace jello::grader

@@ -25,7 +25,8 @@ bool inShard(const std::string& name, const Shard& shard) {
 }
 
 std::string gradedRecord(const std::vector<Graded>& graded, std::uint64_t seed, bool strict) {
-  nlohmann::json record = {{"seed", seed}, {"strict", strict}, {"submissions", nlohmann::json::array()}};
+  nlohmann::json record = {
+      {"seed", seed}, {"strict", strict}, {"submissions", nlohmann::json::array()}};
   for (const Graded& g : graded) {
     nlohmann::json results = nlohmann::json::array();
     for (const CheckResult& r : g.results) {

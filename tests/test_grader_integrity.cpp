@@ -332,8 +332,8 @@ TEST(GraderIntegrity, ARegradeRemovesNothingThroughALinkOrAPlantedMark) {
   fs::remove_all(report + "/bend-rest");
   fs::create_directory_symlink(outside, report + "/bend-rest");
   writeText(report + "/.jello-grade", readText(report + "/.jello-grade") + "../outside\n");
-  CommandResult r = grade({"-o", report, "--overwrite", "--seed", "5", "--checks", "rest",
-                           kSubmissions + "/correct"});
+  CommandResult r = grade(
+      {"-o", report, "--overwrite", "--seed", "5", "--checks", "rest", kSubmissions + "/correct"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(outside + "/report.md"));
   EXPECT_TRUE(fs::exists(outside + "/build.log"));

@@ -130,10 +130,10 @@ TEST(GraderPrograms, BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSay
 TEST(GraderPrograms, StrictGradesWhatTheCoursesWorldsNeverAsk) {
   if (!jello::grader::sandboxProblem().empty()) GTEST_SKIP() << jello::grader::sandboxProblem();
   std::string root = makeTempDir(), cls = root + "/class";
-  ASSERT_EQ(runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls,
-                        "course-domain"})
-                .status,
-            0);
+  ASSERT_EQ(
+      runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls, "course-domain"})
+          .status,
+      0);
   CommandResult r = grade({"-o", root + "/strict", "--strict", "--seed", "5", "--checks",
                            "field,robust", cls + "/course-domain"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -152,8 +152,7 @@ TEST(GraderPrograms, StrictGradesWhatTheCoursesWorldsNeverAsk) {
 TEST(GraderPrograms, ALibraryCopyOfAnySizeCrowdsOutNoneOfTheCoursesFiles) {
   if (!jello::grader::sandboxProblem().empty()) GTEST_SKIP() << jello::grader::sandboxProblem();
   std::string root = makeTempDir(), cls = root + "/class";
-  ASSERT_EQ(runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls}).status,
-            0);
+  ASSERT_EQ(runProgram({std::string(JELLO_SOURCE_DIR) + "/scripts/make-students", cls}).status, 0);
   std::string hand = cls + "/course";
   fs::create_directories(hand + "/aaa-library/include");
   for (int n = 0; n < 2100; ++n)
