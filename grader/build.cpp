@@ -348,6 +348,37 @@ std::string serveSystemLibrary(const std::string& wanted, const fs::path& caseDi
   return "";
 }
 
+// A lenient build: a copy of Eigen or GLM the hand-in carries (a folder Eigen/ holding Dense or
+// Core, glm/ holding glm.hpp) is replaced by the system's copy: students' repositories often
+// leave out some of its files (a .gitignore's "core" drops Eigen/Core). Returns the notes.
+std::vector<std::string> serveLibraryCopies(const fs::path& build) {
+  std::vector<std::string> notes;
+  std::vector<std::pair<fs::path, fs::path>> copies;  // the copy, the system's folder
+  for (auto it = fs::recursive_directory_iterator(build); it != fs::recursive_directory_iterator();
+       ++it) {
+    if (!it->is_directory() || it->is_symlink()) continue;
+    std::string name = it->path().filename().string();
+    for (const SystemLibrary& library : kSystemLibraries) {
+      fs::path system = fs::path(library.folder) / library.top;
+      bool marked = fs::exists(it->path() / "Dense") || fs::exists(it->path() / "Core") ||
+                    fs::exists(it->path() / "glm.hpp") ||
+                    (name == "unsupported" && fs::exists(it->path().parent_path() / "Eigen"));
+      if (name == library.top && marked && fs::is_directory(system)) {
+        copies.emplace_back(it->path(), system);
+        it.disable_recursion_pending();
+      }
+    }
+  }
+  for (const auto& [copy, system] : copies) {
+    std::string named = copy.lexically_relative(build).generic_string();
+    fs::remove_all(copy);
+    fs::create_directory_symlink(system, copy);
+    notes.push_back(named + "/: the hand-in's copy of the library replaced by the system's " +
+                    system.string() + " (a copy in a repository often lacks some of its files)");
+  }
+  return notes;
+}
+
 // A lenient build: each #include that names no file as written but one in another case or with
 // Windows' backslashes (the student's own, or a stand-in: Windows does not tell case apart and
 // reads \ as /) gets a copy under the name as written, in the folder /work/case; a library the
@@ -454,6 +485,7 @@ std::vector<std::string> writeFlags(const Tree& tree, const Attempt& attempt,
     include += " -I/work/case -I/work/standins/lenient";
     cxx += " -fpermissive -include jello-grader-lenient.h";
     cc += " -include jello-grader-lenient.h";
+    for (const auto& note : serveLibraryCopies(work / "build")) leniencies.push_back(note);
     for (const auto& note : matchIncludeCase(work / "build", work / "standins", work / "case"))
       leniencies.push_back(note);
   }

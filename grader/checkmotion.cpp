@@ -13,8 +13,8 @@ namespace {
 
 // A cube in motion, deformed, one face across the wall x = 2, in a field, over a plane: every
 // term at work.
-WorldFile busyWorld() {
-  WorldFile file{probeWorld(), probeRun(), restLattice({1.03, -0.4, -0.6}, 0.3)};
+WorldFile busyWorld(Vec3 place = {1.03, -0.4, -0.6}) {
+  WorldFile file{probeWorld(), probeRun(), restLattice(place, 0.3)};
   std::mt19937_64 random(42);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-0.5, 0.5);
   for (int n = 0; n < kNumCoords; ++n) {
@@ -170,10 +170,48 @@ std::string whichRk4(const std::string& probe, const WorldFile& busy, const std:
          "usual wrong state";
 }
 
+// The world the integrators' checks step from: busyWorld, unless the submission's
+// computeAcceleration changes the state it is given there (a wall that zeroes the velocities of
+// the points across it) or gives a NaN: the step then cannot be told from its accelerations, so
+// it is judged on the same cube away from every contact (inside the box, over the plane), with a
+// note; the walls' and the plane's checks judge the contact.
+WorldFile stepWorld(const std::string& probe, std::vector<std::string>* notes) {
+  WorldFile busy = busyWorld();
+  Script script;
+  script.world(busy.world, busy.run, busy.state);
+  script.accelerations();
+  script.read();
+  ProbeRun run = runProbe(probe, script);
+  if (!run.complete()) return busy;
+  if (!allUsable(run.answers[0])) {
+    notes->push_back(
+        "computeAcceleration gives NaN or infinity on a cube across a wall: the step was judged "
+        "on the same cube away from every contact");
+  } else if (run.state(1).y != busy.state.y) {
+    notes->push_back(
+        "computeAcceleration changes the state it is given (its positions or velocities) on a "
+        "cube across a wall: the step was judged on the same cube away from every contact");
+  } else {
+    return busy;
+  }
+  return busyWorld({0.3, -0.4, -0.6});
+}
+
 }  // namespace
 
+// One step of each integrator from `busy`, judged (below the checks that choose the world).
+CheckResult judgeEuler(const std::string& probe, const WorldFile& busy);
+CheckResult judgeRk4(const std::string& probe, const WorldFile& busy);
+
 CheckResult checkEuler(const std::string& probe) {
-  WorldFile busy = busyWorld();
+  std::vector<std::string> notes;
+  WorldFile busy = stepWorld(probe, &notes);
+  CheckResult result = judgeEuler(probe, busy);
+  result.notes.insert(result.notes.end(), notes.begin(), notes.end());
+  return result;
+}
+
+CheckResult judgeEuler(const std::string& probe, const WorldFile& busy) {
   ProbeRun run = oneStep(probe, busy, Integrator::Euler);
   if (!run.complete()) return crashed("euler", run, "on one step of a cube in motion");
   if (!allUsable(run.answers[0])) return failed("euler", kNotJudged);
@@ -201,7 +239,14 @@ CheckResult checkEuler(const std::string& probe) {
 }
 
 CheckResult checkRk4(const std::string& probe) {
-  WorldFile busy = busyWorld();
+  std::vector<std::string> notes;
+  WorldFile busy = stepWorld(probe, &notes);
+  CheckResult result = judgeRk4(probe, busy);
+  result.notes.insert(result.notes.end(), notes.begin(), notes.end());
+  return result;
+}
+
+CheckResult judgeRk4(const std::string& probe, const WorldFile& busy) {
   ProbeRun run = oneStep(probe, busy, Integrator::RK4);
   if (!run.complete()) return crashed("rk4", run, "on one step of a cube in motion");
   if (!allUsable(run.answers[0])) return failed("rk4", kNotJudged);

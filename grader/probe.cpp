@@ -58,15 +58,14 @@ std::vector<double> toArrays(const std::vector<double>& lines, std::size_t point
 
 constexpr double kFirstStretch = 1.05;
 
-// `state` with its positions scaled by `factor` about their mean.
-State stretched(const State& state, double factor) {
-  Vec3 centre = {0, 0, 0};
-  for (int q = 0; q < kNumPoints; ++q) centre = centre + load(state.p(), q);
-  centre = (1.0 / kNumPoints) * centre;
-  State out = state;
-  for (int q = 0; q < kNumPoints; ++q)
-    store(out.p(), q, centre + factor * (load(state.p(), q) - centre));
-  return out;
+// The rest lattice centred on the origin, stretched by kFirstStretch; at rest.
+State stretchedLattice() {
+  State state;
+  for (int q = 0; q < kNumPoints; ++q) {
+    Vec3 p = {q / 64 / 7.0 - 0.5, q / 8 % 8 / 7.0 - 0.5, q % 8 / 7.0 - 0.5};
+    store(state.p(), q, kFirstStretch * p);
+  }
+  return state;
 }
 
 thread_local double probeBudget = kProbeSeconds;
@@ -83,11 +82,12 @@ bool probeHung() { return hung; }
 
 void Script::world(const World& world, const RunSettings& run, const State& state) {
   std::string text = formatWorld(world, run, state);
-  // The world file the student's main() reads: this world, its cube stretched 5% about its
-  // centre, so that a setup that takes rest lengths from the initial positions (wrong on a
-  // course world that starts deformed, skewedCorner.w) shows in the spring checks. The W
+  // The world file the student's main() reads: this world's parameters with the same cube in
+  // every run (the rest lattice about the origin, stretched 5%), so that a setup that takes rest
+  // lengths from the initial positions (wrong on a course world that starts deformed,
+  // skewedCorner.w) shows in the spring checks, and is the same in every run of a check. The W
   // request then sets the state itself.
-  if (firstWorld_.empty()) firstWorld_ = formatWorld(world, run, stretched(state, kFirstStretch));
+  if (firstWorld_.empty()) firstWorld_ = formatWorld(world, run, stretchedLattice());
   pending_ += "W\n" + text;
 }
 

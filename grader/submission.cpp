@@ -38,6 +38,17 @@ constexpr std::uintmax_t kMostDataBytes = 32u << 20;
 constexpr int kDeepest = 8;  // folders below the submission's own
 const std::set<std::string> kSourceExtensions = {".cpp", ".cc", ".cxx", ".c",  ".h",
                                                  ".hpp", ".hh", ".hxx", ".inl"};
+// What a build leaves (Visual Studio's, Xcode's, make's), which no program reads as it starts:
+// never taken as a file beside the program.
+const std::set<std::string> kBuildProducts = {
+    ".obj", ".o",     ".pdb",    ".ilk",   ".exe",  ".dll", ".lib", ".a",    ".so",
+    ".sdf", ".ncb",   ".ipch",   ".pch",   ".idb",  ".suo", ".db",  ".tlog", ".lastbuildstate",
+    ".exp", ".dylib", ".opendb", ".vsidx", ".iobj", ".ipdb"};
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
 
 bool hasSuffix(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
@@ -182,7 +193,9 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs:
       close(fd);
       continue;
     }
-    bool source = kSourceExtensions.count(fs::path(name).extension().string()) > 0;
+    // A header without an extension (a library's module header: Eigen/Core) is source too.
+    std::string extension = fs::path(name).extension().string();
+    bool source = kSourceExtensions.count(extension) > 0 || extension.empty();
     std::uintmax_t size = known ? static_cast<std::uintmax_t>(info.st_size) : 0;
     if (known && S_ISREG(info.st_mode) && source) {
       std::string text;
@@ -195,7 +208,8 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs:
       } else {
         writeText(to / path, text);
       }
-    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull && size <= kMostDataFileBytes) {
+    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull && size <= kMostDataFileBytes &&
+               !kBuildProducts.count(lower(fs::path(name).extension().string()))) {
       // A file the program may read (a texture, a world), for its run.
       std::string bytes;
       budget.dataBytes += size;
