@@ -124,64 +124,18 @@ State ProbeRun::state(std::size_t answer) const {
 
 std::string programFilesOf(const std::string& probePath) { return probePath + ".files"; }
 
-ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits) {
-  ProbeRun run;
-  Scratch scratch;
-  std::filesystem::copy_file(probePath, scratch.path() + "/probe");
-  std::filesystem::permissions(scratch.path() + "/probe", std::filesystem::perms(0755));
-  // The world file the student's own main() reads: the script's first world.
-  writeFileWhole(scratch.path() + "/world.w", script.firstWorld(), Existing::Refuse);
-  SandboxJob job;
-  job.argv = {"/work/probe", "/work/world.w"};
-  job.hostDir = scratch.path();
-  job.workingDir = "/tmp";
-  // It starts among its own files, as from its project's folder: a texture it loads in its
-  // setup is there. The probe copies them from /work/files (read-only) into /tmp, its working
-  // directory, before the program starts: a program that writes over one of them can.
-  // A link to each file where the file system allows (the run's own scratch folder is what the
-  // sandbox's user can reach), else a copy.
-  if (std::filesystem::is_directory(programFilesOf(probePath))) {
-    std::error_code linked;
-    std::filesystem::copy(
-        programFilesOf(probePath), scratch.path() + "/files",
-        std::filesystem::copy_options::recursive | std::filesystem::copy_options::create_hard_links,
-        linked);
-    if (linked) {
-      std::filesystem::remove_all(scratch.path() + "/files");
-      std::filesystem::copy(programFilesOf(probePath), scratch.path() + "/files",
-                            std::filesystem::copy_options::recursive);
-    }
-  }
-  job.requests = script.requests();
-  // Time is judged in CPU seconds, which a busy machine does not take from the program; the
-  // wall clock is a backstop for a program that waits (sleeps, reads) instead of computing.
-  job.limits.cpuSeconds = limits.scale * probeBudget;
-  job.limits.wallSeconds = kWallBackstop * job.limits.cpuSeconds;
-  job.limits.memoryBytes = 1LL << 30;
-  job.limits.processes = 8;
-  job.limits.fileBytes = 16LL << 20;
-  run.sandbox = runSandboxed(job);
-  if (run.sandbox.timedOut || run.sandbox.signal == SIGXCPU) {
-    probeBudget = kProbeSecondsAfterHang;
-    hung = true;
-  }
+namespace {
+
+// The answers of a finished run, checked for count and form, into run.answers; run.failure
+// says what went wrong (`how` the run ended) when not every request was answered.
+void readAnswers(const Script& script, const std::string& how, ProbeRun& run) {
   const std::string& replies = run.sandbox.replies;
   std::size_t at = 0;
-  std::string how = run.sandbox.exitedWith(0) ? "gave no answer" : run.sandbox.describe();
-  if (run.sandbox.signal == SIGXCPU || run.sandbox.timedOut)
-    how = run.sandbox.timedOut
-              ? textf(
-                    "did not return within %g s, waiting without computing: a read of the "
-                    "keyboard or a sleep?",
-                    job.limits.wallSeconds)
-              : textf("did not return within %g s: an endless loop?", job.limits.cpuSeconds);
-  else if (run.sandbox.signal == SIGKILL && !run.sandbox.outputCut)
-    how = "was killed (out of memory?)";
   if (!readWord(replies, at, "jello-probe") || !readWord(replies, at, ".")) {
     run.failure = "the program never reached the grader: it " +
                   (run.sandbox.exitedWith(0) ? std::string("ended") : how) +
                   " before its main() called glutMainLoop()";
-    return run;
+    return;
   }
   const auto& kinds = script.answering();
   for (std::size_t n = 0; n < kinds.size(); ++n) {
@@ -205,6 +159,64 @@ ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimit
     }
     run.answers.push_back(std::move(numbers));
   }
+}
+
+// The program's own files (programFilesOf) where a run's sandbox finds them, scratch/files: a link
+// to each where the file system allows (the run's own scratch folder is what the sandbox's user
+// can reach), else a copy. The probe copies them from /work/files (read-only) into /tmp, its
+// working directory, before the program starts: a program that writes over one of them can.
+void layOutProgramFiles(const std::string& probePath, const Scratch& scratch) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(programFilesOf(probePath))) return;
+  std::error_code linked;
+  fs::copy(programFilesOf(probePath), scratch.path() + "/files",
+           fs::copy_options::recursive | fs::copy_options::create_hard_links, linked);
+  if (!linked) return;
+  fs::remove_all(scratch.path() + "/files");
+  fs::copy(programFilesOf(probePath), scratch.path() + "/files", fs::copy_options::recursive);
+}
+
+// How a run that did not answer everything ended, in words.
+std::string howItEnded(const SandboxResult& sandbox, const SandboxLimits& limits) {
+  if (sandbox.timedOut)
+    return textf(
+        "did not return within %g s, waiting without computing: a read of the keyboard "
+        "or a sleep?",
+        limits.wallSeconds);
+  if (sandbox.signal == SIGXCPU)
+    return textf("did not return within %g s: an endless loop?", limits.cpuSeconds);
+  if (sandbox.signal == SIGKILL && !sandbox.outputCut) return "was killed (out of memory?)";
+  return sandbox.exitedWith(0) ? "gave no answer" : sandbox.describe();
+}
+
+}  // namespace
+
+ProbeRun runProbe(const std::string& probePath, const Script& script, ProbeLimits limits) {
+  ProbeRun run;
+  Scratch scratch;
+  std::filesystem::copy_file(probePath, scratch.path() + "/probe");
+  std::filesystem::permissions(scratch.path() + "/probe", std::filesystem::perms(0755));
+  // The world file the student's own main() reads: the script's first world.
+  writeFileWhole(scratch.path() + "/world.w", script.firstWorld(), Existing::Refuse);
+  layOutProgramFiles(probePath, scratch);
+  SandboxJob job;
+  job.argv = {"/work/probe", "/work/world.w"};
+  job.hostDir = scratch.path();
+  job.workingDir = "/tmp";
+  job.requests = script.requests();
+  // Time is judged in CPU seconds, which a busy machine does not take from the program; the
+  // wall clock is a backstop for a program that waits (sleeps, reads) instead of computing.
+  job.limits.cpuSeconds = limits.scale * probeBudget;
+  job.limits.wallSeconds = kWallBackstop * job.limits.cpuSeconds;
+  job.limits.memoryBytes = 1LL << 30;
+  job.limits.processes = 8;
+  job.limits.fileBytes = 16LL << 20;
+  run.sandbox = runSandboxed(job);
+  if (run.sandbox.timedOut || run.sandbox.signal == SIGXCPU) {
+    probeBudget = kProbeSecondsAfterHang;
+    hung = true;
+  }
+  readAnswers(script, howItEnded(run.sandbox, job.limits), run);
   return run;
 }
 

@@ -157,6 +157,41 @@ fs::path physicsFolder(int top, const StudentRights& rights) {
   return found;
 }
 
+// Copies the regular file open at `fd`, named `name`, to `to` when it is source (within the
+// source's budget) or a file the program may read as it starts (a texture, a world: within the
+// data's budget, never what a build leaves).
+void copyFile(int fd, const std::string& name, const fs::path& to, std::uintmax_t size,
+              CopyBudget& budget, std::vector<std::string>& notes) {
+  // A header without an extension (a library's module header: Eigen/Core) is source too.
+  std::string extension = fs::path(name).extension().string();
+  if (kSourceExtensions.count(extension) > 0 || extension.empty()) {
+    std::string text;
+    budget.bytes += size;
+    if (++budget.files > kMostFiles || budget.bytes > kMostBytes ||
+        !readAll(fd, kMostBytes, text)) {
+      notes.push_back("more source than the grader takes (" + std::to_string(kMostFiles) +
+                      " files, " + std::to_string(kMostBytes >> 20) + " MB): the rest ignored");
+      budget.full = true;
+    } else {
+      writeText(to, text);
+    }
+    return;
+  }
+  if (budget.dataFull || size > kMostDataFileBytes || kBuildProducts.count(lower(extension)))
+    return;
+  std::string bytes;
+  budget.dataBytes += size;
+  if (++budget.dataFiles > kMostDataFiles || budget.dataBytes > kMostDataBytes ||
+      !readAll(fd, kMostDataFileBytes, bytes)) {
+    notes.push_back("more files beside the source than the grader takes (" +
+                    std::to_string(kMostDataFiles) + " files, " +
+                    std::to_string(kMostDataBytes >> 20) + " MB): the rest left out");
+    budget.dataFull = true;
+  } else {
+    writeText(to, bytes);
+  }
+}
+
 // Copies the source and data files of the folder open at `dir` into `to` / `relative`, keeping
 // the layout: its files first, then its folders, the one on the way to `first` (physics.cpp's
 // folder) before the others. Every step is an openat without following a link, and what is read
@@ -193,36 +228,8 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs:
       close(fd);
       continue;
     }
-    // A header without an extension (a library's module header: Eigen/Core) is source too.
-    std::string extension = fs::path(name).extension().string();
-    bool source = kSourceExtensions.count(extension) > 0 || extension.empty();
-    std::uintmax_t size = known ? static_cast<std::uintmax_t>(info.st_size) : 0;
-    if (known && S_ISREG(info.st_mode) && source) {
-      std::string text;
-      budget.bytes += size;
-      if (++budget.files > kMostFiles || budget.bytes > kMostBytes ||
-          !readAll(fd, kMostBytes, text)) {
-        notes.push_back("more source than the grader takes (" + std::to_string(kMostFiles) +
-                        " files, " + std::to_string(kMostBytes >> 20) + " MB): the rest ignored");
-        budget.full = true;
-      } else {
-        writeText(to / path, text);
-      }
-    } else if (known && S_ISREG(info.st_mode) && !budget.dataFull && size <= kMostDataFileBytes &&
-               !kBuildProducts.count(lower(fs::path(name).extension().string()))) {
-      // A file the program may read (a texture, a world), for its run.
-      std::string bytes;
-      budget.dataBytes += size;
-      if (++budget.dataFiles > kMostDataFiles || budget.dataBytes > kMostDataBytes ||
-          !readAll(fd, kMostDataFileBytes, bytes)) {
-        notes.push_back("more files beside the source than the grader takes (" +
-                        std::to_string(kMostDataFiles) + " files, " +
-                        std::to_string(kMostDataBytes >> 20) + " MB): the rest left out");
-        budget.dataFull = true;
-      } else {
-        writeText(to / path, bytes);
-      }
-    }
+    if (known && S_ISREG(info.st_mode))
+      copyFile(fd, name, to / path, static_cast<std::uintmax_t>(info.st_size), budget, notes);
     close(fd);
   }
   for (const std::string& name : folders) {
