@@ -22,6 +22,7 @@
 #include "grader/leniency.h"
 #include "grader/probe.h"
 #include "grader/sandbox.h"
+#include "model/term.h"
 
 namespace fs = std::filesystem;
 
@@ -31,6 +32,11 @@ namespace {
 constexpr int kMostCompiled = 100;  // source files compiled in one attempt
 constexpr int kRewriteRounds = 3;
 constexpr std::size_t kPrintedKept = 4000;
+// Compiling: the CPU and wall seconds of one attempt at most, and of all a submission's attempts
+// together (a compile-time loop is not repeated for every attempt).
+constexpr double kCompileSeconds = 120;
+constexpr double kCompileBudgetSeconds = 240;
+thread_local double compileSecondsLeft = kCompileBudgetSeconds;
 // What a program that looks for a grader may test (docs/grading.md, "What no grader can prevent").
 const char* const kTells[] = {
     "F_GETFD", "/proc/self/fd", "isatty",
@@ -372,13 +378,24 @@ struct Compiled {
 
 // Runs the build script in the sandbox; on success the program is at `out`/probe.
 Compiled compile(const Scratch& scratch, const std::string& out) {
+  if (compileSecondsLeft < 1) {
+    Compiled none;
+    none.firstError = textf(
+        "the compiler used the submission's whole budget (%.0f s for all its "
+        "attempts): a compile-time loop?",
+        kCompileBudgetSeconds);
+    none.log = none.firstError + "\n";
+    return none;
+  }
   SandboxJob job;
   job.argv = {"/bin/sh", "/work/build.sh"};
   job.hostDir = scratch.path();
   job.outputDir = out;
   job.workingDir = "/work/build";
-  job.limits = {120, 120, 4LL << 30, 16, 256LL << 20, 1LL << 20};
+  double seconds = std::min(kCompileSeconds, compileSecondsLeft);
+  job.limits = {seconds, seconds, 4LL << 30, 16, 256LL << 20, 1LL << 20};
   SandboxResult result = runSandboxed(job);
+  compileSecondsLeft -= result.seconds;
   Compiled compiled;
   compiled.built = result.exitedWith(0);
   compiled.log = result.describe() + "\n" + result.errors + result.output;
@@ -540,6 +557,7 @@ void copyProgramFiles(const fs::path& root, const std::string& to) {
 
 BuildResult buildSubmission(const Submission& submission, const std::string& probePath) {
   auto start = std::chrono::steady_clock::now();
+  compileSecondsLeft = kCompileBudgetSeconds;
   BuildResult result;
   Scratch scratch;
   fs::path sources = fs::path(scratch.path()) / "sources";
