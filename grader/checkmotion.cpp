@@ -57,6 +57,12 @@ State derivativeOf(const State& state, const std::vector<double>& a) {
 }
 
 constexpr double kOneStepExact = 1e-9;
+// A step whose result is NaN where the accelerations at its start were not: the integrator cannot
+// be told from computeAcceleration, whose answers change from one call to the next.
+const char* const kUnsteady =
+    "the step gave NaN or infinity where computeAcceleration's answer at its start was finite: "
+    "computeAcceleration answers differently from one call to the next (an uninitialised "
+    "variable?)";
 const char* const kNotJudged =
     "computeAcceleration gave NaN or infinity on a cube in motion: the step cannot be judged";  // relative to dt * (largest velocity or acceleration)
 
@@ -217,6 +223,7 @@ CheckResult judgeEuler(const std::string& probe, const WorldFile& busy) {
   if (!allUsable(run.answers[0])) return failed("euler", kNotJudged);
   const State& s = busy.state;
   State after = run.state(2), course = s, symplectic = s;
+  if (!allUsable(after.y)) return failed("euler", kUnsteady);
   double dt = busy.run.dt;
   for (int n = 0; n < kNumCoords; ++n) {
     course.v()[n] = s.v()[n] + dt * run.answers[0][n];
@@ -252,7 +259,9 @@ CheckResult judgeRk4(const std::string& probe, const WorldFile& busy) {
   if (!allUsable(run.answers[0])) return failed("rk4", kNotJudged);
   std::string failure;
   std::string wrong = whichRk4(probe, busy, run.answers[0], run.state(2), &failure);
-  if (!failure.empty()) return failed("rk4", failure + " at a stage of RK4");
+  if (!failure.empty() && allUsable(run.state(2).y))
+    return failed("rk4", failure + " at a stage of RK4");
+  if (!failure.empty()) return failed("rk4", kUnsteady);
   double order = 0;
   failure = rk4Order(probe, &order);
   if (!failure.empty()) return failed("rk4", failure + " on a smooth scene");
