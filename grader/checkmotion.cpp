@@ -178,7 +178,8 @@ std::string whichRk4(const std::string& probe, const WorldFile& busy, const std:
 
 // The world the integrators' checks step from: busyWorld, unless the submission's
 // computeAcceleration changes the state it is given there (a wall that zeroes the velocities of
-// the points across it) or gives a NaN: the step then cannot be told from its accelerations, so
+// the points across it), gives a NaN, or answers differently when asked twice (a wall that keeps
+// where a point crossed it): the step then cannot be told from its accelerations, so
 // it is judged on the same cube away from every contact (inside the box, over the plane), with a
 // note; the walls' and the plane's checks judge the contact.
 WorldFile stepWorld(const std::string& probe, std::vector<std::string>* notes) {
@@ -187,6 +188,8 @@ WorldFile stepWorld(const std::string& probe, std::vector<std::string>* notes) {
   script.world(busy.world, busy.run, busy.state);
   script.accelerations();
   script.read();
+  script.state(busy.state);
+  script.accelerations();
   ProbeRun run = runProbe(probe, script);
   if (!run.complete()) return busy;
   if (!allUsable(run.answers[0])) {
@@ -197,6 +200,11 @@ WorldFile stepWorld(const std::string& probe, std::vector<std::string>* notes) {
     notes->push_back(
         "computeAcceleration changes the state it is given (its positions or velocities) on a "
         "cube across a wall: the step was judged on the same cube away from every contact");
+  } else if (run.answers[2] != run.answers[0]) {
+    notes->push_back(
+        "computeAcceleration answers differently when asked twice at the same state of a cube "
+        "across a wall (it keeps a state of its own, or reads memory it never set): the step was "
+        "judged on the same cube away from every contact");
   } else {
     return busy;
   }
