@@ -415,6 +415,28 @@ std::size_t utf8Length(std::string_view s, std::size_t i) {
 }
 }  // namespace
 
+namespace {
+
+// The code point of the well-formed UTF-8 sequence of `length` bytes at `i`.
+unsigned codePoint(std::string_view text, std::size_t i, std::size_t length) {
+  static const unsigned kFirstMask[5] = {0, 0x7F, 0x1F, 0x0F, 0x07};
+  unsigned code = static_cast<unsigned char>(text[i]) & kFirstMask[length];
+  for (std::size_t k = 1; k < length; ++k)
+    code = (code << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+  return code;
+}
+
+// Whether the sequence at `i` is a control a terminal or a reader acts on though it is not below
+// U+0020: a C1 control or a bidirectional formatting character.
+bool isHiddenControl(std::string_view text, std::size_t i, std::size_t length) {
+  if (length < 2) return false;
+  unsigned code = codePoint(text, i, length);
+  return (code >= 0x80 && code <= 0x9F) || (code >= 0x202A && code <= 0x202E) ||
+         (code >= 0x2066 && code <= 0x2069) || code == 0x200E || code == 0x200F;
+}
+
+}  // namespace
+
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -427,6 +449,14 @@ std::string printable(std::string_view text) {
       char escaped[8];
       std::snprintf(escaped, sizeof escaped, "\\x%02X", c);
       out += escaped;
+    } else if (isHiddenControl(text, i, length)) {
+      // A C1 control (U+0080-U+009F: U+009B is a terminal's CSI) or a bidirectional override
+      // (U+202A-U+202E, U+2066-U+2069, U+200E, U+200F), which reorders what a reader sees.
+      char escaped[16];
+      std::snprintf(escaped, sizeof escaped, "\\u%04X", codePoint(text, i, length));
+      out += escaped;
+      i += length;
+      continue;
     } else {
       out.append(text.substr(i, length));
       i += length;

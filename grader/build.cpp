@@ -78,33 +78,37 @@ const std::map<std::string, std::string> kStoodInHeaders = {
 // The build script, fixed text: file names reach it only through /work/list, one "ROLE PATH" a
 // line, each PATH a plain relative name (plainPath), and only ever as one quoted argument.
 // The compiler's messages all go to standard output, in order (warnings may be many: what is
-// beyond the sandbox's cap is discarded, never the reason a build fails). Each file is compiled
-// apart; the roots (the probe, physics.cpp, the program's main) are linked
-// with the rest as an archive, from which the linker takes only what the program needs: a stray
-// file that does not compile, or defines something twice, or needs GL, is left out unless used.
+// beyond the sandbox's cap is discarded, never the reason a build fails). Everything the
+// compiler writes stays in the sandbox's /tmp, a tmpfs of kSandboxTmpBytes: only the program
+// reaches the host's disk (/out). Each file is compiled apart; the roots (the probe, physics.cpp,
+// the program's main) are linked with the rest as an archive, from which the linker takes only what
+// the program needs: a stray file that does not compile, or defines something twice, or needs GL,
+// is left out unless used.
 const char* const kBuildScript = R"(set -u -f
 exec 2>&1
 cd /work/build || exit 1
+mkdir /tmp/o || exit 1
 cxx=$(cat /work/cxxflags); cc=$(cat /work/cflags); probe=$(cat /work/probeflags)
 n=0; roots=; libs=; broken=
 while read -r role source; do
   n=$((n + 1))
   echo "jello-grader: compiling $role"
   case $source in
-    *.c) gcc $cc -c "./$source" -o "/out/$n.o" ;;
-    *) if [ "$role" = probe ]; then g++ $cxx $probe -c "./$source" -o "/out/$n.o"
-       else g++ $cxx -c "./$source" -o "/out/$n.o"; fi ;;
+    *.c) gcc $cc -c "./$source" -o "/tmp/o/$n.o" ;;
+    *) if [ "$role" = probe ]; then g++ $cxx $probe -c "./$source" -o "/tmp/o/$n.o"
+       else g++ $cxx -c "./$source" -o "/tmp/o/$n.o"; fi ;;
   esac
   if [ $? -ne 0 ]; then
     [ "$role" = lib ] || broken=1
-  elif [ "$role" = lib ]; then libs="$libs /out/$n.o"
-  else roots="$roots /out/$n.o"
+  elif [ "$role" = lib ]; then libs="$libs /tmp/o/$n.o"
+  else roots="$roots /tmp/o/$n.o"
   fi
 done < /work/list
 [ -z "$broken" ] || exit 1
-if [ -n "$libs" ]; then ar rcs /out/lib.a $libs || exit 1; libs=/out/lib.a; fi
+if [ -n "$libs" ]; then ar rcs /tmp/o/lib.a $libs || exit 1; libs=/tmp/o/lib.a; fi
 echo "jello-grader: linking"
-exec g++ -o /out/probe $roots $libs -lm
+g++ -o /tmp/o/probe $roots $libs -lm || exit 1
+exec cp /tmp/o/probe /out/probe
 )";
 
 // Whether `text` calls or defines a function `word`: the word, then blanks, then '('. A plain

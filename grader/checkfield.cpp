@@ -133,9 +133,16 @@ CheckResult checkField(const std::string& probe, const GradingSetup& setup) {
   bool nearly = false;
   std::string why =
       probeField(probe, field, scattered(Spread::Inside), "inside the box", true, &nearly);
-  if (why.empty())
-    why = probeField(probe, field, scattered(Spread::NearWalls),
-                     "near the walls (in the last cells, within 2 cm of a wall)", false, &nearly);
+  if (why.empty() || nearly) {
+    bool walls = false;
+    std::string atWalls =
+        probeField(probe, field, scattered(Spread::NearWalls),
+                   "near the walls (in the last cells, within 2 cm of a wall)", false, &walls);
+    if (!atWalls.empty() && (why.empty() || !walls)) {
+      why = atWalls;
+      nearly = walls;
+    }
+  }
   CheckResult result = why.empty()
                            ? passed("field", "trilinear, node order, the cells at the walls")
                        : nearly ? near("field", why)

@@ -93,10 +93,12 @@ CheckResult outsideDomain(const std::string& check, const std::string& line,
 
 void addOutsideDomain(CheckResult& result, const std::string& line, const GradingSetup& setup) {
   CheckResult finding = outsideDomain(result.check, line, setup);
-  if (finding.grade == Grade::Fail && result.grade != Grade::Fail)
+  if (finding.grade == Grade::Fail && result.grade != Grade::Fail) {
+    finding.notes = result.notes;
     result = finding;
-  else if (finding.grade != Grade::Fail)
+  } else {
     result.notes.push_back(finding.diagnosis);
+  }
 }
 
 RunSettings probeRun() { return {Integrator::RK4, 0.0005, 1}; }

@@ -64,6 +64,18 @@ std::string readWhole(const fs::path& path) {
 
 namespace {
 
+// Whether `relative` below `base` passes through a symbolic link (one the grader made to a
+// system library, whatever its name): nothing is written through one, so a path a student
+// chooses (an #include, a #line) can never reach outside the scratch folder.
+bool throughLink(const fs::path& base, const fs::path& relative) {
+  fs::path at = base;
+  for (const auto& part : relative) {
+    at /= part;
+    if (fs::is_symlink(fs::symlink_status(at))) return true;
+  }
+  return false;
+}
+
 // Every file under `dir` by its lower-case relative path.
 std::map<std::string, std::string> byLowerCase(const fs::path& dir) {
   std::map<std::string, std::string> names;
@@ -126,6 +138,7 @@ std::string serveSystemLibrary(const std::string& wanted, const fs::path& caseDi
         target /= library.top;
       }
       if (fs::exists(fs::symlink_status(link))) return "";
+      if (throughLink(caseDir, link.lexically_relative(caseDir))) return "";
       fs::create_directories(link.parent_path());
       fs::create_directory_symlink(target, link);
       return "#include \"" + wanted + "\" served from the system's " + target.string() +
@@ -206,6 +219,7 @@ std::vector<std::string> matchIncludeCase(const fs::path& build, const fs::path&
         if (!served.empty()) notes.push_back(served);
         continue;
       }
+      if (throughLink(caseDir, wanted)) continue;
       writeText((caseDir / wanted).string(), readWhole(source));
       notes.push_back("#include \"" + wanted + "\" (" + from + ") read as " +
                       fs::path(source).filename().string() +
@@ -278,7 +292,9 @@ std::vector<std::string> rewriteForVisualCpp(const fs::path& build, const std::s
     std::getline(fields, columnText, ':');
     std::size_t line = std::strtoul(lineText.c_str(), nullptr, 10);
     std::size_t column = std::strtoul(columnText.c_str(), nullptr, 10);
-    if (!plainPath(path) || !fs::exists(build / path)) continue;
+    if (!plainPath(path) || !isSource(path) || throughLink(build, path) ||
+        !fs::exists(build / path))
+      continue;
     // A header's error is reported once for each file that includes it: rewritten once.
     if (!done.insert(path + ":" + lineText + ":" + columnText).second) continue;
     if (!files.count(path)) {
@@ -328,7 +344,9 @@ std::vector<std::string> rewriteMissingReturns(const fs::path& build, const std:
     std::getline(fields, lineText, ':');
     std::getline(fields, columnText, ':');
     std::string extension = fs::path(path).extension().string();
-    if (!plainPath(path) || !fs::exists(build / path) || extension == ".c") continue;
+    if (!plainPath(path) || !isSource(path) || throughLink(build, path) ||
+        !fs::exists(build / path) || extension == ".c")
+      continue;
     if (!done.insert(path + ":" + lineText + ":" + columnText).second) continue;
     if (!files.count(path)) {
       std::istringstream in(readWhole(build / path));

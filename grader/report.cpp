@@ -122,7 +122,7 @@ std::string rootCause(const Graded& g) {
   const Cause causes[] = {
       {"is the force not divided by the mass?", "the forces are not divided by the mass"},
       {"multiplied by the mass instead of divided", "the forces are multiplied by the mass"},
-      {"did not return within", "it does not return (an endless loop?)"}};
+      {"did not return", "it does not return (an endless loop?)"}};
   for (const Cause& cause : causes) {
     std::string checks;
     int count = 0;
@@ -188,13 +188,13 @@ std::string summaryMarkdown(const std::vector<Graded>& graded, std::uint64_t see
 // or empty when not measured).
 std::string summaryCsv(const std::vector<Graded>& graded) {
   std::ostringstream csv;
-  csv << "submission,verdict,score";
+  csv << "submission,verdict,passed,graded";
   for (const auto& c : graded.front().results)
     csv << "," << c.check << (c.check == "speed" ? "_us" : "");
   for (const auto& g : graded) {
     csv << "\n"
         << csvField(g.submission.name) << "," << gradeName(overallGrade(g)) << ","
-        << textf("%d/%d", passedChecks(g), gradedChecks(g));
+        << passedChecks(g) << "," << gradedChecks(g);
     for (const auto& r : g.results) {
       if (r.check == "speed")
         csv << "," << (r.figure >= 0 ? textf("%.0f", r.figure) : std::string());

@@ -40,6 +40,9 @@ const std::set<std::string> kSourceExtensions = {".cpp", ".cc", ".cxx", ".c",  "
                                                  ".hpp", ".hh", ".hxx", ".inl"};
 // What a build leaves (Visual Studio's, Xcode's, make's), which no program reads as it starts:
 // never taken as a file beside the program.
+// A version control's or a tool's own folders: never the program's.
+const std::set<std::string> kSkippedFolders = {".git", ".svn", ".hg", ".vs", "__MACOSX", ".idea"};
+constexpr std::uintmax_t kMostBareHeaderBytes = 256u << 10;  // a header without an extension
 const std::set<std::string> kBuildProducts = {
     ".obj", ".o",     ".pdb",    ".ilk",   ".exe",  ".dll", ".lib", ".a",    ".so",
     ".sdf", ".ncb",   ".ipch",   ".pch",   ".idb",  ".suo", ".db",  ".tlog", ".lastbuildstate",
@@ -164,7 +167,8 @@ void copyFile(int fd, const std::string& name, const fs::path& to, std::uintmax_
               CopyBudget& budget, std::vector<std::string>& notes) {
   // A header without an extension (a library's module header: Eigen/Core) is source too.
   std::string extension = fs::path(name).extension().string();
-  if (kSourceExtensions.count(extension) > 0 || extension.empty()) {
+  if (kSourceExtensions.count(extension) > 0 ||
+      (extension.empty() && size <= kMostBareHeaderBytes)) {
     std::string text;
     budget.bytes += size;
     if (++budget.files > kMostFiles || budget.bytes > kMostBytes ||
@@ -224,7 +228,7 @@ void copyFolder(int dir, const fs::path& to, const fs::path& relative, const fs:
     struct stat info;
     bool known = fstat(fd, &info) == 0;
     if (known && S_ISDIR(info.st_mode) && depth < kDeepest) {
-      folders.push_back(name);
+      if (!kSkippedFolders.count(name)) folders.push_back(name);
       close(fd);
       continue;
     }

@@ -44,7 +44,7 @@ inline std::map<std::string, std::map<std::string, std::string>> readSummary(
     for (std::size_t n = 1; std::getline(row, field, ','); ++n) {
       std::string check = checks[n];
       if (check == "speed_us") check = "speed", field = field.empty() ? "info" : field;
-      if (check != "verdict" && check != "score") grades[name][check] = field;
+      if (check != "verdict" && check != "passed" && check != "graded") grades[name][check] = field;
     }
   }
   return grades;

@@ -361,9 +361,8 @@ TEST(Grader, AClassGradedInThreePartsAndMergedIsTheOneRunsReport) {
   for (int part = 1; part <= 3; ++part) {
     std::string dir = root + "/part" + std::to_string(part);
     CommandResult r = grade(args({"-o", dir, "--shard", std::to_string(part) + "/3"}));
-    if (r.status == 2 && r.err.find("no submission in this part") != std::string::npos) continue;
     ASSERT_EQ(r.status, 0) << r.err;
-    graded += readSummary(dir).size();
+    if (fs::exists(dir + "/summary.csv")) graded += readSummary(dir).size();  // else empty
     merge.push_back(dir);
   }
   EXPECT_EQ(graded, 7u);

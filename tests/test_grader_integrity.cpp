@@ -340,3 +340,24 @@ TEST(GraderIntegrity, ARegradeRemovesNothingThroughALinkOrAPlantedMark) {
   EXPECT_TRUE(fs::exists(report + "/correct/report.md"));
   removeTree(root);
 }
+
+// The lenient build serves a library the hand-in names but does not carry from the system's copy
+// through a link in its scratch folder: an include through that link (its own file in another
+// case, "x/EVIL.h" for x/evil.h) is never written through it into the system's folder.
+TEST(GraderIntegrity, NoIncludeIsWrittenThroughTheLinkToASystemLibrary) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  if (!fs::is_directory("/usr/include/eigen3")) GTEST_SKIP() << "no system Eigen";
+  const std::string planted = "/usr/include/eigen3/JelloGraderPlanted.h";
+  std::string root = makeTempDir(), hand = root + "/hand";
+  fs::copy(kSubmissions + "/correct", hand, fs::copy_options::recursive);
+  fs::create_directories(hand + "/x");
+  writeText(hand + "/x/jellograderplanted.h", "#define PLANTED 1\n");
+  std::string physics = readText(hand + "/physics.cpp");
+  writeText(hand + "/physics.cpp",
+            "#include \"x/Eigen/Dense\"\n#include \"x/JelloGraderPlanted.h\"\n" + physics);
+  CommandResult r = grade({"-o", root + "/report", "--seed", "5", "--checks", "rest", hand});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(planted));
+  fs::remove(planted);  // were it written, it goes again
+  removeTree(root);
+}

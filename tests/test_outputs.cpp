@@ -115,6 +115,14 @@ TEST(HostileNames, PrintableEscapesControlsAndBrokenUtf8ButKeepsRealText) {
   EXPECT_EQ(printable("\xC3(\xED\xA0\x80\xF5"),
             "\\xC3(\\xED\\xA0\\x80\\xF5");  // cut, surrogate, past U+10FFFF
   EXPECT_EQ(printable("back\\slash"), "back\\\\slash");
+  // C1 controls (U+009B is a terminal's CSI, U+009D its OSC) and bidirectional overrides
+  // (U+202E, U+2066) act on a terminal or reorder what a reader sees: written as \uNNNN.
+  EXPECT_EQ(printable("a\xC2\x9B"
+                      "31mb\xC2\x9D"
+                      "c"),
+            "a\\u009B31mb\\u009Dc");
+  EXPECT_EQ(printable("x\xE2\x80\xAEy\xE2\x81\xA6z"), "x\\u202Ey\\u2066z");
+  EXPECT_EQ(printable("\xC2\xA0\xE2\x80\x94"), "\xC2\xA0\xE2\x80\x94");  // NBSP, em dash kept
 }
 
 // ---- Item 2: --dump's rule ------------------------------------------------------------------

@@ -27,6 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 
@@ -44,6 +45,7 @@ static int requestFd = 3, answerFd = 4;
 extern "C" int close(int);
 extern "C" int fcntl(int, int, ...);
 extern "C" int getpid(void);
+static double programStart = -1; /* seconds, set as the program starts (prepare) */
 
 /* The files beside the student's source (/work/files, read-only) copied into the working
    directory (/tmp), folders kept, before the program starts: its project's folder, writable. */
@@ -81,7 +83,15 @@ static void copyFiles(const char* from, const char* to) {
 __attribute__((constructor(101))) static void prepare(void) {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
-  int base = 200 + (int)(((unsigned)t.tv_nsec ^ (unsigned)getpid() * 2654435761u) % 700u);
+  programStart = (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+  /* From 200 to 900, or below the descriptors' limit where that is lower. */
+  struct rlimit open;
+  unsigned low = 200, span = 700;
+  if (getrlimit(RLIMIT_NOFILE, &open) == 0 && open.rlim_cur < 912) {
+    low = open.rlim_cur > 300 ? 200 : 10;
+    span = open.rlim_cur > low + 12 ? (unsigned)open.rlim_cur - low - 12 : 1;
+  }
+  int base = (int)low + (int)(((unsigned)t.tv_nsec ^ (unsigned)getpid() * 2654435761u) % span);
   int r = fcntl(3, 1030 /* F_DUPFD_CLOEXEC */, base);
   int a = fcntl(4, 1030 /* F_DUPFD_CLOEXEC */, base + 1);
   if (r < 0 || a < 0) exit(4);
@@ -95,11 +105,10 @@ __attribute__((constructor(101))) static void prepare(void) {
 /* glutGet of the GLUT stand-in (jello-grader-gl.h): the milliseconds since the program started
    for GLUT_ELAPSED_TIME, a 640x480 window for its sizes, 0 for anything else. */
 extern "C" int jello_grader_glut_get(int what) {
-  static double start = -1;
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
   double now = (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-  if (start < 0) start = now;
+  double start = programStart < 0 ? now : programStart;
   switch (what) {
     case 0x02BC: /* GLUT_ELAPSED_TIME */
       return (int)(1000 * (now - start));
@@ -158,7 +167,7 @@ static void readWorldCommand(void) {
   static struct point* padded = NULL;
   static struct point* students = NULL;
   static int paddedResolution = -1, studentsResolution = -1;
-  if (studentsResolution < 0 && w->forceField != NULL) {
+  if (padded == NULL && w->forceField != NULL) { /* the first world: its readWorld's buffer */
     students = w->forceField;
     studentsResolution = w->resolution;
   }
