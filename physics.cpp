@@ -142,7 +142,13 @@ Workers workersFor(const Model& model, ThreadPool* pool, bool bySize) {
   std::vector<long long> before(groups + 1, 0);  // the cost of the groups of points before
   for (int group = 0; group < groups; ++group) {
     const PointRange r{group * kRangeAlignment, std::min(n, (group + 1) * kRangeAlignment)};
-    before[group + 1] = before[group] + springs.costOf(r) + (r.end - r.begin);
+    // A range computes a unit of the grid once, though two groups share it (a voxel body's units
+    // straddle groups where its vector is narrower than a group): the group's cost after the
+    // point before it, as a range running through both counts it.
+    const long long cost = r.begin == 0 ? springs.costOf(r)
+                                        : springs.costOf({r.begin - 1, r.end}) -
+                                              springs.costOf({r.begin - 1, r.begin});
+    before[group + 1] = before[group] + cost + (r.end - r.begin);
   }
   const long long again = springs.warmUpCost();
   const long long first = (before.back() + (threads - 1) * again) / threads;
