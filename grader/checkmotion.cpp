@@ -217,13 +217,17 @@ WorldFile stepWorld(const std::string& probe, std::vector<std::string>* notes) {
 CheckResult judgeEuler(const std::string& probe, const WorldFile& busy);
 CheckResult judgeRk4(const std::string& probe, const WorldFile& busy);
 
-CheckResult checkEuler(const std::string& probe) {
+// `judge` on stepWorld's world, with its note.
+CheckResult judgedOnStepWorld(const std::string& probe,
+                              CheckResult (*judge)(const std::string&, const WorldFile&)) {
   std::vector<std::string> notes;
-  WorldFile busy = stepWorld(probe, &notes);
-  CheckResult result = judgeEuler(probe, busy);
+  WorldFile world = stepWorld(probe, &notes);
+  CheckResult result = judge(probe, world);
   result.notes.insert(result.notes.end(), notes.begin(), notes.end());
   return result;
 }
+
+CheckResult checkEuler(const std::string& probe) { return judgedOnStepWorld(probe, judgeEuler); }
 
 CheckResult judgeEuler(const std::string& probe, const WorldFile& busy) {
   ProbeRun run = oneStep(probe, busy, Integrator::Euler);
@@ -253,13 +257,7 @@ CheckResult judgeEuler(const std::string& probe, const WorldFile& busy) {
                                off));
 }
 
-CheckResult checkRk4(const std::string& probe) {
-  std::vector<std::string> notes;
-  WorldFile busy = stepWorld(probe, &notes);
-  CheckResult result = judgeRk4(probe, busy);
-  result.notes.insert(result.notes.end(), notes.begin(), notes.end());
-  return result;
-}
+CheckResult checkRk4(const std::string& probe) { return judgedOnStepWorld(probe, judgeRk4); }
 
 CheckResult judgeRk4(const std::string& probe, const WorldFile& busy) {
   ProbeRun run = oneStep(probe, busy, Integrator::RK4);
