@@ -38,8 +38,14 @@ constexpr int kNativeLanes = 2;
 constexpr int kPackPieces = kPackLanes / kNativeLanes;
 typedef double NativePack __attribute__((vector_size(kNativeLanes * sizeof(double))));
 
-// Every function here is inlined into its kernel.
+// Every function here is inlined into its kernel, but in the sanitizers' builds
+// (JELLO_KERNEL_CALLS): there the compiler decides, as the instrumented kernels inlined whole took
+// clang over ten minutes a file (model/springgrid.cpp, 2026-11-28).
+#ifdef JELLO_KERNEL_CALLS
+#define JELLO_PACK_INLINE inline
+#else
 #define JELLO_PACK_INLINE inline __attribute__((always_inline))
+#endif
 
 struct Pack {
   NativePack piece[kPackPieces] = {};
