@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -88,10 +89,29 @@ World springsOnlyWorld() {
   return w;
 }
 
+namespace {
+// Every folder makeTempDir made in this process, removed as the process ends (a test that
+// fails or returns early included); what a killed process leaves, the suite's TMPDIR
+// (tests/CMakeLists.txt) keeps until the next run's setup empties it.
+struct TempDirs {
+  std::mutex lock;
+  std::vector<std::string> made;
+  ~TempDirs() {
+    for (const auto& dir : made) removeTree(dir);
+  }
+};
+TempDirs& tempDirs() {
+  static TempDirs dirs;
+  return dirs;
+}
+}  // namespace
+
 std::string makeTempDir() {
   const char* base = std::getenv("TMPDIR");
   std::string pattern = std::string(base && *base ? base : "/tmp") + "/jello-test-XXXXXX";
   if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+  std::lock_guard<std::mutex> hold(tempDirs().lock);
+  tempDirs().made.push_back(pattern);
   return pattern;
 }
 
