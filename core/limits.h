@@ -11,6 +11,10 @@ namespace jello {
 
 // ---- Worlds ----------------------------------------------------------------------------------
 
+// m: a point further from the origin has diverged (a run stops there); a state file that starts
+// a point beyond it is refused.
+constexpr double kDivergenceRadius = 100.0;
+
 // The largest field resolution. What a field of R^3 nodes costs is memory (memory.h; a world that
 // does not fit is refused before anything is allocated): 24 bytes a node held once by createWorld,
 // 80 by a run (the World read, the Model's copy of it and its 32-byte padded nodes). Peak RSS at

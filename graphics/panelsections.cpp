@@ -117,7 +117,8 @@ void elementFields(Viewer& v, Draft& d, JellyFields& f) {
   Material& m = *f.material;
   bool changed = numberField(v, "Young's modulus, Pa##jelly.E", &m.youngsModulus, 0,
                              kLargestSceneNumber, true);
-  changed |= numberField(v, "Poisson's ratio##jelly.nu", &m.poissonRatio, 0, kLargestPoissonRatio);
+  changed |= numberField(v, "Poisson's ratio##jelly.nu", &m.poissonRatio,
+                         smallestPoissonRatio(m.kind), kLargestPoissonRatio);
   changed |= numberField(v, "density, kg/m^3##jelly.density", &m.density, kSmallestDensity,
                          kLargestDensity);
   changed |=

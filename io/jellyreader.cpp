@@ -43,9 +43,15 @@ Body readLattice(const Reader& r, const toml::table& t, const std::string& path,
   if (!array || array->size() != 3) r.fail(*size, path + "size", "expected [nx, ny, nz]");
   int n[3];
   for (int i = 0; i < 3; ++i)
-    n[i] = wholeNumber(r, *array->get(i), path + "size", 1, kMostBodyPoints);
+    n[i] = wholeNumber(r, *array->get(i), path + "size", 1, kMostScenePoints);
   if ((n[0] == 1) + (n[1] == 1) + (n[2] == 1) > 1)
     r.fail(*size, path + "size", "at most one side may be 1 (a sheet); the others from 2");
+  const long long points = static_cast<long long>(n[0]) * n[1] * n[2];
+  if (points > kMostScenePoints)
+    r.fail(*size, path + "size",
+           std::to_string(n[0]) + "x" + std::to_string(n[1]) + "x" + std::to_string(n[2]) + " is " +
+               std::to_string(points) + " points; a scene holds at most " +
+               std::to_string(kMostScenePoints));
   return latticeBody(n[0], n[1], n[2], spacing);
 }
 
@@ -206,11 +212,14 @@ Material readMaterial(const Reader& r, const toml::table& t, const std::string& 
     if (!t.get(key))
       r.fail(*node, path + key, std::string("a jelly of finite elements needs its ") + key);
   m.youngsModulus = *r.number(t, path, "youngs_modulus", 0, true);
-  m.poissonRatio = *r.number(t, path, "poisson_ratio", 0, false);
-  if (m.poissonRatio > kLargestPoissonRatio)
+  m.poissonRatio = *r.number(t, path, "poisson_ratio");
+  if (m.poissonRatio < smallestPoissonRatio(m.kind) || m.poissonRatio > kLargestPoissonRatio)
     r.fail(*t.get("poisson_ratio"), path + "poisson_ratio",
-           "must be from 0 to " + Reader::textOf(kLargestPoissonRatio) +
-               " (at 0.5 a solid could not change its volume at all)");
+           "must be from " + Reader::textOf(smallestPoissonRatio(m.kind)) + " to " +
+               Reader::textOf(kLargestPoissonRatio) +
+               (m.kind == MaterialKind::NeoHookean
+                    ? " (at -1 a solid could not keep its volume, at 0.5 it could not change it)"
+                    : " for corotated elasticity (below 0, material = \"neohookean\")"));
   m.density = *r.number(t, path, "density", 0, true);
   if (m.density < kSmallestDensity || m.density > kLargestDensity)
     r.fail(*t.get("density"), path + "density",

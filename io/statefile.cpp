@@ -5,10 +5,12 @@
 #include <array>
 #include <string_view>
 
+#include "core/limits.h"
 #include "core/output.h"
 #include "core/readfile.h"
 #include "io/input.h"
 #include "io/inputerror.h"
+#include "model/term.h"
 
 namespace jello {
 
@@ -85,13 +87,18 @@ State parseState(const std::string& text, const std::string& name, const Body& b
     const auto [jelly, index] = placeOf(body, q);
     if (value[0] != jelly) fail("expected jelly " + std::to_string(jelly) + " here", "body");
     if (value[1] != index) fail("expected point " + std::to_string(index) + " here", "index");
+    const double far = value[2] * value[2] + value[3] * value[3] + value[4] * value[4];
+    if (!(far <= kDivergenceRadius * kDivergenceRadius))
+      fail("is more than " + textf("%g", kDivergenceRadius) +
+               " m from the origin, where a run stops as diverged",
+           "x");
     store(state.p(), q, n, {value[2], value[3], value[4]});
     store(state.v(), q, n, {value[5], value[6], value[7]});
   }
-  if (at < text.size()) {
-    ++line;
-    fail("more points than the scene's body has (" + std::to_string(n) + ")", "body");
-  }
+  // Empty lines may end the file (an editor's, a spreadsheet's); anything else is a point too many.
+  while (at < text.size())
+    if (!nextLine().empty())
+      fail("more points than the scene's body has (" + std::to_string(n) + ")", "body");
   return state;
 }
 

@@ -180,7 +180,8 @@ void addSurface(const VoxelMask& mask, Body* body) {
 
 Body voxelBody(const VoxelMask& mask, double spacing, std::string what) {
   JELLO_ASSERT(mask.nx >= 1 && mask.ny >= 1 && mask.nz >= 1);
-  JELLO_ASSERT(mask.nx < kMostBodyPoints && mask.ny < kMostBodyPoints && mask.nz < kMostBodyPoints);
+  JELLO_ASSERT(static_cast<long long>(mask.nx + 1) * (mask.ny + 1) * (mask.nz + 1) <=
+               kMostScenePoints);
   JELLO_ASSERT(spacing > 0 && std::isfinite(spacing));
   Body body;
   body.what = std::move(what);
@@ -204,6 +205,7 @@ Body sheetBody(int nx, int ny, int nz, double spacing, std::string what) {
   body.what = std::move(what);
   body.nx = nx, body.ny = ny, body.nz = nz;
   body.spacing = spacing;
+  JELLO_ASSERT(static_cast<long long>(nx) * ny * nz <= kMostScenePoints);
   const int nodes = nx * ny * nz;
   for (int node = 0; node < nodes; ++node) {
     body.pointAt.push_back(node);

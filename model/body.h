@@ -76,7 +76,8 @@ using Triangle = std::array<int, 3>;  // three point numbers, counter-clockwise 
 // (x1 - x0) . ((x2 - x0) x (x3 - x0)) / 6, is positive.
 using Tet = std::array<int, 4>;
 
-// The most points along an edge of a body's grid (the 2..48).
+// The most points along an edge of a voxel body's grid (io/voxels: a mesh or a ball voxelised);
+// a lattice or sheet may have any number along an axis within kMostScenePoints in all.
 constexpr int kMostBodyPoints = 48;
 // The most jellies a scene may hold ([[jelly]], docs/scenes.md), and the most points of them all.
 constexpr int kMostJellies = 64;
@@ -135,12 +136,12 @@ struct Body {
 };
 
 // A body of every corner of the filled voxels of `mask`, spacing metres apart. The mask must hold
-// at least one filled voxel and at most kMostBodyPoints - 1 voxels along each axis.
+// at least one filled voxel; its grid's nodes are kMostScenePoints at most.
 Body voxelBody(const VoxelMask& mask, double spacing, std::string what);
-// The nx x ny x nz lattice (each 2..kMostBodyPoints, except that one of them may be 1: a sheet, a
-// cloth) of points spacing metres apart. A sheet's springs are those of the offsets that stay in
-// its plane (structural, face shear and bend); its surface is the sheet, its triangles wound
-// counter-clockwise seen from the + side of the thin axis.
+// The nx x ny x nz lattice (each from 2, except that one of them may be 1: a sheet, a cloth; at
+// most kMostScenePoints nodes in all) of points spacing metres apart. A sheet's springs are those
+// of the offsets that stay in its plane (structural, face shear and bend); its surface is the
+// sheet, its triangles wound counter-clockwise seen from the + side of the thin axis.
 Body latticeBody(int nx, int ny, int nz, double spacing);
 // Whether the body is a sheet (one point thick along an axis).
 bool isSheet(const Body& body);

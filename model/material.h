@@ -28,14 +28,21 @@ inline constexpr std::array<MaterialInfo, 3> kMaterials = {{
 static_assert(kMaterials[int(MaterialKind::NeoHookean)].kind == MaterialKind::NeoHookean);
 const MaterialInfo& materialInfo(MaterialKind kind);
 
-// The largest Poisson's ratio a material may have: at 0.5 it could not change its volume at all
-// (lambda infinite), and near it linear tetrahedra lock.
+// The Poisson's ratios a material may have. At 0.5 it could not change its volume at all (lambda
+// infinite), and near it linear tetrahedra lock; at -1 its bulk modulus lambda + 2 mu / 3 is 0.
+// Below 0 it is auxetic (lambda < 0: it widens under tension): the stable Neo-Hookean energy holds
+// that (its lambda' = lambda + mu = mu / (1 - 2 nu) > 0), the corotated one does not (its
+// lambda/2 (J - 1)^2 goes below zero at a large stretch), so it keeps nu >= 0.
+constexpr double kSmallestPoissonRatio = -0.99;
 constexpr double kLargestPoissonRatio = 0.49;
+constexpr double smallestPoissonRatio(MaterialKind kind) {
+  return kind == MaterialKind::NeoHookean ? kSmallestPoissonRatio : 0.0;
+}
 
 struct Material {
   MaterialKind kind = MaterialKind::Springs;
   double youngsModulus = 0;     // E, Pa, > 0
-  double poissonRatio = 0;      // nu, 0 <= nu <= kLargestPoissonRatio
+  double poissonRatio = 0;      // nu, smallestPoissonRatio(kind) <= nu <= kLargestPoissonRatio
   double density = 0;           // kg/m^3, > 0
   double massDamping = 0;       // Rayleigh's alpha, 1/s: a force -alpha m v on every point
   double stiffnessDamping = 0;  // Rayleigh's beta, s: the viscous stress below

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "core/limits.h"
 #include "model/model.h"
 #include "model/world.h"
 #include "solver/integrators.h"
@@ -61,8 +62,6 @@ void computeForcesOn(const Model& model, PointRange points, const double* p, con
 // With workers, their threads take a range of points each, with the same result.
 void derivative(const Model& model, const double* y, double* dydt, const Pull* pull = nullptr,
                 const Workers* workers = nullptr);
-
-constexpr double kDivergenceRadius = 100.0;  // m: a point further from the origin has diverged
 
 // Index of the first point with a non-finite coordinate or velocity, or further than
 // kDivergenceRadius from the origin; -1 when the state is sane.

@@ -330,6 +330,44 @@ TEST(SceneBodies, ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK) {
   EXPECT_NEAR(sag1 / sag2, 2, 0.05);
 }
 
+// A lattice or sheet is bounded by the scene's total, not along an axis: an 81x9x9 beam, a
+// 300x300 cloth and a 2000x2x2 rod have their springs counted by hand, no force at rest, and
+// stretched along their length pull back at both ends alike (the net force zero).
+TEST(SceneBodies, ALatticeOrSheetMayBeLongAlongAnAxisWithinTheScenesTotal) {
+  struct Case {
+    const char* size;
+    int n[3];
+    double spacing;
+  };
+  for (const Case& c :
+       {Case{"[81, 9, 9]", {81, 9, 9}, 0.04}, Case{"[300, 300, 1]", {300, 300, 1}, 0.01},
+        Case{"[2000, 2, 2]", {2000, 2, 2}, 0.001}}) {
+    const WorldFile f = bodyScene(std::string("[bounds]\npresent = false\n[jelly]\nshape = "
+                                              "\"lattice\"\nsize = ") +
+                                  c.size + "\nspacing = " + std::to_string(c.spacing) + "\n");
+    const Model model = makeModel(f.world, f.state);
+    const int n = model.points();
+    ASSERT_EQ(n, c.n[0] * c.n[1] * c.n[2]) << c.size;
+    if (c.n[2] > 1) {
+      EXPECT_EQ(model.body().springs.size(), latticeSprings(c.n[0], c.n[1], c.n[2]));
+    }
+    std::vector<double> force(3 * n), stretched(f.state.p(), f.state.p() + 3 * n);
+    computeForces(model, f.state.p(), f.state.v(), force.data());
+    double largest = 0;
+    for (double x : force) largest = std::max(largest, std::fabs(x));
+    EXPECT_LT(largest, 1e-9) << c.size << ": at rest";
+    for (int q = 0; q < n; ++q) stretched[q] *= 1.01;  // x, the long axis, 1% longer
+    computeForces(model, stretched.data(), f.state.v(), force.data());
+    Vec3 net{}, first{};
+    for (int q = 0; q < n; ++q) {
+      net += load(force.data(), q, n);
+      if (model.body().index(q)[0] == 0) first += load(force.data(), q, n);
+    }
+    EXPECT_GT(first.x, 0) << c.size << ": its first face pulled towards the rest";
+    EXPECT_LT(std::fabs(net.x), 1e-9 * std::fabs(first.x)) << c.size;
+  }
+}
+
 // A point that is not finite is named by its place in its own body's grid, whatever the body's
 // count (a 512-point ball is not the course's lattice).
 TEST(SceneBodies, APointThatIsNotFiniteIsNamedByItsOwnGridIndex) {

@@ -75,6 +75,10 @@ TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
   const std::string whole = test::readText(dir + "/whole.csv");
   EXPECT_EQ(test::readText(dir + "/end.csv"), whole);
   EXPECT_EQ(std::count(whole.begin(), whole.end(), '\n'), 129);  // the header and 128 points
+  // Empty lines after the last point (an editor's) are read as the file without them.
+  test::writeText(dir + "/half.csv", test::readText(dir + "/half.csv") + "\n\r\n");
+  ASSERT_EQ(run("more.toml", "200", "again.csv").status, 0);
+  EXPECT_EQ(test::readText(dir + "/again.csv"), whole);
   // A state of another body is refused with its line and field, exit status 2.
   test::writeText(dir + "/other.toml",
                   "state = \"half.csv\"\n[jelly]\nshape = \"lattice\"\n"
@@ -86,6 +90,17 @@ TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
                            "body has (27) (body) (state)"),
             std::string::npos)
       << other.err;
+  // A point beyond 100 m, where a run would stop at once as diverged, is refused as it is read.
+  std::string far = whole;
+  const std::size_t row = far.find('\n') + 1, x = far.find(',', far.find(',', row) + 1) + 1;
+  far.replace(x, far.find(',', x) - x, "-150");
+  test::writeText(dir + "/half.csv", far);
+  const test::CommandResult beyond = test::runJelloArgs({"--headless", dir + "/more.toml"});
+  EXPECT_EQ(beyond.status, 2);
+  EXPECT_NE(beyond.err.find("/half.csv:2: is more than 100 m from the origin, where a run stops as "
+                            "diverged (x) (state)"),
+            std::string::npos)
+      << beyond.err;
   test::removeTree(dir);
 }
 
