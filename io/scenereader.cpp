@@ -343,11 +343,27 @@ std::string characterAt(std::string_view text, std::size_t line, std::size_t col
 
 // A file that is not TOML: said in this program's words where the TOML reader stopped (its own
 // text, from a library, is not shown).
+// A key or table given twice is said so, by its name (the one thing taken from the TOML reader's
+// text, "cannot redefine existing ... 'NAME'", made printable).
 toml::table parseToml(std::string_view text, const std::string& name) {
   try {
     return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
+    const std::string_view said = e.description();
+    const std::size_t open = said.find('\''), close = said.rfind('\'');
+    if (said.find("cannot redefine existing") != std::string_view::npos &&
+        open != std::string_view::npos && close > open) {
+      const std::string key = oneLine(said.substr(open + 1, close - open - 1));
+      const bool table = said.find("table header") != std::string_view::npos;
+      throw InputError(name + ":" + std::to_string(where.line) + ": " +
+                       (table ? "[" + key + "]" : key) + " given twice" +
+                       (said.find("array-of-tables") != std::string_view::npos
+                            ? ": [" + key + "] and [[" + key + "]] do not mix (one [" + key +
+                                  "], or each as [[" + key + "]])"
+                        : table ? " (a table once; several as [[" + key + "]])"
+                                : " (each key once in its table)"));
+    }
     throw InputError(
         name + ":" + std::to_string(where.line) + ": not TOML: it cannot be read on from column " +
         std::to_string(where.column) + ", at " + characterAt(text, where.line, where.column) +

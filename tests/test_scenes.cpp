@@ -473,6 +473,13 @@ const Malformed kMalformed[] = {
      "test.toml:1: not TOML: it cannot be read on from column 6, at '<newline>' (each line is "
      "key = value, [table] or [[list]]: docs/scenes.md)"},
     {"dt = \"1\u0001", "test.toml:1: not TOML: it cannot be read on from column"},
+    // a key or table given twice, by its name
+    {"dt = 1\ndt = 2\n", "test.toml:2: dt given twice (each key once in its table)"},
+    {"[jelly]\nmass = 1\n[[jelly]]\nmass = 2\n",
+     "test.toml:3: [jelly] given twice: [jelly] and [[jelly]] do not mix (one [jelly], or each as "
+     "[[jelly]])"},
+    {"[jelly]\nmass = 1\n[jelly]\n",
+     "test.toml:3: [jelly] given twice (a table once; several as [[jelly]])"},
     {"\"a\\nb\" = 1\n", "test.toml:1: unknown key (a<newline>b)"},
     {"\"a\\u0001\" = 1\n", "test.toml:1: unknown key (a<U+0001>)"},
     // bodies
