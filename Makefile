@@ -73,7 +73,7 @@ test-quick: deps all
 # students' code no sanitizer sees, and the long runs of physics, 10 to 60 times slower there.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-		-DJELLO_SANITIZE=ON -DJELLO_WERROR=ON
+		-DJELLO_SANITIZE=ON -DJELLO_WERROR=ON -DJELLO_BENCHMARKS=OFF
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	rm -rf $(SANITIZE_DIR)/ubsan-reports && mkdir -p $(SANITIZE_DIR)/ubsan-reports
 	@status=0; cd $(SANITIZE_DIR) && \

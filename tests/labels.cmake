@@ -4,7 +4,8 @@
 #   sanitizers:  20 s or more under AddressSanitizer and UBSan, whose code shorter tests take
 #                through the sanitizers too: `make test-sanitize` leaves them out (it keeps the
 #                kernels' range and thread tests and the contacts, where an index goes wrong).
-# The window's tests (tests/CMakeLists.txt) are labelled where they are added.
+# The window's tests (tests/CMakeLists.txt) are labelled where they are added. A parameterised
+# test's name is GoogleTest's with its parameter: "NAME  # GetParam() = VALUE" (ctest -N).
 cmake_policy(VERSION 3.25)  # IN_LIST: CTest reads this file under the old policies
 set(jello_long_tests
   GraderPrograms.BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSays
@@ -80,7 +81,13 @@ set(jello_sanitizer_slow_tests
   SmallAndWildStates.AVelocityOf1e100IsADivergenceNotAnEigensolverFailure
   Elements.ACantileverSagsAsBeamTheorySaysAndConvergesAsTheMeshRefines
   Stability.AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit
-  Worlds/Prediction.WithinThreeQuartersAndElevenTenthsOfTheObservedLimit/stiff_2e4_w)
+  "Worlds/Prediction.WithinThreeQuartersAndElevenTenthsOfTheObservedLimit/stiff_2e4_w  # GetParam() = world/stress/stiff-2e4.w"
+  "Integrators/ConvergenceOrder.MatchesTheory/EULER  # GetParam() = EULER"
+  "Integrators/ConvergenceOrder.MatchesTheory/SYMPLECTIC  # GetParam() = SYMPLECTIC"
+  "Integrators/ConvergenceOrder.MatchesTheory/MIDPOINT  # GetParam() = MIDPOINT"
+  "Integrators/ConvergenceOrder.MatchesTheory/VERLET  # GetParam() = VERLET"
+  "Integrators/ConvergenceOrder.MatchesTheory/RK4  # GetParam() = RK4"
+  "Integrators/ConvergenceOrder.MatchesTheory/IMPLICIT  # GetParam() = IMPLICIT")
 # set_tests_properties, as CTest reads this file (set_property(TEST) is not there), sets a test's
 # labels whole: each gets both of its labels at once.
 set(jello_labelled ${jello_long_tests} ${jello_sanitizer_slow_tests})
