@@ -176,9 +176,14 @@ std::string frameLimitNote(const FrameObserver& frames, double savedUntil, doubl
 
 }  // namespace
 
-std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath) {
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath,
+                           const std::vector<std::string>& inputs) {
   if (sameFile(dumpPath, worldPath))
     return "is the world being run; it is never replaced, name another file";
+  for (const std::string& input : inputs)
+    if (sameFile(dumpPath, input))
+      return "is read by the scene being run (" + input +
+             "); it is never replaced, name another file";
   if (heldByAnotherRun(folderOf(dumpPath)))
     return "its folder is in use by another run (its frames or meshes); wait for it, or name a "
            "file elsewhere";
@@ -189,9 +194,11 @@ namespace {
 
 // Whether --save-state and --dump may write their files (whyNotDumpable), and the world is one a
 // world file holds.
-Outcome checkDump(const RunOptions& options, const World& world) {
+Outcome checkDump(const RunOptions& options, const WorldFile& file) {
+  const World& world = file.world;
   if (options.saveStatePath)
-    if (const std::string why = whyNotDumpable(*options.saveStatePath, options.worldPath);
+    if (const std::string why =
+            whyNotDumpable(*options.saveStatePath, options.worldPath, file.inputs);
         !why.empty())
       return failed("--save-state " + *options.saveStatePath + ": " + why);
   if (!options.dumpPath) return succeeded();
@@ -205,7 +212,7 @@ Outcome checkDump(const RunOptions& options, const World& world) {
                   "8x8x8 cube of springs, and " + what +
                   "; use --save-state for every point or --export for the surface");
   }
-  std::string why = whyNotDumpable(*options.dumpPath, options.worldPath);
+  std::string why = whyNotDumpable(*options.dumpPath, options.worldPath, file.inputs);
   if (!why.empty()) return failed("--dump " + *options.dumpPath + ": " + why);
   return succeeded();
 }
@@ -250,7 +257,7 @@ Outcome runHeadless(const RunOptions& options, FrameObserver* frames) {
   long long steps = 0;
   if (Outcome counted = stepsOfRun(options, file.run, frames, &steps); !counted.ok())
     return counted;
-  if (Outcome dumpable = checkDump(options, world); !dumpable.ok()) return dumpable;
+  if (Outcome dumpable = checkDump(options, file); !dumpable.ok()) return dumpable;
 
   const Model model = makeModel(world, file.state, options.kernel);
   ThreadPool pool(threadsFor(model, options.threads));  // before the simulation, which uses it

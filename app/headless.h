@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/pictures.h"
 #include "core/limits.h"
@@ -43,9 +44,11 @@ class FrameObserver {
 std::string toleranceFailure(const Tolerances& tolerances, long long s, double dt);
 
 // --dump FILE's rule (README, "Reliability"): it creates FILE or replaces a regular, writable
-// file of that name, because the option names it; never the world being run, nor anything
-// that is not a regular file (output.h). Why `dumpPath` may not be written, or "".
-std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath);
+// file of that name, because the option names it; never the world being run nor any file it
+// reads (`inputs`: a scene's world, state, meshes), nor anything that is not a regular file
+// (output.h). Why `dumpPath` may not be written, or "".
+std::string whyNotDumpable(const std::string& dumpPath, const std::string& worldPath,
+                           const std::vector<std::string>& inputs);
 
 // Loads the world, runs it (handing its frames to `frames` when given) and prints the summary
 // line on stdout. Fails (or diverges), saying why, without printing it.

@@ -45,7 +45,8 @@ Outcome staticRest(const JelloCommand& c) {
   WorldFile file;
   if (Outcome loaded = loadRun(c.run, &file); !loaded.ok()) return loaded;
   if (c.run.saveStatePath)
-    if (const std::string why = whyNotDumpable(*c.run.saveStatePath, c.run.worldPath); !why.empty())
+    if (const std::string why = whyNotDumpable(*c.run.saveStatePath, c.run.worldPath, file.inputs);
+        !why.empty())
       return failed("--save-state " + *c.run.saveStatePath + ": " + why);
   const Model model = makeModel(file.world, file.state);
   const StaticSolution rest = solveStatic(model, file.state);

@@ -14,7 +14,7 @@ namespace {
 // A cube in motion, deformed, one face across the wall x = 2, in a field, over a plane: every
 // term at work.
 WorldFile busyWorld(Vec3 place = {1.03, -0.4, -0.6}) {
-  WorldFile file{probeWorld(), probeRun(), restLattice(place, 0.3)};
+  WorldFile file{probeWorld(), probeRun(), restLattice(place, 0.3), {}};
   std::mt19937_64 random(42);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-0.5, 0.5);
   for (int n = 0; n < kNumCoords; ++n) {

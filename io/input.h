@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/inputerror.h"
 #include "model/world.h"
@@ -19,6 +20,7 @@ struct WorldFile {
   World world;
   RunSettings run;
   State state;
+  std::vector<std::string> inputs;  // the files a scene read besides itself (Reader::inputs)
 };
 
 // Why a world in memory is one the reader would refuse (the rules of docs/world-format.md on its

@@ -81,6 +81,7 @@ Body readShape(const Reader& r, const toml::table& t, const std::string& path,
                "a TetGen mesh has its own points; spacing is for voxels");
       const std::string nodePath = r.pathFromScene(*file);
       std::string nodeText, eleText;
+      r.noteInput(elementFileOf(nodePath));
       if (!readTetMeshFiles(nodePath, &nodeText, &eleText, &why)) r.fail(*node, path + "mesh", why);
       Body body = parseTetMesh(nodeText, nodePath, eleText, elementFileOf(nodePath));
       body.what = "the tetrahedra of " + *file;

@@ -424,6 +424,7 @@ WorldFile parseScene(std::string_view text, const std::string& name, const std::
   w.scene = std::move(spec);  // before the check: it names points by the scene's body
   if (std::optional<WorldProblem> problem = findWorldProblem(w, file.run, file.state))
     throw InputError(name + ": " + problem->what);
+  file.inputs = r.inputs();
   return file;
 }
 

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/inputerror.h"
 #include "model/vec3.h"
@@ -122,9 +123,17 @@ class Reader {
   const std::string& name() const { return name_; }
   // A path the scene file names (a world, a model): absolute as it is, else relative to the
   // scene file's folder (docs/scenes.md).
+  // Each is kept as one of the files the scene reads (inputs()).
   std::string pathFromScene(const std::string& path) const {
-    return path.empty() || path[0] == '/' || folder_.empty() ? path : folder_ + "/" + path;
+    std::string full =
+        path.empty() || path[0] == '/' || folder_.empty() ? path : folder_ + "/" + path;
+    inputs_.push_back(full);
+    return full;
   }
+  // Every file the scene reads besides itself, as named (a world, a state, a mesh, a TetGen
+  // mesh's two files): what --dump and --save-state never replace.
+  void noteInput(const std::string& path) const { inputs_.push_back(path); }
+  const std::vector<std::string>& inputs() const { return inputs_; }
 
  public:
   static std::string textOf(double value) {
@@ -135,6 +144,7 @@ class Reader {
 
  private:
   std::string name_, folder_;
+  mutable std::vector<std::string> inputs_;
 };
 
 }  // namespace jello

@@ -79,6 +79,15 @@ TEST(StateFiles, SavedByTheCommandLineAndContinuedByAScene) {
   test::writeText(dir + "/half.csv", test::readText(dir + "/half.csv") + "\n\r\n");
   ASSERT_EQ(run("more.toml", "200", "again.csv").status, 0);
   EXPECT_EQ(test::readText(dir + "/again.csv"), whole);
+  // The state a scene starts from is one of the files it reads: --save-state never replaces it.
+  const std::string started = test::readText(dir + "/half.csv");
+  const test::CommandResult onInput = run("more.toml", "10", "half.csv");
+  EXPECT_EQ(onInput.status, 2);
+  EXPECT_NE(onInput.err.find("--save-state " + dir + "/half.csv: is read by the scene being run (" +
+                             dir + "/half.csv); it is never replaced, name another file"),
+            std::string::npos)
+      << onInput.err;
+  EXPECT_EQ(test::readText(dir + "/half.csv"), started);
   // A state of another body is refused with its line and field, exit status 2.
   test::writeText(dir + "/other.toml",
                   "state = \"half.csv\"\n[jelly]\nshape = \"lattice\"\n"

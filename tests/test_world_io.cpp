@@ -253,7 +253,7 @@ TEST(WorldWriter, ArbitraryDoublesRoundTripBitIdentically) {
   s.y[5] = 5e-324;  // the smallest subnormal
   std::string text = formatWorld(w, run, s);
   WorldFile back = parseWorld(text, "random");
-  expectSameWorld({w, run, s}, back);
+  expectSameWorld({w, run, s, {}}, back);
   EXPECT_TRUE(std::signbit(back.world.plane.d));
 }
 
