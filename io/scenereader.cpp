@@ -342,9 +342,8 @@ std::string characterAt(std::string_view text, std::size_t line, std::size_t col
 }
 
 // A file that is not TOML: said in this program's words where the TOML reader stopped (its own
-// text, from a library, is not shown).
-// A key or table given twice is said so, by its name (the one thing taken from the TOML reader's
-// text, "cannot redefine existing ... 'NAME'", made printable).
+// text, from a library, is not shown), and a key or table given twice by its name (the one thing
+// taken from that text, "cannot redefine existing ... 'NAME'", made printable).
 toml::table parseToml(std::string_view text, const std::string& name) {
   try {
     return toml::parse(text, name);
