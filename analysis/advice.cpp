@@ -59,6 +59,10 @@ std::string largeBodyAdvice(const World& world, const State& initial, Integrator
 
 }  // namespace
 
+const char* const kStartBeyondGuard =
+    "the initial state is already beyond the guard (not finite, or more than 100 m from the "
+    "origin): no step will do; start the cube inside the box";
+
 std::string divergenceMessage(const World& world, const State& initial, Integrator integrator,
                               double dt, long long step, double time, const std::string& reason) {
   char head[160];
@@ -66,11 +70,7 @@ std::string divergenceMessage(const World& world, const State& initial, Integrat
   std::string out = head + reason + "; ";
   const char* name = integratorName(integrator);
   // Checks of microseconds first: an eigen-analysis of such a world would say nothing, slowly.
-  if (findDivergedPoint(initial) >= 0) {
-    return out +
-           "the initial state is already beyond the guard (not finite, or more than 100 m from the "
-           "origin): no step will do; start the cube inside the box";
-  }
+  if (findDivergedPoint(initial) >= 0) return out + kStartBeyondGuard;
   const std::string beyond = beyondDoubles(world, initial);
   if (!beyond.empty()) {
     return out + "the world's numbers are beyond what double arithmetic can simulate (" + beyond +

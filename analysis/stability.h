@@ -68,6 +68,10 @@ std::string stabilityText(const std::string& worldPath, const RunSettings& run,
 std::string stabilityJson(const std::string& worldPath, const RunSettings& run,
                           const StabilityReport& report);
 
+// What is said of a start already beyond the divergence guard (findDivergedPoint), by a run's
+// diagnosis and by --static alike.
+extern const char* const kStartBeyondGuard;
+
 // The one-line diagnosis of a diverged run, without the "jello: " prefix: where, why, and
 // what to change, e.g. "diverged at step 812 (t=0.0812 s): <reason>; dt=1e-4 exceeds RK4's
 // stable limit 6.6e-5 for this world; try --dt 5e-5 or --integrator IMPLICIT". A body of more

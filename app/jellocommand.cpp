@@ -48,6 +48,8 @@ Outcome staticRest(const JelloCommand& c) {
     if (const std::string why = whyNotDumpable(*c.run.saveStatePath, c.run.worldPath, file.inputs);
         !why.empty())
       return failed("--save-state " + *c.run.saveStatePath + ": " + why);
+  if (findDivergedPoint(file.state) >= 0)  // as a run says it: no Newton step will do either
+    return diverged(c.run.worldPath + ": " + kStartBeyondGuard);
   const Model model = makeModel(file.world, file.state);
   const StaticSolution rest = solveStatic(model, file.state);
   const int n = model.points();

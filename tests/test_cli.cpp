@@ -322,6 +322,26 @@ TEST(Cli, StaticFindsTheCantileverAtRestAndCompareMaterialsTablesTheFourRuns) {
   test::removeTree(dir);
 }
 
+// A world starting a point at 1e308 m: --static says what a run says of it (beyond the guard),
+// not a force left after no Newton step.
+TEST(Cli, StaticOnAStartBeyondTheGuardSaysWhatARunSays) {
+  const std::string dir = test::makeTempDir();
+  std::string world = test::readText(std::string(JELLO_SOURCE_DIR) + "/world/rotate.w");
+  std::size_t at = world.size() - 1;  // the last line is the last velocity; 1024 lines back, p[0]
+  for (int lines = 0; lines < 1024; ++lines) at = world.rfind('\n', at - 1);
+  world.replace(at + 1, world.find('\n', at + 1) - at - 1, "1e308 0 0");
+  test::writeText(dir + "/far.w", world);
+  const test::CommandResult run = runJello("--headless --steps 1 '" + dir + "/far.w'");
+  const test::CommandResult rest = runJello("--static '" + dir + "/far.w'");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(rest.status, 1);
+  const std::string said = "the initial state is already beyond the guard";
+  EXPECT_NE(run.err.find(said), std::string::npos) << run.err;
+  EXPECT_NE(rest.err.find(said), std::string::npos) << rest.err;
+  EXPECT_EQ(rest.err.find("Newton"), std::string::npos) << rest.err;
+  test::removeTree(dir);
+}
+
 TEST(Cli, AMissingDefaultWorldIsSaidToBeTheDefaultWithHowToNameOne) {
   std::string dir = test::makeTempDir();
   test::CommandResult r = runJello("--headless", dir);
