@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/nearest.h"
 #include "core/outcome.h"
 #include "core/output.h"
 #include "io/input.h"
@@ -64,40 +65,13 @@ inline const CLI::Validator kNonEmpty = CLI::Validator(
     [](std::string& text) -> std::string { return text.empty() ? "an empty name" : std::string(); },
     "");
 
-// Edits (insertions, deletions, substitutions) from a to b: how far a typed name is from an
-// option's.
-inline std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-// The option of `app` a mistyped `name` most likely meant ("--step" -> "--steps"), or "" when
-// none is near: one edit in four characters (at most two; "--fast" is not "--fps"), or one
-// name the start of the other.
+// The option of `app` a mistyped `name` most likely meant ("--step" -> "--steps"), or ""
+// (core/nearest.h).
 inline std::string nearestOption(const CLI::App& app, const std::string& name) {
-  const std::size_t mostEdits = std::clamp<std::size_t>(name.size() / 4, 1, 2);
-  std::string best;
-  std::size_t bestEdits = mostEdits + 1;
-  for (const CLI::Option* option : app.get_options()) {
-    for (const std::string& longName : option->get_lnames()) {
-      const std::string candidate = "--" + longName;
-      const bool prefix =
-          name.size() > 3 && (candidate.rfind(name, 0) == 0 || name.rfind(candidate, 0) == 0);
-      const std::size_t edits = prefix ? 1 : editDistance(name, candidate);
-      if (edits < bestEdits) best = candidate, bestEdits = edits;
-    }
-  }
-  return best;
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options())
+    for (const std::string& longName : option->get_lnames()) names.push_back("--" + longName);
+  return nearestName(name, names);
 }
 
 // The line for arguments nobody asked for: an unknown option is named, with the option it most

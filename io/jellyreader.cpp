@@ -256,7 +256,7 @@ struct ReadJelly {
 
 ReadJelly readOne(const Reader& r, const toml::table& t, const std::string& path, const World& w,
                   const State& courseState) {
-  r.onlyKeys(t, path, kJellyKeys);
+  r.onlyKeys(t, path, std::vector<std::string>(kJellyKeys.begin(), kJellyKeys.end()));
   ReadJelly out;
   out.body = readBody(r, t, path);
   out.spec.material = readMaterial(r, t, path);

@@ -157,15 +157,11 @@ Obstacle readObstacle(const Reader& r, const toml::table& t, const std::string& 
                                         "friction_dynamic", "friction_speed"};
   Obstacle o;
   o.shape = shape;
-  std::vector<const char*> known(std::begin(kCommon), std::end(kCommon));
+  std::vector<std::string> known(std::begin(kCommon), std::end(kCommon));
   if (shape == ObstacleShape::Sphere) known.insert(known.end(), {"centre", "radius"});
   if (shape == ObstacleShape::Box) known.insert(known.end(), {"lower", "upper"});
   if (shape == ObstacleShape::HalfSpace) known.insert(known.end(), {"point", "normal"});
-  for (auto&& [key, node] : t) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || key.str() == k;
-    if (!ok) r.fail(node, path + std::string(key.str()), "unknown key");
-  }
+  r.onlyKeys(t, path, known);
   auto need = [&](const char* key) {
     if (!t.get(key)) r.fail(t, path + key, "missing");
   };

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/nearest.h"
 #include "io/inputerror.h"
 #include "model/vec3.h"
 
@@ -51,13 +52,18 @@ class Reader {
                      " (" + oneLine(key) + ")");
   }
 
-  // Every key of `table` is one of `known`.
+  // Every key of `table` is one of `known`; an unknown one is named with the key it most likely
+  // meant (core/nearest.h), as the command line names an option.
   void onlyKeys(const toml::table& table, const std::string& path,
-                std::initializer_list<const char*> known) const {
+                const std::vector<std::string>& known) const {
     for (auto&& [key, node] : table) {
       bool ok = false;
-      for (const char* k : known) ok = ok || key.str() == k;
-      if (!ok) fail(node, path + std::string(key.str()), "unknown key");
+      for (const std::string& k : known) ok = ok || key.str() == k;
+      if (ok) continue;
+      const std::string meant = nearestName(std::string(key.str()), known);
+      throw InputError(name_ + ":" + std::to_string(node.source().begin.line) + ": unknown key (" +
+                       oneLine(path + std::string(key.str())) + ")" +
+                       (meant.empty() ? "" : "; did you mean " + oneLine(path + meant) + "?"));
     }
   }
 

@@ -398,7 +398,7 @@ struct Malformed {
 const Malformed kMalformed[] = {
     {"gravity = [0, 0]\n", "test.toml:1: expected 3 numbers [x, y, z] (gravity)"},
     {"gravity = [0, 0, \"down\"]\n", "test.toml:1: expected 3 numbers [x, y, z] (gravity)"},
-    {"gravty = [0, 0, -9.8]\n", "test.toml:1: unknown key (gravty)"},
+    {"gravty = [0, 0, -9.8]\n", "test.toml:1: unknown key (gravty); did you mean gravity?"},
     {"dt = 0\n", "test.toml:1: must be above 0 (dt)"},
     {"dt = -1e-3\n", "test.toml:1: must be above 0 (dt)"},
     {"dt = \"fast\"\n", "test.toml:1: expected a number (dt)"},
@@ -418,7 +418,8 @@ const Malformed kMalformed[] = {
     {"[[sphere]]\ncentre = [0, 0, 0]\n", "test.toml:1: missing (sphere[1].radius)"},
     {"[[sphere]]\ncentre = [0, 0, 0]\nradius = -1\n",
      "test.toml:3: must be above 0 (sphere[1].radius)"},
-    {"[[sphere]]\ncentre = [0, 0, 0]\nradus = 1\n", "test.toml:3: unknown key (sphere[1].radus)"},
+    {"[[sphere]]\ncentre = [0, 0, 0]\nradus = 1\n",
+     "test.toml:3: unknown key (sphere[1].radus); did you mean sphere[1].radius?"},
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 0.2\nfriction_dynamic = 0.5\n",
      "test.toml:5: must be at most friction_static (dynamic friction is the weaker) "
      "(sphere[1].friction_dynamic)"},
