@@ -6,99 +6,69 @@
 #                kernels' range and thread tests and the contacts, where an index goes wrong).
 # The window's tests (tests/CMakeLists.txt) are labelled where they are added. A parameterised
 # test's name is GoogleTest's with its parameter: "NAME  # GetParam() = VALUE" (ctest -N).
-cmake_policy(VERSION 3.25)  # IN_LIST: CTest reads this file under the old policies
-set(jello_long_tests
-  GraderPrograms.BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSays
-  Grader.PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWords
-  Grader.AgreesWithTheCorrectSolutionWithinEachWorldsOwnTolerance
-  Grader.AClassGradedInThreePartsAndMergedIsTheOneRunsReport
-  Grader.ContainsHostileSubmissionsAndHarmsNothingElse
-  GraderPrograms.ALibraryCopyOfAnySizeCrowdsOutNoneOfTheCoursesFiles
-  GraderIntegrity.PrintingReadingTheEnvironmentAndFillingDisksChangeNoGrade
-  GraderIntegrity.AnswersThatCompareAsAnythingFail
-  Report.RecommendsOnlyStepsThatCheckCallsStable
-  Report.AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep
-  Report.ASceneKeepsItsRecommendedSettingInItsOwnKeys
-  Report.CsvPlotSummaryAndRecommendations
-  "Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK4\""
-  "Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK45\""
-  ReportOrders.AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun
-  ReportProgress.CountsToItsTotalNeverPastItAndEndsItsLineBeforeTheSummary
-  Signals.AReportStoppedWhileGnuplotDrawsLeavesNoTemporaryPicture
-  Signals.AFrameBeingWrittenLeavesNoTemporaryFileBehind
-  SpecialFiles.AFifoWriterThatStallsIsRefusedAfterFiveSecondsAndASlowOneIsRead
-  SpecialFiles.AFifoIsReadAndAFifoWithoutWriterDoesNotHang
-  FullDisk.AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile
-  Cli.InATerminalTheProgressLineEndsWithItsFinalStateAndANewlineBeforeTheSummary
-  Conservation.SymplecticSchemesKeepTheEnergyOfAnUndampedCubeForTenSeconds
-  Conservation.UndampedSpringsKeepRk4EnergyOverOneSecond
-  SceneBodies.ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK
-  RandomKernels.SpecialisedAgreesWithGeneralOverAThousandSteps
-  Friction.ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt
-  FrictionState.TheJellyOnTheSlopeSticksWithEnoughFrictionAndSlidesWithout
-  Pins.EveryIntegratorKeepsItsOrderOnAScenWithPins
-  Obstacles.AJellyDroppedOnASphereEndsRestingOnItCentred)
-set(jello_sanitizer_slow_tests
-  GraderPrograms.BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSays
-  Grader.PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWords
-  Grader.AgreesWithTheCorrectSolutionWithinEachWorldsOwnTolerance
-  Grader.AClassGradedInThreePartsAndMergedIsTheOneRunsReport
-  Grader.TakesEachWorldsToleranceFromItsOwnSensitivity
-  GraderIntegrity.PrintingReadingTheEnvironmentAndFillingDisksChangeNoGrade
-  Report.RecommendsOnlyStepsThatCheckCallsStable
-  Report.AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep
-  Report.ASceneKeepsItsRecommendedSettingInItsOwnKeys
-  Report.CsvPlotSummaryAndRecommendations
-  "Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK4\""
-  "Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK45\""
-  ReportOrders.AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun
-  ReportProgress.CountsToItsTotalNeverPastItAndEndsItsLineBeforeTheSummary
-  Signals.AReportStoppedWhileGnuplotDrawsLeavesNoTemporaryPicture
-  Signals.AFrameBeingWrittenLeavesNoTemporaryFileBehind
-  FullDisk.AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile
-  HostileNames.AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing
-  Cli.InATerminalTheProgressLineEndsWithItsFinalStateAndANewlineBeforeTheSummary
-  Cli.ThreadsAreAWholeNumberAndChangeNoResult
-  Cli.StaticFindsTheCantileverAtRestAndCompareMaterialsTablesTheFourRuns
-  CheckCommand.TextJsonAndMap
-  Conservation.SymplecticSchemesKeepTheEnergyOfAnUndampedCubeForTenSeconds
-  Conservation.UndampedSpringsKeepRk4EnergyOverOneSecond
-  SceneBodies.ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK
-  SceneBodies.EveryIntegratorKeepsItsOrderOnAPinnedSphereJelly
-  SceneDrawing.TheFrictionColouringShowsStickingGreenAndSlidingOrange
-  SceneFile.ACourseWorldThroughASceneIsTheCourseWorldBitForBit
-  RandomKernels.SpecialisedAgreesWithGeneralOverAThousandSteps
-  Friction.ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt
-  FrictionState.TheJellyOnTheSlopeSticksWithEnoughFrictionAndSlidesWithout
-  Pins.EveryIntegratorKeepsItsOrderOnAScenWithPins
-  Pins.TheStabilityAnalysisSeesOnlyTheFreeCoordinates
-  Obstacles.AJellyDroppedOnASphereEndsRestingOnItCentred
-  Rk45.MeetsItsToleranceWithinAFactorOfTen
-  ShowcaseWorlds.RunOrStopCleanly
-  StepVerdict.IsChecksVerdictAndLimitAndBoundsALargeBody
-  Implicit.StableAtTenTimesRk4sLargestStableStepOnAStiffWorld
-  Implicit.EachStepSolvesBackwardEulerToItsTolerance
-  SmallAndWildStates.AVelocityOf1e100IsADivergenceNotAnEigensolverFailure
-  Elements.ACantileverSagsAsBeamTheorySaysAndConvergesAsTheMeshRefines
-  Stability.AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit
-  "Worlds/Prediction.WithinThreeQuartersAndElevenTenthsOfTheObservedLimit/stiff_2e4_w  # GetParam() = world/stress/stiff-2e4.w"
-  "Integrators/ConvergenceOrder.MatchesTheory/EULER  # GetParam() = EULER"
-  "Integrators/ConvergenceOrder.MatchesTheory/SYMPLECTIC  # GetParam() = SYMPLECTIC"
-  "Integrators/ConvergenceOrder.MatchesTheory/MIDPOINT  # GetParam() = MIDPOINT"
-  "Integrators/ConvergenceOrder.MatchesTheory/VERLET  # GetParam() = VERLET"
-  "Integrators/ConvergenceOrder.MatchesTheory/RK4  # GetParam() = RK4"
-  "Integrators/ConvergenceOrder.MatchesTheory/IMPLICIT  # GetParam() = IMPLICIT")
+# One line a test: its labels, a bar, its name.
+set(jello_labelled
+  "long sanitizers|GraderPrograms.BuildsAndGradesEveryStudentShapedProgramAsItsExpectationSays"
+  "long sanitizers|Grader.PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWords"
+  "long sanitizers|Grader.AgreesWithTheCorrectSolutionWithinEachWorldsOwnTolerance"
+  "long sanitizers|Grader.AClassGradedInThreePartsAndMergedIsTheOneRunsReport"
+  "long|Grader.ContainsHostileSubmissionsAndHarmsNothingElse"
+  "long|GraderPrograms.ALibraryCopyOfAnySizeCrowdsOutNoneOfTheCoursesFiles"
+  "long sanitizers|GraderIntegrity.PrintingReadingTheEnvironmentAndFillingDisksChangeNoGrade"
+  "long|GraderIntegrity.AnswersThatCompareAsAnythingFail"
+  "long sanitizers|Report.RecommendsOnlyStepsThatCheckCallsStable"
+  "long sanitizers|Report.AWorldsOwnSettingInASweepIsThatRowAndTheReferenceIsBelowEverySweep"
+  "long sanitizers|Report.ASceneKeepsItsRecommendedSettingInItsOwnKeys"
+  "long sanitizers|Report.CsvPlotSummaryAndRecommendations"
+  "long sanitizers|Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK4\""
+  "long sanitizers|Report/RecommendedCommands.RunAsPrintedAndReproduceTheReportedError/\"RK45\""
+  "long sanitizers|ReportOrders.AFitFarFromItsTheoryIsPutDownToTheContactsOfTheRun"
+  "long sanitizers|ReportProgress.CountsToItsTotalNeverPastItAndEndsItsLineBeforeTheSummary"
+  "long sanitizers|Signals.AReportStoppedWhileGnuplotDrawsLeavesNoTemporaryPicture"
+  "long sanitizers|Signals.AFrameBeingWrittenLeavesNoTemporaryFileBehind"
+  "long|SpecialFiles.AFifoWriterThatStallsIsRefusedAfterFiveSecondsAndASlowOneIsRead"
+  "long|SpecialFiles.AFifoIsReadAndAFifoWithoutWriterDoesNotHang"
+  "long sanitizers|FullDisk.AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile"
+  "long sanitizers|Cli.InATerminalTheProgressLineEndsWithItsFinalStateAndANewlineBeforeTheSummary"
+  "long sanitizers|Conservation.SymplecticSchemesKeepTheEnergyOfAnUndampedCubeForTenSeconds"
+  "long sanitizers|Conservation.UndampedSpringsKeepRk4EnergyOverOneSecond"
+  "long sanitizers|SceneBodies.ABarHeldAtOneEndCarriesItsWeightOnThePinsAndSagsAsOneOverK"
+  "long sanitizers|RandomKernels.SpecialisedAgreesWithGeneralOverAThousandSteps"
+  "long sanitizers|Friction.ABlockOnASlopeStaysBelowTheFrictionAngleAndSlidesAboveIt"
+  "long sanitizers|FrictionState.TheJellyOnTheSlopeSticksWithEnoughFrictionAndSlidesWithout"
+  "long sanitizers|Pins.EveryIntegratorKeepsItsOrderOnAScenWithPins"
+  "long sanitizers|Obstacles.AJellyDroppedOnASphereEndsRestingOnItCentred"
+  "sanitizers|Grader.TakesEachWorldsToleranceFromItsOwnSensitivity"
+  "sanitizers|HostileNames.AWorldNamedLikeGnuplotCodeIsDrawnAsItsNameAndRunsNothing"
+  "sanitizers|Cli.ThreadsAreAWholeNumberAndChangeNoResult"
+  "sanitizers|Cli.StaticFindsTheCantileverAtRestAndCompareMaterialsTablesTheFourRuns"
+  "sanitizers|CheckCommand.TextJsonAndMap"
+  "sanitizers|SceneBodies.EveryIntegratorKeepsItsOrderOnAPinnedSphereJelly"
+  "sanitizers|SceneDrawing.TheFrictionColouringShowsStickingGreenAndSlidingOrange"
+  "sanitizers|SceneFile.ACourseWorldThroughASceneIsTheCourseWorldBitForBit"
+  "sanitizers|Pins.TheStabilityAnalysisSeesOnlyTheFreeCoordinates"
+  "sanitizers|Rk45.MeetsItsToleranceWithinAFactorOfTen"
+  "sanitizers|ShowcaseWorlds.RunOrStopCleanly"
+  "sanitizers|StepVerdict.IsChecksVerdictAndLimitAndBoundsALargeBody"
+  "sanitizers|Implicit.StableAtTenTimesRk4sLargestStableStepOnAStiffWorld"
+  "sanitizers|Implicit.EachStepSolvesBackwardEulerToItsTolerance"
+  "sanitizers|SmallAndWildStates.AVelocityOf1e100IsADivergenceNotAnEigensolverFailure"
+  "sanitizers|Elements.ACantileverSagsAsBeamTheorySaysAndConvergesAsTheMeshRefines"
+  "sanitizers|Stability.AnUndampedCubeStartingDeformedIsNeverCalledStableNearItsLimit"
+  "sanitizers|Worlds/Prediction.WithinThreeQuartersAndElevenTenthsOfTheObservedLimit/stiff_2e4_w  # GetParam() = world/stress/stiff-2e4.w"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/EULER  # GetParam() = EULER"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/SYMPLECTIC  # GetParam() = SYMPLECTIC"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/MIDPOINT  # GetParam() = MIDPOINT"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/VERLET  # GetParam() = VERLET"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/RK4  # GetParam() = RK4"
+  "sanitizers|Integrators/ConvergenceOrder.MatchesTheory/IMPLICIT  # GetParam() = IMPLICIT")
 # set_tests_properties, as CTest reads this file (set_property(TEST) is not there), sets a test's
-# labels whole: each gets both of its labels at once.
-set(jello_labelled ${jello_long_tests} ${jello_sanitizer_slow_tests})
-list(REMOVE_DUPLICATES jello_labelled)
-foreach(jello_name IN LISTS jello_labelled)
-  set(jello_labels "")
-  if("${jello_name}" IN_LIST jello_long_tests)
-    list(APPEND jello_labels long)
-  endif()
-  if("${jello_name}" IN_LIST jello_sanitizer_slow_tests)
-    list(APPEND jello_labels sanitizers)
-  endif()
+# labels whole: all of them at once.
+foreach(jello_entry IN LISTS jello_labelled)
+  string(FIND "${jello_entry}" "|" jello_bar)
+  string(SUBSTRING "${jello_entry}" 0 ${jello_bar} jello_labels)
+  math(EXPR jello_bar "${jello_bar} + 1")
+  string(SUBSTRING "${jello_entry}" ${jello_bar} -1 jello_name)
+  string(REPLACE " " ";" jello_labels "${jello_labels}")
   set_tests_properties("${jello_name}" PROPERTIES LABELS "${jello_labels}")
 endforeach()
