@@ -99,7 +99,7 @@ while read -r role source; do
        else g++ $cxx -c "./$source" -o "/tmp/o/$n.o"; fi ;;
   esac
   if [ $? -ne 0 ]; then
-    [ "$role" = lib ] || broken=1
+    [ "$role" = lib ] || { broken=1; break; }
   elif [ "$role" = lib ]; then libs="$libs /tmp/o/$n.o"
   else roots="$roots /tmp/o/$n.o"
   fi
@@ -319,9 +319,12 @@ std::vector<std::string> writeFlags(const Tree& tree, const Attempt& attempt,
   writeFileWhole((work / "probeflags").string(),
                  attempt.mode == Mode::Program ? "-DJELLO_GRADER_PROGRAM\n" : "\n",
                  Existing::Replace);
-  std::string list = "probe " + std::string(kProbeName) + "\nroot physics.cpp\n";
+  // The files the program needs first, the student's own before the probe: the first that does
+  // not compile ends the attempt (its error is the one reported; the rest would cost time only).
+  std::string list = "root physics.cpp\n";
   if (attempt.mode == Mode::Program && tree.mainFile != "physics.cpp")
     list += "root " + tree.mainFile + "\n";
+  list += "probe " + std::string(kProbeName) + "\n";
   for (const auto& source : tree.sources) {
     if (source == "physics.cpp" || source == tree.mainFile) continue;
     // Alone, physics.cpp is linked with the probe's main(): no other main() may come in.
@@ -497,6 +500,20 @@ Compiled buildAttempt(const Tree& tree, const Attempt& attempt, const Scratch& s
   return compiled;
 }
 
+// A token missing in physics.cpp itself (a ';', a brace), as written and leniently alike: no
+// other attempt changes physics.cpp, and no header puts a token back, so none is tried.
+const std::string kUnmendable =
+    "a token is missing in physics.cpp itself, as written and leniently alike: no other attempt "
+    "(the course's headers) can mend that, so none was tried";
+bool unmendable(const std::string& firstError) {
+  if (firstError.rfind("physics.cpp:", 0) != 0) return false;
+  for (const char* token : {"';'", "'}'", "')'", "']'", "','", "'{'"}) {
+    if (firstError.find(std::string(": error: expected ") + token) != std::string::npos)
+      return true;
+  }
+  return false;
+}
+
 // One attempt, as written, then leniently where that did not compile. True when it built a
 // program that reaches the grader (`result` then says how); `programError` keeps why the whole
 // program was not graded, for the notes of a later attempt or the diagnosis.
@@ -512,6 +529,11 @@ bool tryAttempt(const Tree& tree, Attempt attempt, const Scratch& scratch,
         "--- " + std::string(attempt.words) + (lenient ? ", leniently" : "") + ": " + compiled.log;
     if (result.diagnosis.empty() && !compiled.built) result.diagnosis = compiled.firstError;
     if (!compiled.built) {
+      if (lenient && compiled.firstError == asWritten && unmendable(asWritten)) {
+        result.log += "--- the other attempts: not tried, " + kUnmendable + "\n";
+        result.notes.push_back(kUnmendable);
+        return false;
+      }
       // Leniency cannot mend a changed API: the grader's own call does not compile.
       bool apiChanged = compiled.firstError.rfind(kApiChanged, 0) == 0;
       if (attempt.mode == Mode::Program && (lenient || apiChanged))
@@ -583,6 +605,7 @@ BuildResult buildSubmission(const Submission& submission, const std::string& pro
       continue;
     }
     if (tryAttempt(tree, attempt, scratch, probePath, result, programError)) break;
+    if (!result.notes.empty() && result.notes.back() == kUnmendable) break;
   }
   // Nothing built: a whole program that built but never reached the grader says why first
   // (physics.cpp alone then failed for want of what that program's setup defines).

@@ -2,11 +2,14 @@
 // correct programs, 1e-14 m apart at step 120, can be a metre apart at step 2000), so the
 // tolerance is the world's own: the spread of this project's run when its start is nudged by one
 // ulp, and a world is judged at the last checkpoint where that spread is still small.
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <map>
 #include <mutex>
 #include <random>
 
+#include "core/assert.h"
 #include "grader/checkkit.h"
 #include "solver/physics.h"
 #include "solver/simulation.h"
@@ -27,11 +30,15 @@ double rms(const State& a, const State& b) {
   return std::sqrt(sum / kNumPoints);
 }
 
+// False once the grading is over (stopAgreementReferences): a reference still being computed
+// then ends at its next checkpoint.
+std::atomic<bool> referencesWanted{true};
+
 std::vector<State> runCheckpoints(const WorldFile& file, std::string* diverged) {
   Model model = makeModel(file.world, file.state);
   Simulation run(model, file.state, file.run);
   std::vector<State> states;
-  for (int c = 0; c < kCheckpoints; ++c) {
+  for (int c = 0; c < kCheckpoints && referencesWanted; ++c) {
     RunOutcome outcome = run.advance(kCheckpointSteps);
     if (!outcome.ran()) {
       *diverged = outcome.reason;
@@ -138,15 +145,21 @@ void failEulerDriftAlone(const std::vector<std::pair<std::string, WorldFile>>& w
 }  // namespace
 
 AgreementReference agreementReference(const WorldFile& file) {
-  AgreementReference ref;
-  ref.checkpoints = runCheckpoints(file, &ref.diverged);
-  ref.tolerance.assign(ref.checkpoints.size(), kFloor);
-  for (double toward : {INFINITY, -INFINITY}) {
+  // The three runs are independent: the nudged ones in threads of their own.
+  auto nudgedRun = [&file](double toward) {
     WorldFile nudged = file;
     for (int n = 0; n < kNumCoords; ++n)
       nudged.state.p()[n] = std::nextafter(file.state.p()[n], toward);
     std::string ignored;
-    std::vector<State> states = runCheckpoints(nudged, &ignored);
+    return runCheckpoints(nudged, &ignored);
+  };
+  std::future<std::vector<State>> up = std::async(std::launch::async, nudgedRun, INFINITY),
+                                   down = std::async(std::launch::async, nudgedRun, -INFINITY);
+  AgreementReference ref;
+  ref.checkpoints = runCheckpoints(file, &ref.diverged);
+  ref.tolerance.assign(ref.checkpoints.size(), kFloor);
+  for (std::future<std::vector<State>>* run : {&up, &down}) {
+    std::vector<State> states = run->get();
     for (std::size_t c = 0; c < ref.checkpoints.size(); ++c) {
       double spread = c < states.size() ? rms(states[c], ref.checkpoints[c]) : INFINITY;
       ref.tolerance[c] = std::fmax(ref.tolerance[c], kSpreadFactor * spread);
@@ -158,9 +171,10 @@ AgreementReference agreementReference(const WorldFile& file) {
   return ref;
 }
 
-constexpr double kAgreementScale = 12;  // times kProbeSeconds: 60 CPU seconds a world
+namespace {
 
-CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) {
+// The worlds of the check: the course's five, then the two unseen ones of the seed.
+std::vector<std::pair<std::string, WorldFile>> agreementWorlds(const GradingSetup& setup) {
   std::vector<std::pair<std::string, WorldFile>> worlds;
   for (const char* name : {"rotate.w", "jello.w", "moveLeft.w", "skewedCorner.w", "gravity.w"}) {
     worlds.emplace_back(name, readWorldFile(setup.worldDir + "/" + name));
@@ -170,19 +184,45 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
                               static_cast<unsigned long long>(setup.seed)),
                         unseenWorld(setup.seed, which));
   }
-  // The references: the same for every submission of a run.
-  static std::mutex lock;
-  static std::map<std::string, AgreementReference> references;
+  return worlds;
+}
+
+// A world's reference, the same for every submission of a run: computed once, in a thread of
+// its own, from the first time it is asked for (startAgreementReferences asks early).
+std::mutex referencesLock;
+std::map<std::string, std::shared_future<AgreementReference>> references;
+
+std::shared_future<AgreementReference> referenceOf(const std::string& name,
+                                                   const WorldFile& file) {
+  std::lock_guard<std::mutex> hold(referencesLock);
+  JELLO_ASSERT(referencesWanted);
+  auto found = references.find(name);
+  if (found == references.end())
+    found = references.emplace(name, std::async(std::launch::async, agreementReference, file))
+                .first;
+  return found->second;
+}
+
+}  // namespace
+
+void startAgreementReferences(const GradingSetup& setup) {
+  for (const auto& [name, file] : agreementWorlds(setup)) referenceOf(name, file);
+}
+
+void stopAgreementReferences() {
+  referencesWanted = false;
+  std::lock_guard<std::mutex> hold(referencesLock);
+  for (auto& [name, reference] : references) reference.wait();
+  references.clear();
+}
+
+constexpr double kAgreementScale = 12;  // times kProbeSeconds: 60 CPU seconds a world
+
+CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) {
+  const std::vector<std::pair<std::string, WorldFile>> worlds = agreementWorlds(setup);
+  startAgreementReferences(setup);
   std::vector<Judged> judgedWorlds;
   for (const auto& [name, file] : worlds) {
-    AgreementReference* ref;
-    {
-      std::lock_guard<std::mutex> hold(lock);
-      auto found = references.find(name);
-      if (found == references.end())
-        found = references.emplace(name, agreementReference(file)).first;
-      ref = &found->second;
-    }
     Script script;
     script.world(file.world, file.run, file.state);
     for (int c = 0; c < kCheckpoints; ++c) {
@@ -192,7 +232,7 @@ CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) 
     // 2000 steps of a slow but right program (30 ms a step) in CPU seconds: a busy machine
     // takes none of them; the wall clock is the backstop (probe.h).
     ProbeRun run = runProbe(probe, script, {kAgreementScale});
-    judgedWorlds.push_back(judgeWorld(name, *ref, run, 0));
+    judgedWorlds.push_back(judgeWorld(name, referenceOf(name, file).get(), run, 0));
   }
   failEulerDriftAlone(worlds, judgedWorlds);
   CheckResult result = passed("agreement", "");

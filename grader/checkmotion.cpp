@@ -77,6 +77,13 @@ struct Rk4Variant {
   std::string name;  // "" for classic RK4
 };
 
+// The steps a stage may wrongly be taken with: a quarter, half, whole or double step.
+struct StageStep {
+  double times;  // of dt
+  const char* words;
+};
+constexpr StageStep kStageSteps[] = {{0.5, "dt/2"}, {1.0, "dt"}, {0.25, "dt/4"}, {2.0, "2dt"}};
+
 std::vector<Rk4Variant> rk4Variants() {
   static const char* const stageNames[5] = {"", "", "second stage (k2)", "third stage (k3)",
                                             "fourth stage (k4)"};
@@ -88,14 +95,15 @@ std::vector<Rk4Variant> rk4Variants() {
       "read the global jello instead of its argument?";
   for (int j = 2; j <= 4; ++j) {
     for (int m = 0; m < j; ++m) {
-      for (double c : {0.5, 1.0}) {
+      for (std::size_t n = 0; n < std::size(kStageSteps); ++n) {
+        const double c = kStageSteps[n].times;
         Rk4Variant v;
-        if ((m == 0 && c == 1.0) || (m == v.m[j] && c == v.c[j])) continue;
+        if ((m == 0 && n > 0) || (m == v.m[j] && c == v.c[j])) continue;
         v.m[j] = m;
         v.c[j] = c;
         v.name = "RK4's " + std::string(stageNames[j]) + " is evaluated at " +
                  (m == 0 ? std::string("the start of the step")
-                         : textf("state + %s*k%d", c == 1 ? "dt" : "dt/2", m)) +
+                         : textf("state + %s*k%d", kStageSteps[n].words, m)) +
                  textf("; classic RK4 takes state + %s*k%d", j == 4 ? "dt" : "dt/2", j - 1);
         variants.push_back(v);
       }
@@ -172,8 +180,10 @@ std::string whichRk4(const std::string& probe, const WorldFile& busy, const std:
     }
     if (relativeDifference(result, y, pScale, vScale) <= kOneStepExact) return variants[v].name;
   }
-  return "one RK4 step is not classic RK4 on its own accelerations, nor RK4 with one stage at a "
-         "usual wrong state";
+  return "one RK4 step is not classic RK4 on its own accelerations, nor RK4 with one stage (k2, "
+         "k3 or k4) at another state (the start of the step, or state + dt/4, dt/2, dt or 2dt "
+         "times an earlier k), nor RK4 on the accelerations of the start: compare each stage's "
+         "state and the final sum, dt/6 (k1 + 2 k2 + 2 k3 + k4), with the course's";
 }
 
 // The world the integrators' checks step from: busyWorld, unless the submission's

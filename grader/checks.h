@@ -52,6 +52,14 @@ struct CheckInfo {
 const std::vector<CheckInfo>& checkTable();
 bool isCheck(const std::string& name);
 
+// Starts computing the references of the check "agreement" (this project's runs of its worlds,
+// the same for every submission) in threads of their own, so that they are ready when the first
+// submission has been built; the check waits for those not yet done.
+void startAgreementReferences(const GradingSetup& setup);
+// Ends those still being computed (at their next checkpoint) and waits for their threads: once
+// the grading is over, before the program ends.
+void stopAgreementReferences();
+
 // Runs check `name` (not "builds") on the probe at `probePath`.
 CheckResult runCheck(const std::string& name, const std::string& probePath,
                      const GradingSetup& setup);

@@ -323,6 +323,22 @@ std::vector<std::string> rewriteForVisualCpp(const fs::path& build, const std::s
   return notes;
 }
 
+// What a function GCC names (its line "FILE: In member function 'Vec& Vec::operator+=(...)':")
+// gets where it ends without a return: "return {};" (a value built from nothing), or for a
+// member function returning a reference "return *this;" (what such operators return); none for
+// another function returning a reference, which no statement returns sensibly.
+namespace {
+const char* missingReturn(const std::string& function) {
+  std::size_t open = function.find('\''), call = function.find('(', open + 1);
+  if (open == std::string::npos || call == std::string::npos) return "return {}; ";
+  std::size_t nameStart = function.rfind(' ', call);
+  bool reference = nameStart != std::string::npos && nameStart > open + 1 &&
+                   function[nameStart - 1] == '&';
+  if (!reference) return "return {}; ";
+  return function.find(": In member function '") != std::string::npos ? "return *this; " : nullptr;
+}
+}  // namespace
+
 // A C++ function that returns a value but ends without a return statement: Visual C++ returns
 // whatever the register holds, and the programs that do it never use the value; GCC's optimiser
 // takes the end as unreachable and runs into the next function. Each such end, where GCC's
@@ -332,7 +348,11 @@ std::vector<std::string> rewriteMissingReturns(const fs::path& build, const std:
   std::map<std::string, std::vector<std::string>> files;
   std::set<std::string> done;
   std::istringstream logLines(log);
+  std::string function;  // GCC's line before the warning: "FILE: In member function '...':"
   for (std::string entry; std::getline(logLines, entry);) {
+    if (entry.find(": In function '") != std::string::npos ||
+        entry.find(": In member function '") != std::string::npos)
+      function = entry;
     if (entry.rfind("./", 0) != 0 ||
         (entry.find(": warning: no return statement in function returning non-void") ==
              std::string::npos &&
@@ -358,14 +378,17 @@ std::vector<std::string> rewriteMissingReturns(const fs::path& build, const std:
     if (line == 0 || line > lines.size() || column == 0 || column > lines[line - 1].size() ||
         lines[line - 1][column - 1] != '}')
       continue;
-    lines[line - 1].insert(column - 1, "return {}; ");
+    const char* added = missingReturn(function);
+    if (!added) continue;
+    lines[line - 1].insert(column - 1, added);
     places.push_back(path + ":" + lineText);
   }
   if (!places.empty()) {
     std::string list;
     for (const auto& place : places) list += (list.empty() ? "" : ", ") + place;
     notes.push_back("functions that return a value end without a return statement (" + list +
-                    "): \"return {};\" added there (Visual C++ returns an undefined value; GCC's "
+                    "): \"return {};\" added there, \"return *this;\" in a member function "
+                    "returning a reference (Visual C++ returns an undefined value; GCC's "
                     "optimiser runs into the next function)");
   }
   for (const auto& [path, lines] : files) {

@@ -181,6 +181,8 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
   std::cerr << textf("grading %zu submission%s, %d at a time; unseen worlds from seed %llu\n",
                      submissions.size(), submissions.size() == 1 ? "" : "s", jobs,
                      static_cast<unsigned long long>(setup.seed));
+  if (std::find(checks.begin(), checks.end(), "agreement") != checks.end())
+    startAgreementReferences(setup);
   std::vector<Graded> graded(submissions.size());
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex printing;
@@ -199,6 +201,7 @@ int gradeAll(const std::vector<Submission>& submissions, const std::vector<std::
   std::vector<std::thread> threads;
   for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
   for (auto& thread : threads) thread.join();
+  stopAgreementReferences();
   writeReport(dir, graded, setup.seed, setup.strict, existing == Existing::Replace);
   std::cout << dir << "/summary.md, summary.csv, junit.xml; a report.md per submission\n";
   return 0;

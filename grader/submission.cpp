@@ -99,7 +99,7 @@ class StudentRights {
 struct CopyBudget {
   int entries = 0, files = 0, dataFiles = 0;
   std::uintmax_t bytes = 0, dataBytes = 0;
-  bool full = false, dataFull = false;
+  bool full = false, dataFull = false, bigSkipped = false;
 };
 
 // The whole of a regular file open at `fd`, up to `most` bytes; false when larger or unreadable.
@@ -181,8 +181,15 @@ void copyFile(int fd, const std::string& name, const fs::path& to, std::uintmax_
     }
     return;
   }
-  if (budget.dataFull || size > kMostDataFileBytes || kBuildProducts.count(lower(extension)))
+  if (budget.dataFull || kBuildProducts.count(lower(extension))) return;
+  if (size > kMostDataFileBytes) {
+    if (!budget.bigSkipped)
+      notes.push_back("files beside the source over " + std::to_string(kMostDataFileBytes >> 20) +
+                      " MB are left out (the first: " + name +
+                      "): a program that reads one as it starts cannot find it");
+    budget.bigSkipped = true;
     return;
+  }
   std::string bytes;
   budget.dataBytes += size;
   if (++budget.dataFiles > kMostDataFiles || budget.dataBytes > kMostDataBytes ||

@@ -91,6 +91,7 @@ TEST(Grader, PassesTheCorrectSolutionAndGivesEveryMutantExactlyItsDiagnosisInWor
   for (const char* line : {
            "bend-rest/bend (FAIL): rest length 0.142857143 m measured on the bend spring",
            "rk4-stage3/rk4 (FAIL): RK4's third stage (k3) is evaluated at state + dt/2*k1",
+           "rk4-quarter/rk4 (FAIL): RK4's third stage (k3) is evaluated at state + dt/4*k2",
            "field-order/field (FAIL): the field's nodes are read in the wrong order",
            "plane-side/plane (FAIL): plane: pushes points on its positive side",
            "walls-some/walls (FAIL): walls x = +2, y = +2, z = +2: no force on points across it",

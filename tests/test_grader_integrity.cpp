@@ -135,6 +135,23 @@ TEST(GraderIntegrity, PrintingReadingTheEnvironmentAndFillingDisksChangeNoGrade)
   removeTree(root);
 }
 
+// What the compiler writes is bounded in total, not per file only: a program whose object and
+// executable are 150 MB each (a data section of zeros) does not fit the sandbox's 256 MB /tmp,
+// and the build fails saying so, on every attempt; nothing of it reaches the host's disk.
+TEST(GraderIntegrity, ABuildWhoseOutputOverflowsTheSandboxFailsAtItsTotalBound) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir(), report = root + "/report";
+  std::string big = attack(root, "big-output", "",
+                           "asm(\".pushsection .data\\n.fill 150000000, 1, 0\\n.popsection\");\n");
+  CommandResult r = grade({"-o", report, "--seed", "5", "--checks", "rest", big});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readSummary(report)["big-output"]["builds"], "FAIL");
+  std::string log = readText(report + "/big-output/build.log");
+  EXPECT_NE(log.find("No space left on device"), std::string::npos) << log.substr(0, 2000);
+  EXPECT_LT(fs::file_size(report + "/big-output/build.log"), 1u << 20);
+  removeTree(root);
+}
+
 // Archives and links: a .tar.gz of hard links that unpacks to 80 MB from a few kB is refused;
 // a submission named through a symbolic link is refused by name; a file the submission's owner
 // cannot read, hard-linked into the folder, is not read when the grader runs as root.

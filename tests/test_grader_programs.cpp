@@ -157,12 +157,16 @@ TEST(GraderPrograms, ALibraryCopyOfAnySizeCrowdsOutNoneOfTheCoursesFiles) {
   fs::create_directories(hand + "/aaa-library/include");
   for (int n = 0; n < 2100; ++n)
     writeText(hand + "/aaa-library/include/h" + std::to_string(n) + ".h", "/* a header */\n");
+  // A file the program may read, too large to take: left out, and said.
+  writeText(hand + "/huge.ppm", std::string(9u << 20, 'x'));
   CommandResult r = grade({"-o", root + "/report", "--seed", "5", "--checks", "rest", hand});
   ASSERT_EQ(r.status, 0) << r.err;
   Report report = readReport(root + "/report/course/report.md");
   EXPECT_EQ(report.rows["builds"].first, "pass") << report.rows["builds"].second;
   EXPECT_EQ(report.rows["rest"].first, "pass") << report.rows["rest"].second;
   EXPECT_NE(report.notes.find("more source than the grader takes"), std::string::npos)
+      << report.notes;
+  EXPECT_NE(report.notes.find("over 8 MB are left out (the first: huge.ppm)"), std::string::npos)
       << report.notes;
   removeTree(root);
 }
