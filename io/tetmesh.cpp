@@ -3,6 +3,7 @@
 #include "io/tetmesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -49,8 +50,12 @@ class Words {
     return false;
   }
   [[noreturn]] void fail(const std::string& what, const std::string& field) const {
-    throw InputError(name_ + ":" + std::to_string(line_) + ": " + what + " (" + field + ")");
+    failAt(line_, what, field);
   }
+  [[noreturn]] void failAt(int line, const std::string& what, const std::string& field) const {
+    throw InputError(name_ + ":" + std::to_string(line) + ": " + what + " (" + field + ")");
+  }
+  int line() const { return line_; }
   // Word w of the line as a whole number from lowest to highest.
   long long whole(const std::vector<std::string_view>& words, std::size_t w, long long lowest,
                   long long highest, const std::string& field) const {
@@ -116,6 +121,7 @@ NodeFile readNodes(const std::string& text, const std::string& name) {
   const long long markers = words.size() > 3 ? in.whole(words, 3, 0, 1, "boundary markers") : 0;
   in.noMore(words, 4, "a .node header holds");
   NodeFile out;
+  std::map<std::array<double, 3>, long long> placed;  // where each point is: its number
   // Room for what the text can hold (a line is at least 8 bytes), not what the header claims.
   out.points.reserve(std::min<std::size_t>(count, text.size() / 8));
   for (long long i = 0; i < count; ++i) {
@@ -129,10 +135,46 @@ NodeFile readNodes(const std::string& text, const std::string& name) {
     const Vec3 x{in.coordinate(words, 1, field + " x"), in.coordinate(words, 2, field + " y"),
                  in.coordinate(words, 3, field + " z")};
     in.noMore(words, 4 + attributes + markers, "the header gives a point");
+    auto [at, fresh] = placed.try_emplace({x.x, x.y, x.z}, i + out.firstNumber);
+    if (!fresh)
+      in.fail("at the same place as point " + std::to_string(at->second) +
+                  " (two points at one place: their tetrahedra would not be joined)",
+              field);
     out.points.push_back(x);
   }
   if (in.next(&words)) in.fail("more points than the header's " + std::to_string(count), "header");
   return out;
+}
+
+// Two tetrahedra on one face overlap unless they lie on its two sides; a face of three or more
+// overlaps too. Refused at the later tetrahedron's line.
+void refuseOverlaps(const Words& in, const NodeFile& nodes, const std::vector<Tet>& tets,
+                    const std::vector<int>& lines, long long firstNumber) {
+  std::map<std::array<int, 3>, std::pair<int, int>> faceOf;  // a face, sorted: a tetrahedron, its
+                                                             // fourth node
+  for (int e = 0; e < static_cast<int>(tets.size()); ++e) {
+    const Tet& t = tets[e];
+    for (int opposite = 0; opposite < 4; ++opposite) {
+      std::array<int, 3> face;
+      for (int c = 0, f = 0; c < 4; ++c)
+        if (c != opposite) face[f++] = t[c];
+      std::sort(face.begin(), face.end());
+      auto [at, fresh] = faceOf.try_emplace(face, e, t[opposite]);
+      if (fresh) continue;
+      const Vec3 a = nodes.points[face[0]], normal = cross(nodes.points[face[1]] - a,
+                                                           nodes.points[face[2]] - a);
+      const double mine = dot(normal, nodes.points[t[opposite]] - a),
+                   theirs = dot(normal, nodes.points[at->second.second] - a);
+      const std::string other = std::to_string(at->second.first + firstNumber);
+      if (at->second.first < 0)
+        in.failAt(lines[e], "a face that two other tetrahedra share already", "tetrahedron " +
+                  std::to_string(e + firstNumber));
+      if ((mine > 0) == (theirs > 0))
+        in.failAt(lines[e], "overlaps tetrahedron " + other + " (both on the same side of the "
+                  "face they share)", "tetrahedron " + std::to_string(e + firstNumber));
+      at->second.first = -1;  // taken by two: a third is refused
+    }
+  }
 }
 
 std::vector<Tet> readElements(const std::string& text, const std::string& name,
@@ -151,6 +193,8 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
   const long long first = nodes.firstNumber;
   const long long last = first + static_cast<long long>(nodes.points.size()) - 1;
   std::vector<Tet> tets;
+  std::vector<int> lines;                               // each tetrahedron's line
+  std::map<std::array<int, 4>, long long> given;        // each tetrahedron's nodes, sorted: its number
   tets.reserve(std::min<std::size_t>(count, text.size() / 8));
   long long firstNumber = 0;
   for (long long i = 0; i < count; ++i) {
@@ -183,10 +227,18 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
     if (!(std::fabs(volume) > 1e-12 * edge * edge * edge))
       in.fail("a tetrahedron of no volume (its four points lie in a plane)", field);
     if (volume < 0) std::swap(t[2], t[3]), volume = -volume;
+    std::array<int, 4> key = t;
+    std::sort(key.begin(), key.end());
+    if (auto [at, fresh] = given.try_emplace(key, i + firstNumber); !fresh)
+      in.fail("the same four nodes as tetrahedron " + std::to_string(at->second) +
+                  " (a tetrahedron given twice)",
+              field);
     tets.push_back(t);
+    lines.push_back(in.line());
   }
   if (in.next(&words))
     in.fail("more tetrahedra than the header's " + std::to_string(count), "header");
+  refuseOverlaps(in, nodes, tets, lines, firstNumber);
   return tets;
 }
 

@@ -27,7 +27,10 @@ std::string elementFileOf(const std::string& nodePath);
 // numbered out of order, fewer lines than the header says or more, more points than
 // kMostScenePoints or tetrahedra than kMostMeshTetrahedra, tetrahedra of other than 4 nodes (a
 // quadratic mesh), a node number the .node file does not have, a tetrahedron with a node twice or
-// of no volume (under 1e-12 of its edges' cube), and a point no tetrahedron uses.
+// of no volume (under 1e-12 of its edges' cube), a point no tetrahedron uses, two points at one
+// place, a tetrahedron given twice (its nodes in any order), two tetrahedra on the same side of
+// a face they share, and a face of three or more tetrahedra. (Two tetrahedra that cross without
+// sharing a face are not looked for.)
 Body readTetMesh(const std::string& nodePath);
 // The two files' texts alone: false with *why (one line naming the file) when either cannot be
 // read (missing, not a regular file, over kMostTetMeshBytes).

@@ -523,6 +523,34 @@ TEST(TetMeshes, MalformedFilesAreRefusedWithTheirLineAndField) {
             "cube.1.node:0: no header: expected <points> 3 <attributes> <markers> (header)");
 }
 
+// What would make a body of wrong stiffness and mass or holes in its surface, refused at its
+// line: two points at one place, a tetrahedron given twice (in any order of its nodes), two
+// tetrahedra on the same side of the face they share, a face of three tetrahedra.
+TEST(TetMeshes, CoincidentPointsRepeatedAndOverlappingTetrahedraAreRefused) {
+  const std::string nodes = kCubeNodes, elements = kCubeElements;
+  auto replace = [](std::string text, const std::string& from, const std::string& to) {
+    return text.replace(text.find(from), from.size(), to);
+  };
+  EXPECT_EQ(refusal(replace(nodes, "8 1 1 1", "8 0 1 1"), elements),
+            "cube.1.node:10: at the same place as point 7 (two points at one place: their "
+            "tetrahedra would not be joined) (point 8)");
+  EXPECT_EQ(refusal(nodes, replace(replace(elements, "5 4 0", "6 4 0"), "5 2 3 5 8\n",
+                                   "5 2 3 5 8\n6 8 5 3 2\n")),
+            "cube.1.ele:7: the same four nodes as tetrahedron 5 (a tetrahedron given twice) "
+            "(tetrahedron 6)");
+  // A corner tetrahedron and one beside it, below the face z = 0 they share or above it.
+  const std::string corner = "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  const std::string below = "5 3 0 0\n" + corner + "5 0.2 0.2 -1\n",
+                    above = "5 3 0 0\n" + corner + "5 0.2 0.2 1\n",
+                    both = "6 3 0 0\n" + corner + "5 0.2 0.2 -1\n6 0.2 0.2 1\n";
+  EXPECT_EQ(refusal(below, "2 4 0\n1 1 2 3 4\n2 3 2 1 5\n"), "accepted");
+  EXPECT_EQ(refusal(above, "2 4 0\n1 1 2 3 4\n2 3 2 1 5\n"),
+            "cube.1.ele:3: overlaps tetrahedron 1 (both on the same side of the face they share) "
+            "(tetrahedron 2)");
+  EXPECT_EQ(refusal(both, "3 4 0\n1 1 2 3 4\n2 3 2 1 5\n3 1 2 3 6\n"),
+            "cube.1.ele:4: a face that two other tetrahedra share already (tetrahedron 3)");
+}
+
 // The reader on 3,000 random corruptions of the cube's files (bytes replaced, inserted or cut,
 // in either file): each is read or refused with one line naming its file, never a crash (the
 // sanitizer build runs this too).
