@@ -18,6 +18,7 @@
 
 #include "graphics/panelstate.h"
 #include "io/input.h"
+#include "io/scenereader.h"
 #include "model/model.h"
 
 namespace jello {
@@ -337,6 +338,23 @@ void traceItem(Viewer& v, const char* label) {
   if (last == place) return;
   last = place;
   std::fprintf(stderr, "panel-trace: %s %s\n", widgetName(label).c_str(), place.c_str());
+}
+
+bool frictionFields(Viewer& v, const std::string& id, Friction* friction, bool speed) {
+  const Friction before = *friction;
+  bool changed =
+      numberField(v, ("static friction##" + id + "mus").c_str(), &friction->muStatic, 0, kMostFriction);
+  changed |= numberField(v, ("dynamic friction##" + id + "mud").c_str(), &friction->muDynamic, 0,
+                         kMostFriction);
+  if (speed)
+    changed |= numberField(v, ("friction speed, m/s##" + id + "eps").c_str(), &friction->speed, 0,
+                           kLargestSceneNumber, true);
+  if (const auto fault = frictionFault(*friction)) {
+    v.say(std::string(fault->key) + " " + fault->why);
+    *friction = before;
+    return false;
+  }
+  return changed;
 }
 
 bool numberField(Viewer& v, const char* label, double* value, double lowest, double highest,

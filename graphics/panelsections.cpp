@@ -257,12 +257,7 @@ void contactSection(Viewer& v) {
   if (d.scene.bodyContact) {
     BodyContactSpec& c = *d.scene.bodyContact;
     c.spring = {d.world.kCollision, d.world.dCollision};  // the reader's: [contact]'s spring
-    changed |=
-        numberField(v, "static friction##contact.mus", &c.friction.muStatic, 0, kMostFriction);
-    changed |= numberField(v, "dynamic friction##contact.mud", &c.friction.muDynamic, 0,
-                           c.friction.muStatic);
-    changed |= numberField(v, "friction speed, m/s##contact.eps", &c.friction.speed, 0,
-                           kLargestSceneNumber, true);
+    changed |= frictionFields(v, "contact.", &c.friction, true);
   }
   ImGui::PopItemWidth();
   if (changed) draftChanged(v, true);

@@ -90,6 +90,10 @@ bool numberField(Viewer& v, const char* label, double* value, double lowest, dou
 bool integerField(Viewer& v, const char* label, int* value, int lowest, int highest);
 bool vectorField(Viewer& v, const char* shown, const std::string& name, Vec3* value,
                  double largest);
+// Friction's fields (IDs `id` + mus, mud and, with `speed`, eps), kept to friction's rule
+// (model/obstacle.h frictionFault, the reader's): a value that breaks it is refused and said, as
+// the reader would; true when one changed.
+bool frictionFields(Viewer& v, const std::string& id, Friction* friction, bool speed);
 
 // The sections (panelsections.cpp, panelworld.cpp).
 void runSection(Viewer& v);

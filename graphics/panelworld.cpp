@@ -53,10 +53,7 @@ bool obstacleFields(Viewer& v, Obstacle& o, int i) {
       numberField(v, name("stiffness, N/m", "k").c_str(), &o.spring.k, 0, kLargestSceneNumber);
   changed |=
       numberField(v, name("damping, N s/m", "d").c_str(), &o.spring.d, 0, kLargestSceneNumber);
-  changed |= numberField(v, name("static friction", "mus").c_str(), &o.friction.muStatic, 0,
-                         kMostFriction);
-  changed |= numberField(v, name("dynamic friction", "mud").c_str(), &o.friction.muDynamic, 0,
-                         o.friction.muStatic);
+  changed |= frictionFields(v, id, &o.friction, false);
   return changed;
 }
 

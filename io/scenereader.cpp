@@ -12,6 +12,7 @@
 #include <iterator>
 #include <memory>
 
+#include "core/assert.h"
 #include "core/readfile.h"
 #include "io/fieldrecipe.h"
 #include "io/jellyreader.h"
@@ -132,12 +133,12 @@ Friction readFriction(const Reader& r, const toml::table& t, const std::string& 
   f.muStatic = r.number(t, path, "friction_static", 0).value_or(0);
   f.muDynamic = r.number(t, path, "friction_dynamic", 0).value_or(f.muStatic);
   f.speed = r.number(t, path, "friction_speed", 0, true).value_or(kDefaultFrictionSpeed);
-  if (f.muStatic > kMostFriction)
-    r.fail(*t.get("friction_static"), path + "friction_static",
-           "must be at most " + std::to_string(static_cast<int>(kMostFriction)));
-  if (f.muDynamic > f.muStatic)
-    r.fail(*t.get("friction_dynamic"), path + "friction_dynamic",
-           "must be at most friction_static (dynamic friction is the weaker)");
+  if (const auto fault = frictionFault(f)) {
+    // The key that breaks the rule is one given: the others' defaults keep it.
+    const toml::node* given = t.get(fault->key);
+    JELLO_ASSERT(given != nullptr);
+    r.fail(*given, path + fault->key, fault->why);
+  }
   return f;
 }
 

@@ -22,9 +22,6 @@ constexpr std::size_t kMostSceneBytes = 1 << 20;
 // Every number in a scene is at most this in magnitude (m, N/m, kg, ...): with it, no force
 // of a scene overflows to infinity, where inf * 0 would make a NaN of a contact's zero axis.
 constexpr double kLargestSceneNumber = 1e12;
-// A friction coefficient is at most this (few pairs of materials exceed 2; a point that must
-// not slide is pinned instead).
-constexpr double kMostFriction = 10;
 // A shaped jelly's spacing (its voxels' edge), m.
 constexpr double kSmallestSpacing = 1e-3;
 constexpr double kLargestSpacing = 10;

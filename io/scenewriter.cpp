@@ -109,6 +109,7 @@ void writeJelly(std::string& out, const char* header, const JellyRecipe& recipe,
 }
 
 void writeContact(std::string& out, const ContactSpring& spring, const Friction& friction) {
+  JELLO_ASSERT(!frictionFault(friction));  // what the reader reads back (the panel keeps it)
   out += "stiffness = " + number(spring.k) + "\ndamping = " + number(spring.d) + "\n";
   out += "friction_static = " + number(friction.muStatic) + "\n";
   out += "friction_dynamic = " + number(friction.muDynamic) + "\n";

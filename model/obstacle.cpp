@@ -7,6 +7,18 @@
 
 namespace jello {
 
+std::optional<FrictionFault> frictionFault(const Friction& f) {
+  if (!(f.muStatic >= 0 && f.muStatic <= kMostFriction))
+    return FrictionFault{"friction_static", "must be from 0 to " +
+                                                std::to_string(static_cast<int>(kMostFriction))};
+  if (!(f.muDynamic >= 0 && f.muDynamic <= f.muStatic))
+    return FrictionFault{"friction_dynamic",
+                         "must be from 0 to friction_static (dynamic friction is the weaker)"};
+  if (!(f.speed > 0 && std::isfinite(f.speed)))
+    return FrictionFault{"friction_speed", "must be a positive number of m/s"};
+  return std::nullopt;
+}
+
 const char* obstacleShapeName(ObstacleShape shape) {
   static const char* const kNames[] = {"sphere", "box", "plane", "bounding box"};
   return kNames[static_cast<int>(shape)];

@@ -17,6 +17,7 @@
 // friction_speed) creeps less but is stiffer (dF/dv ~ mu N / eps) and needs a smaller dt.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "model/contact.h"
@@ -28,10 +29,23 @@ namespace jello {
 constexpr double kDefaultFrictionSpeed = 0.01;
 constexpr double kStribeckRatio = 20;
 
+// A friction coefficient is at most this (few pairs of materials exceed 2; a point that must
+// not slide is pinned instead).
+constexpr double kMostFriction = 10;
+
 struct Friction {
   double muStatic = 0, muDynamic = 0;    // >= 0, muDynamic <= muStatic
   double speed = kDefaultFrictionSpeed;  // eps, m/s, > 0
 };
+
+// Friction's rule, the one the scene reader, the panel and the scene writer keep (docs/scenes.md):
+// 0 <= muDynamic <= muStatic <= kMostFriction and speed > 0 (each finite). Where `f` breaks it:
+// the scene file's key and why, in its words.
+struct FrictionFault {
+  const char* key;  // "friction_static", "friction_dynamic" or "friction_speed"
+  std::string why;
+};
+std::optional<FrictionFault> frictionFault(const Friction& f);
 
 enum class ObstacleShape {
   Sphere,     // solid ball: centre, radius

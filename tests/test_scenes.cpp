@@ -421,7 +421,7 @@ const Malformed kMalformed[] = {
     {"[[sphere]]\ncentre = [0, 0, 0]\nradus = 1\n",
      "test.toml:3: unknown key (sphere[1].radus); did you mean sphere[1].radius?"},
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 0.2\nfriction_dynamic = 0.5\n",
-     "test.toml:5: must be at most friction_static (dynamic friction is the weaker) "
+     "test.toml:5: must be from 0 to friction_static (dynamic friction is the weaker) "
      "(sphere[1].friction_dynamic)"},
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_speed = 0\n",
      "test.toml:4: must be above 0 (sphere[1].friction_speed)"},
@@ -440,7 +440,7 @@ const Malformed kMalformed[] = {
     {"[bounds]\npresent = false\nfriction_static = 0.5\n",
      "test.toml:3: a bounding box that is not present takes no other key (bounds.friction_static)"},
     {"[bounds]\nfriction_dynamic = 0.5\n",
-     "test.toml:2: must be at most friction_static (dynamic friction is the weaker) "
+     "test.toml:2: must be from 0 to friction_static (dynamic friction is the weaker) "
      "(bounds.friction_dynamic)"},
     {"[bounds]\nlower = [0, 0, 0]\nupper = [-1, 1, 1]\n",
      "test.toml:3: must be above lower on every axis (bounds.upper)"},
@@ -449,7 +449,7 @@ const Malformed kMalformed[] = {
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 8.1e307\n",
      "test.toml:4: is beyond 1e+12 in magnitude (sphere[1].friction_static)"},
     {"[[sphere]]\ncentre = [0,0,0]\nradius = 1\nfriction_static = 11\n",
-     "test.toml:4: must be at most 10 (sphere[1].friction_static)"},
+     "test.toml:4: must be from 0 to 10 (sphere[1].friction_static)"},
     {"gravity = [0, 0, -1e13]\n", "test.toml:1: is beyond 1e+12 in magnitude (gravity)"},
     {"[field]\nexpression = \"x +; 0; 0\"\n", "test.toml:2: fx: Unexpected end of expression"},
     {"[field]\nexpression = \"x; 0\"\n",

@@ -126,6 +126,53 @@ i = [4, 4]
   EXPECT_EQ(a.bounds->friction.muStatic, b.bounds->friction.muStatic);
 }
 
+// Friction's rule is one (model/obstacle.h frictionFault), kept by the reader, the panel and the
+// writer: every friction it allows is read, saved and read back bit for bit; every one it
+// refuses, the reader refuses at the key it names.
+TEST(SavedScene, EveryFrictionTheRuleAllowsIsSavedAndReadBackAndNoOther) {
+  const std::string dir = test::makeTempDir();
+  auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return std::string(text);
+  };
+  int allowed = 0, refused = 0;
+  for (double muStatic : {0.0, 0.3, 10.0, 10.5})
+    for (double muDynamic : {0.0, 0.2, 0.3, 0.30000000000000004, 10.0})
+      for (double speed : {0.01, 1e-9, 5.0}) {
+        const Friction f{muStatic, muDynamic, speed};
+        test::writeText(dir + "/in.toml", "dt = 0.0003\n[jelly]\nshape = \"lattice\"\n"
+                                          "size = [3, 3, 3]\n[[sphere]]\ncentre = [0, 0, -2]\n"
+                                          "radius = 0.5\nfriction_static = " + number(muStatic) +
+                                          "\nfriction_dynamic = " + number(muDynamic) +
+                                          "\nfriction_speed = " + number(speed) + "\n");
+        const auto fault = frictionFault(f);
+        SCOPED_TRACE(number(muStatic) + " " + number(muDynamic) + " " + number(speed));
+        if (fault) {
+          ++refused;
+          try {
+            readSceneFile(dir + "/in.toml");
+            ADD_FAILURE() << "accepted, against the rule: " << fault->why;
+          } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("(sphere[1]." + std::string(fault->key) + ")"),
+                      std::string::npos)
+                << e.what();
+          }
+          continue;
+        }
+        ++allowed;
+        const WorldFile in = readSceneFile(dir + "/in.toml");
+        writeScene(dir + "/out.toml", in.world, in.run, in.state, true);
+        const Friction back = readSceneFile(dir + "/out.toml").world.scene->obstacles.at(0).friction;
+        EXPECT_EQ(back.muStatic, muStatic);
+        EXPECT_EQ(back.muDynamic, muDynamic);
+        EXPECT_EQ(back.speed, speed);
+      }
+  EXPECT_EQ(allowed, 27);
+  EXPECT_EQ(refused, 33);
+  test::removeTree(dir);
+}
+
 TEST(SavedScene, RefusesANameThatIsNotTomlAndFilesThatExistUnlessTold) {
   const std::string dir = test::makeTempDir();
   const WorldFile file = readSceneFile(std::string(JELLO_SOURCE_DIR) + "/scenes/sphere-drop.toml");
