@@ -35,23 +35,35 @@ Vec3 toVec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 void warn(const std::string& message) { jello::printError("warning: " + message); }
 
+// The most field values the step's analysis copies (a 128^3 field, 50 MB): a larger field is
+// left out of it (for R = 512, 7.5 GB).
+constexpr std::size_t kMostAnalysedField = 3u * 128 * 128 * 128;
+
 // Warnings for a world that will run, but perhaps not as its maker meant.
 void warnAbout(jello::World& world, const jello::RunSettings& run, const jello::State& state) {
-  // Nothing here looks at the field: it is set aside, so that the Model below copies none of it
-  // (for R = 512, 7.5 GB).
-  jello::ForceField field = std::move(world.field);
-  world.field = {};
+  jello::ForceField field;
+  if (world.field.forces.size() > kMostAnalysedField) field = std::move(world.field), world.field = {};
   const std::string beyond = jello::beyondDoubles(world, state);
-  const double limit = jello::criticalStep(run.integrator, jello::lineariseAtRest(world).modes);
   if (!beyond.empty()) {
     warn("the world's numbers are beyond what double arithmetic can simulate (" + beyond +
          "): it will diverge at once");
-  } else if (run.dt > limit) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; ", run.dt,
-                  jello::integratorName(run.integrator), jello::limitText(limit).c_str());
-    warn(text + jello::stepAdvice(limit));
+  } else {
+    // The step judged as jello --check judges it: the limit at rest or at the initial state,
+    // whichever is smaller, and the same verdict.
+    const jello::StabilityReport report = jello::analyseStability(world, state);
+    const double limit = report.verdictLimit(run.integrator);
+    const jello::Verdict verdict = jello::verdictFor(run.dt, limit, report.stableFraction);
+    if (verdict != jello::Verdict::Stable) {
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    verdict == jello::Verdict::Unstable
+                        ? "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; "
+                        : "dt=%g is close to %s's stable limit %s s for this world (jello --check "
+                          "calls it marginal); ",
+                    run.dt, jello::integratorName(run.integrator),
+                    jello::limitText(limit).c_str());
+      warn(text + jello::stepAdvice(limit, report.stableFraction));
+    }
   }
   int outside = 0;
   for (int c = 0; c < jello::kNumCoords; ++c)
@@ -61,7 +73,7 @@ void warnAbout(jello::World& world, const jello::RunSettings& run, const jello::
     warn("the cube starts across the inclined plane (" + std::to_string(across) +
          " points on the far side of its centroid's side): the plane will push them back");
   }
-  world.field = std::move(field);
+  if (!field.forces.empty()) world.field = std::move(field);
 }
 
 // The options given that shape `part` of a world, in the order of --help: what a message about

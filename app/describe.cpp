@@ -68,16 +68,19 @@ std::string describeWorld(const WorldFile& file) {
   }
   meanVelocity = (1.0 / n) * meanVelocity;
   out += "velocity    mean " + vec(meanVelocity) + textf(" m/s, fastest point %.6g m/s\n", fastest);
-  const Linearisation rest = lineariseAtRest(w);
-  const double limit = criticalStep(run.integrator, rest.modes);
   if (std::string beyond = beyondDoubles(w, state); !beyond.empty()) {
     out += "stability   beyond what double arithmetic can simulate: " + beyond + "\n";
-  } else if (std::isfinite(limit)) {
-    out += textf(
-        "stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s at rest; see jello --check)\n",
-        integratorName(run.integrator), run.dt,
-        verdictName(verdictFor(run.dt, limit, stableFraction(w, state, &rest))),
-        100 * run.dt / limit, limit);
+    return out;
+  }
+  // The verdict of jello --check: the limit at rest or at the initial state, the smaller.
+  const StabilityReport report = analyseStability(w, state);
+  const double limit = report.verdictLimit(run.integrator);
+  if (std::isfinite(limit)) {
+    out += textf("stability   %s dt %.9g: %s (%.0f%% of its limit %.3g s%s; see jello --check)\n",
+                 integratorName(run.integrator), run.dt,
+                 verdictName(verdictFor(run.dt, limit, report.stableFraction)),
+                 100 * run.dt / limit, limit,
+                 limit < report.critical(run.integrator) ? " at the initial state" : " at rest");
   } else {
     out += textf("stability   %s: no step limit\n", integratorName(run.integrator));
   }

@@ -443,6 +443,23 @@ TEST(CreateWorld, RefusesAPlaneBeyondTheRangeOfDoublesAndWritesOneWithATinyNorma
   test::removeTree(dir);
 }
 
+// createWorld judges dt as jello --check does, at rest and at the initial state: the course's
+// jello.w starts squeezed, where EULER's limit is 0.000927 s (0.00125 s at rest), so EULER at
+// 0.001 is unstable for both, and at 0.0002 stable for both.
+TEST(CreateWorld, JudgesTheStepAsCheckDoesAtTheInitialStateToo) {
+  std::string dir = test::makeTempDir();
+  Result fast = createWorld("--preset jello --integrator EULER --dt 0.001 -o '" + dir + "/a.w'");
+  EXPECT_EQ(fast.status, 0);
+  EXPECT_NE(fast.err.find("dt=0.001 exceeds EULER's stable limit 0.000927 s"), std::string::npos)
+      << fast.err;
+  test::CommandResult check = test::runProgram({JELLO_BINARY, "--check", dir + "/a.w"});
+  EXPECT_NE(check.out.find("with EULER: unstable (108% of the limit 0.000927 at the initial state)"), std::string::npos)
+      << check.out;
+  Result slow = createWorld("--preset jello --integrator EULER --dt 0.0002 -o '" + dir + "/b.w'");
+  EXPECT_EQ(slow.err, "");
+  test::removeTree(dir);
+}
+
 TEST(CreateWorld, WarnsWhenTheCubeStartsOutsideTheBoxOrAcrossThePlane) {
   std::string dir = test::makeTempDir();
   Result outside = createWorld("--center 1.8 0 0 -o '" + dir + "/a.w'");
