@@ -33,6 +33,12 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
   gp << "# Made by jello --report; run `gnuplot report.gp` in this folder to draw report.png "
         "again.\n";
   std::string plots;
+  // The errors drawn, and the tolerance: the y axis holds them all with room around (a line on
+  // the plot's edge is not seen).
+  double lowest = visualTolerance, highest = visualTolerance;
+  for (const ReportRow& r : rows)
+    if (!r.diverged && r.rmsError > 0)
+      lowest = std::min(lowest, r.rmsError), highest = std::max(highest, r.rmsError);
   for (Integrator integrator : integrators) {
     std::string name = integratorName(integrator);
     gp << "$" << name << " << EOD\n";
@@ -68,6 +74,8 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
        << visualTolerance * 10 << "]\n"
        << "set label 1 'every run ended exactly where the reference did (error 0 m): nothing to "
           "draw on a log scale' at graph 0.5, 0.5 center\n";
+  } else {
+    gp << "set yrange [" << lowest / 4 << ":" << highest * 4 << "]\n";
   }
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"

@@ -74,6 +74,17 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
   EXPECT_NE(gp.find("title 'RK4: error \u221d dt^{4."), std::string::npos) << gp;
   EXPECT_EQ(gp.find("order"), std::string::npos) << gp;
   EXPECT_NE(md.find("| RK45 | error \u221d tolerance^0."), std::string::npos) << md;
+  // The y axis holds the visual tolerance's line and every error drawn with room around them:
+  // none on the plot's edge.
+  const std::size_t range = gp.find("set yrange ["),
+                    toleranceLine = gp.find(" with lines dt 2 lc 'gray40'");
+  ASSERT_NE(range, std::string::npos) << gp;
+  ASSERT_NE(toleranceLine, std::string::npos) << gp;
+  const double low = std::stod(gp.substr(range + 12)),
+               high = std::stod(gp.substr(gp.find(':', range) + 1)),
+               tolerance = std::stod(gp.substr(gp.rfind(", ", toleranceLine) + 2));
+  EXPECT_LT(low, tolerance / 2);
+  EXPECT_GT(high, tolerance * 2);
 
   // A well-formed CSV.
   const std::string csv = test::readText(out + "/report.csv");
@@ -93,6 +104,10 @@ TEST(Report, CsvPlotSummaryAndRecommendations) {
     if (r.status == "ok") {
       EXPECT_GE(r.max, r.rms);
       EXPECT_GE(r.rms, 0);
+      if (r.rms > 0) {
+        EXPECT_LT(low, r.rms / 2) << r.integrator << " " << r.dt;
+        EXPECT_GT(high, r.rms * 2) << r.integrator << " " << r.dt;
+      }
     } else {
       EXPECT_TRUE(std::isnan(r.rms)) << "a diverged run has no error";
     }
