@@ -54,7 +54,7 @@ Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit,
     for (const ReportRow& row : rows)
       if (!row.diverged && row.rmsError <= limit && (!inWorldFile || worldFileHolds(row)) &&
           (!stable || checkCallsStable(row, stability)) &&
-          (!best || row.cpuSeconds < best->cpuSeconds))
+          (!best || row.cost < best->cost))
         best = &row;
     return best;
   };
@@ -68,6 +68,22 @@ Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit,
 
 }  // namespace
 
+void assignCosts(std::vector<ReportRow>& rows) {
+  std::vector<double> paces;  // s an evaluation, of each explicit run
+  for (const ReportRow& row : rows)
+    if (row.integrator != Integrator::Implicit && row.evaluations > 0 && row.cpuSeconds > 0)
+      paces.push_back(row.cpuSeconds / static_cast<double>(row.evaluations));
+  double pace = NAN;
+  if (!paces.empty()) {
+    std::nth_element(paces.begin(), paces.begin() + paces.size() / 2, paces.end());
+    pace = paces[paces.size() / 2];
+  }
+  for (ReportRow& row : rows)
+    row.cost = row.integrator == Integrator::Implicit || std::isnan(pace)
+                   ? row.cpuSeconds
+                   : pace * static_cast<double>(row.evaluations);
+}
+
 Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance,
                           const StabilityReport& stability) {
   Recommendations r;
@@ -78,12 +94,13 @@ Recommendations recommend(const std::vector<ReportRow>& rows, double visualToler
   return r;
 }
 
-Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own) {
+Advice advise(const std::string& worldPath, const std::string& reportDir, const ReportRow& row,
+              const ReportRow* own) {
   Advice advice;
   advice.setting = settingText(row) + ": " + reportNumber(row.cpuSeconds) + " s, error " +
                    reportNumber(row.rmsError) + " m";
-  if (own && !own->diverged && own->cpuSeconds > 0 && row.cpuSeconds > 0)
-    advice.setting += ", " + speedAgainstOwn(own->cpuSeconds, row.cpuSeconds);
+  if (own && !own->diverged && own->cost > 0 && row.cost > 0)
+    advice.setting += ", " + speedAgainstOwn(own->cost, row.cost);
   advice.run = shellLine(runCommand(worldPath, row));
   if (isSceneFile(worldPath)) {
     if (worldFileHolds(row))
@@ -91,7 +108,7 @@ Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRo
                          "\" and dt = " + exactNumber(row.dt);
     return advice;
   }
-  const std::vector<std::string> keep = worldFileCommand(worldPath, row);
+  const std::vector<std::string> keep = worldFileCommand(worldPath, reportDir, row);
   if (!keep.empty()) advice.keep = shellLine(keep);
   return advice;
 }

@@ -36,8 +36,8 @@ namespace {
 
 // The lines on stdout for one recommendation ("as accurate as the world's own"): the setting,
 // the command that runs it, and the one that keeps it in a world file.
-void printChoice(const std::string& what, const std::string& worldPath, const Choice& choice,
-                 const ReportRow* own) {
+void printChoice(const std::string& what, const std::string& worldPath,
+                 const std::string& reportDir, const Choice& choice, const ReportRow* own) {
   const std::string leftOut = choice.leftOut.empty() ? "" : "  (" + choice.leftOut + ")\n";
   if (!choice.best) {
     std::printf("%s: none of the runs\n%s", what.c_str(), leftOut.c_str());
@@ -49,13 +49,13 @@ void printChoice(const std::string& what, const std::string& worldPath, const Ch
     return;
   }
   auto print = [&](const ReportRow& row) {
-    const Advice advice = advise(worldPath, row, own);
+    const Advice advice = advise(worldPath, reportDir, row, own);
     std::printf("  run it:  %s\n", advice.run.c_str());
     if (!advice.keep.empty()) std::printf("  keep it: %s\n", advice.keep.c_str());
     if (!advice.sceneKeys.empty())
       std::printf("  keep it: %s in %s\n", advice.sceneKeys.c_str(), printable(worldPath).c_str());
   };
-  std::printf("%s: %s\n", what.c_str(), advise(worldPath, *choice.best, own).setting.c_str());
+  std::printf("%s: %s\n", what.c_str(), advise(worldPath, reportDir, *choice.best, own).setting.c_str());
   print(*choice.best);
   std::printf("%s", leftOut.c_str());
   if (worldFileHolds(*choice.best)) return;
@@ -66,7 +66,7 @@ void printChoice(const std::string& what, const std::string& worldPath, const Ch
     return;
   }
   std::printf("  the cheapest setting a world file can hold: %s\n",
-              advise(worldPath, *choice.inWorldFile, own).setting.c_str());
+              advise(worldPath, reportDir, *choice.inWorldFile, own).setting.c_str());
   print(*choice.inWorldFile);
 }
 
@@ -83,7 +83,7 @@ void printReportSummary(const std::string& worldPath, const ReportOptions& optio
     if (c.far) std::printf("note: %s\n", orderWarningLine(c, reference.contacts).c_str());
   const bool first = recommended.own && !recommended.own->diverged;
   if (first)
-    printChoice("as accurate as the world's own", worldPath, recommended.asAccurate,
+    printChoice("as accurate as the world's own", worldPath, options.dir, recommended.asAccurate,
                 recommended.own);
   const std::string within = "within " + reportNumber(options.visualTolerance) + " m";
   // The same setting twice: its commands once (a second createWorld would refuse its file).
@@ -91,7 +91,7 @@ void printReportSummary(const std::string& worldPath, const ReportOptions& optio
       recommended.looksSame.best == recommended.asAccurate.best)
     std::printf("%s: the same setting\n", within.c_str());
   else
-    printChoice(within, worldPath, recommended.looksSame, recommended.own);
+    printChoice(within, worldPath, options.dir, recommended.looksSame, recommended.own);
 }
 
 // Each row's error against the reference: RMS and largest over the points at T.
@@ -141,6 +141,7 @@ Outcome runReport(const RunOptions& runOptions, const ReportOptions& options) {
   }
   std::vector<ReportRow>& rows = measured.rows;
   measureErrors(&measured);
+  assignCosts(rows);
   // The stability verdicts of --check, which every recommended step must pass.
   const StabilityReport stability = analyseStability(world, file.state);
   const Recommendations recommended = recommend(rows, options.visualTolerance, stability);

@@ -26,6 +26,9 @@ struct ReportRow {
   Tolerances tolerances{};  // RK45 only: its rtol and atol (the sweep sets them equal)
   long long steps = 0, evaluations = 0;
   double cpuSeconds = 0;  // s: CPU time of the stepping (its thread's), the least of its timings
+  // s: what recommendations compare (assignCosts, reportstudy.h): the work of an explicit run
+  // at the explicit runs' common pace, IMPLICIT's own timing.
+  double cost = 0;
   double rmsError = 0, maxError = 0;  // m, positions at the end against the reference
   bool diverged = false;
   bool worldsOwn = false;  // the world's own integrator and dt
@@ -127,9 +130,10 @@ bool worldFileHolds(const ReportRow& row);
 std::vector<std::string> runCommand(const std::string& worldPath, const ReportRow& row);
 
 // The createWorld command, as its words, that writes a copy of `worldPath` holding the row's
-// setting beside it (world/rotate.w, MIDPOINT: world/rotate-midpoint.w); empty when a world file
-// cannot hold it (worldFileHolds).
-std::vector<std::string> worldFileCommand(const std::string& worldPath, const ReportRow& row);
+// setting into the report's folder `reportDir` (world/rotate.w, RK4 at 0.001, into out:
+// out/rotate-rk4-dt0.001.w); empty when a world file cannot hold it (worldFileHolds).
+std::vector<std::string> worldFileCommand(const std::string& worldPath, const std::string& reportDir,
+                                          const ReportRow& row);
 
 // One word for a POSIX shell: as it is when it holds only characters no shell treats
 // specially, otherwise in single quotes (a quote within as '\''); a word with a control

@@ -164,9 +164,9 @@ std::string markdownOrders(const std::vector<OrderCheck>& orders, const ContactA
 }
 
 // report.md's lines for one recommended run, as a list under its item.
-void markdownAdvice(const std::string& worldPath, const ReportRow& row, const ReportRow* own,
-                    std::ostringstream& md) {
-  const Advice advice = advise(worldPath, row, own);
+void markdownAdvice(const std::string& worldPath, const std::string& reportDir,
+                    const ReportRow& row, const ReportRow* own, std::ostringstream& md) {
+  const Advice advice = advise(worldPath, reportDir, row, own);
   md << advice.setting << ".\n  - Run it: " << codeSpan(advice.run) << "\n";
   if (!advice.keep.empty()) md << "  - Keep it in a world file: " << codeSpan(advice.keep) << "\n";
   if (!advice.sceneKeys.empty())
@@ -174,7 +174,7 @@ void markdownAdvice(const std::string& worldPath, const ReportRow& row, const Re
 }
 
 // report.md's recommendations.
-std::string markdownRecommendations(const std::string& worldPath,
+std::string markdownRecommendations(const std::string& worldPath, const std::string& reportDir,
                                     const Recommendations& recommended, double visualTolerance) {
   const ReportRow* own = recommended.own;
   std::ostringstream md;
@@ -193,7 +193,7 @@ std::string markdownRecommendations(const std::string& worldPath,
     } else if (choice.best == own) {
       md << "the world's own setting; nothing cheaper is as accurate.\n";
     } else {
-      markdownAdvice(worldPath, *choice.best, own, md);
+      markdownAdvice(worldPath, reportDir, *choice.best, own, md);
     }
     if (!choice.leftOut.empty()) md << "  - " << choice.leftOut << ".\n";
     if (!choice.best || worldFileHolds(*choice.best)) return;
@@ -203,7 +203,7 @@ std::string markdownRecommendations(const std::string& worldPath,
     else if (choice.inWorldFile == own)
       md << "the world's own.\n";
     else
-      markdownAdvice(worldPath, *choice.inWorldFile, own, md);
+      markdownAdvice(worldPath, reportDir, *choice.inWorldFile, own, md);
   };
   if (own && own->diverged)
     md << "- **The cheapest setting at least as accurate as the world's own**: the world's own "
@@ -253,7 +253,7 @@ void writeReportFiles(const std::string& worldPath, const ReportOptions& options
   const std::string title = worldPath + ": error at T = " + reportNumber(T) + " s against run time";
   const std::string md = markdownRuns(worldPath, T, reference, rows) +
                          markdownOrders(orders, reference.contacts) +
-                         markdownRecommendations(worldPath, recommended, options.visualTolerance);
+                         markdownRecommendations(worldPath, options.dir, recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
   writeFileWhole(options.dir + "/report.gp",

@@ -145,11 +145,18 @@ std::string reportNumber(double x);
 void measureAll(const Study& s, const std::vector<Integrator>& integrators,
                 const RunSettings& world, const Tolerances& tolerances, Measured* m);
 
+// Each row's cost (recommend.cpp): an explicit integrator's force evaluations (each the same
+// work) times the median seconds an evaluation over every explicit run of the study, so that a
+// run is never called cheaper than one of less work because a single timing was disturbed;
+// IMPLICIT's (a Jacobian and a linear solve a step) is its own least timing.
+void assignCosts(std::vector<ReportRow>& rows);
+
 // The recommendations of a study's rows (recommend.cpp): the cheapest setting as accurate as the
 // world's own and the cheapest within the visual tolerance, each one --check calls stable.
 Recommendations recommend(const std::vector<ReportRow>& rows, double visualTolerance,
                           const StabilityReport& stability);
-Advice advise(const std::string& worldPath, const ReportRow& row, const ReportRow* own);
+Advice advise(const std::string& worldPath, const std::string& reportDir, const ReportRow& row,
+              const ReportRow* own);
 // Why a recommended RK45 run has no createWorld command.
 std::string noWorldFileNote();
 // report.csv, report.md and report.gp into the claimed folder. Throws OutputError.

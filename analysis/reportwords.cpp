@@ -39,18 +39,18 @@ std::string worldWord(const std::string& worldPath) {
   return !worldPath.empty() && worldPath[0] == '-' ? "./" + worldPath : worldPath;
 }
 
-// world/rotate.w, MIDPOINT and dt 0.00078125: world/rotate-midpoint-dt0.00078125.w, beside the
-// world: each recommended setting a name of its own (two of one integrator once shared one).
-std::string worldFileFor(const std::string& worldPath, Integrator integrator,
-                         const std::string& dt) {
+// world/rotate.w, MIDPOINT and dt 0.00078125, reported into out/: out/rotate-midpoint-dt0.00078125.w,
+// in the report's folder (never beside the world: that may be the project's own world/): each
+// recommended setting a name of its own (two of one integrator once shared one).
+std::string worldFileFor(const std::string& worldPath, const std::string& reportDir,
+                         Integrator integrator, const std::string& dt) {
   const std::size_t slash = worldPath.rfind('/');
-  const std::string folder = slash == std::string::npos ? "" : worldPath.substr(0, slash + 1);
-  std::string stem = worldPath.substr(folder.size());
+  std::string stem = worldPath.substr(slash == std::string::npos ? 0 : slash + 1);
   const std::size_t dot = stem.rfind('.');
   if (dot != std::string::npos && dot > 0) stem.erase(dot);
   std::string name = integratorName(integrator);
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return worldWord(folder + stem + "-" + name + "-dt" + dt + ".w");
+  return worldWord(reportDir + "/" + stem + "-" + name + "-dt" + dt + ".w");
 }
 
 // The characters no POSIX shell gives a meaning to within a word.
@@ -219,7 +219,8 @@ std::vector<std::string> runCommand(const std::string& worldPath, const ReportRo
   return words;
 }
 
-std::vector<std::string> worldFileCommand(const std::string& worldPath, const ReportRow& row) {
+std::vector<std::string> worldFileCommand(const std::string& worldPath, const std::string& reportDir,
+                                          const ReportRow& row) {
   if (!worldFileHolds(row)) return {};
   return {kCreateWorldProgram,
           "--from",
@@ -229,7 +230,7 @@ std::vector<std::string> worldFileCommand(const std::string& worldPath, const Re
           "--dt",
           exactNumber(row.dt),
           "-o",
-          worldFileFor(worldPath, row.integrator, exactNumber(row.dt))};
+          worldFileFor(worldPath, reportDir, row.integrator, exactNumber(row.dt))};
 }
 
 std::string shellWord(const std::string& word) {

@@ -6,12 +6,23 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <string>
 
 namespace jello {
 
-Progress::Progress() : enabled_(::isatty(STDERR_FILENO) == 1) {}
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+Progress::Progress() : terminal_(::isatty(STDERR_FILENO) == 1), lastLogged_(now()) {}
+
+bool Progress::enabled() const { return terminal_ || now() - lastLogged_ >= kLogSeconds; }
 
 Progress::~Progress() { finish(); }
 
@@ -34,14 +45,20 @@ void Progress::finish() {
 }
 
 void Progress::finish(const std::string& lastLine) {
-  if (!enabled_) return;
+  if (!terminal_) return;
   show(lastLine);
   std::fputc('\n', stderr);
   width_ = 0;
 }
 
 void Progress::show(const std::string& text) {
-  if (!enabled_) return;
+  if (!terminal_) {
+    if (!enabled()) return;
+    std::fprintf(stderr, "%s\n", text.c_str());
+    std::fflush(stderr);
+    lastLogged_ = now();
+    return;
+  }
   const std::size_t limit = lineLimit();
   const std::string line = text.substr(0, limit);
   // Spaces after a line shorter than the last one wipe what would be left of that one.

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "analysis/report.h"
+#include "analysis/reportstudy.h"
 #include "test_support.h"
 
 namespace jello {
@@ -311,9 +312,10 @@ TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
   EXPECT_EQ(settingText(rk4), "RK4 dt=0.001953125");
   EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk4)),
             "./jello --integrator RK4 --dt 0.001953125 world/rotate.w");
-  EXPECT_EQ(shellLine(worldFileCommand("my worlds/rotate.w", rk4)),
+  EXPECT_EQ(shellLine(worldFileCommand("my worlds/rotate.w", "my report", rk4)),
             "./createWorld --from 'my worlds/rotate.w' --integrator RK4 --dt 0.001953125 -o "
-            "'my worlds/rotate-rk4-dt0.001953125.w'");
+            "'my report/rotate-rk4-dt0.001953125.w'")
+      << "kept beside the report, never in the world's folder (the project's own world/)";
   EXPECT_EQ(shellLine(runCommand("-odd.w", rk4)),
             "./jello --integrator RK4 --dt 0.001953125 ./-odd.w")
       << "a world named like an option";
@@ -326,11 +328,31 @@ TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
   EXPECT_FALSE(worldFileHolds(rk45));
   EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
             "./jello --integrator RK45 --dt 0.025 --rtol 1e-07 --atol 1e-07 world/rotate.w");
-  EXPECT_TRUE(worldFileCommand("world/rotate.w", rk45).empty()) << "no world file holds rtol";
+  EXPECT_TRUE(worldFileCommand("world/rotate.w", "out", rk45).empty()) << "no world file holds rtol";
   rk45.tolerances = Tolerances{};
   EXPECT_TRUE(worldFileHolds(rk45)) << "a world file's RK45 runs at the default tolerances";
   EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
             "./jello --integrator RK45 --dt 0.025 world/rotate.w");
+}
+
+// A report compares runs by their work, not by single timings a loaded machine disturbs: RK4
+// at dt = 1/1024 s (4096 evaluations) is never cheaper than at 1/1000 s (4000), whatever one
+// timing said; IMPLICIT, whose steps are not evaluations alone, keeps its own timing.
+TEST(ReportCosts, AnExplicitRunCostsItsWorkNotItsOneTiming) {
+  std::vector<ReportRow> rows(3);
+  rows[0].integrator = Integrator::RK4, rows[0].dt = 0.001, rows[0].evaluations = 4000;
+  rows[0].cpuSeconds = 0.13, rows[0].worldsOwn = true;  // timed while the machine was busy
+  rows[1].integrator = Integrator::RK4, rows[1].dt = 0.0009765625, rows[1].evaluations = 4096;
+  rows[1].cpuSeconds = 0.10;
+  rows[2].integrator = Integrator::Implicit, rows[2].dt = 0.01, rows[2].evaluations = 300;
+  rows[2].cpuSeconds = 0.5;
+  assignCosts(rows);
+  EXPECT_LT(rows[0].cost, rows[1].cost);
+  EXPECT_NEAR(rows[1].cost / rows[0].cost, 4096.0 / 4000, 1e-12);
+  EXPECT_EQ(rows[2].cost, 0.5);
+  for (ReportRow& row : rows) row.rmsError = 1e-6;
+  const Advice advice = advise("world/rotate.w", "out", rows[1], &rows[0]);
+  EXPECT_EQ(advice.setting.find("times as fast"), std::string::npos) << advice.setting;
 }
 
 // Every recommended command, run as printed (parsed into its words, never through a shell),
@@ -416,7 +438,7 @@ TEST_P(RecommendedCommands, RunAsPrintedAndReproduceTheReportedError) {
     const WorldFile made = readWorldFile(words[8]);
     EXPECT_EQ(integratorName(made.run.integrator), words[4]);
     EXPECT_EQ(made.run.dt, std::stod(words[6]));
-    EXPECT_EQ(words[8], folder + "/rotate-rk4-dt" + words[6] + ".w");
+    EXPECT_EQ(words[8], dir + "/out/rotate-rk4-dt" + words[6] + ".w") << "kept beside the report";
   }
   test::removeTree(dir);
 }
