@@ -203,20 +203,20 @@ void BodyContactTerm::findContacts(const double* p, std::vector<ContactPair>* fo
   for (std::size_t i = 0; i < active.size(); ++i) {
     const int a = active[i];
     const Vec3 pa = load(p, a, n);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const CellTable::Run* run =
-              cells.find(cellOf[i][0] + dx, cellOf[i][1] + dy, cellOf[i][2] + dz);
-          if (!run) continue;
-          for (int at = run->begin; at < run->end; ++at) {
-            const int b = sorted[at].second;
-            if (b <= a || !mayTouch(a, b)) continue;
-            const double distance = radiusOf_[a] + radiusOf_[b];
-            const Vec3 L = pa - load(p, b, n);
-            if (dot(L, L) < distance * distance) out.push_back({a, b, distance});
-          }
-        }
+    int partners = 0;  // a's pairs so far, at most kMostContactPartners
+    for (int cell = 0; cell < 27 && partners < kMostContactPartners; ++cell) {
+      const int dx = cell / 9 - 1, dy = cell / 3 % 3 - 1, dz = cell % 3 - 1;
+      const CellTable::Run* run =
+          cells.find(cellOf[i][0] + dx, cellOf[i][1] + dy, cellOf[i][2] + dz);
+      if (!run) continue;
+      for (int at = run->begin; at < run->end && partners < kMostContactPartners; ++at) {
+        const int b = sorted[at].second;
+        if (b <= a || !mayTouch(a, b)) continue;
+        const double distance = radiusOf_[a] + radiusOf_[b];
+        const Vec3 L = pa - load(p, b, n);
+        if (dot(L, L) < distance * distance) out.push_back({a, b, distance}), ++partners;
+      }
+    }
   }
   std::sort(out.begin(), out.end(), [](const ContactPair& x, const ContactPair& y) {
     return x.a < y.a || (x.a == y.a && x.b < y.b);

@@ -39,6 +39,13 @@ namespace jello {
 // be without pushing, so their springs alone keep them apart.
 constexpr int kSelfNeighbourhood = 2;
 
+// A point a takes at most this many pairs with points b > a: the first it finds, in the broad
+// phase's order (the 27 cells by dx, then dy, then dz from -1 to 1; in a cell, by point). A
+// surface point touches a few others at rest and a dozen or so in a hard crush; a state that puts
+// thousands at one place (two jellies collapsed onto a point) would otherwise make the contact's
+// work quadratic (15 s a step for two 20^3 jellies against 0.07 s).
+constexpr int kMostContactPartners = 64;
+
 // Each part (jelly) of the body as the contact sees it.
 struct ContactPart {
   double radius = 0;  // m, its points' balls

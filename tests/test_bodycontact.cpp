@@ -453,6 +453,34 @@ TEST(BodyContact, TheBroadPhaseFindsEveryPairThatEveryPairCheckFinds) {
   }
 }
 
+// Every point of two jellies at one place: each point of the first may touch all 296 surface
+// points of the second, and keeps the first 64 of them in the broad phase's order (the lowest
+// numbers: one cell, by point), not 87,616 pairs; every pair is then at L = 0 (n = +z).
+TEST(BodyContact, APointKeepsAtMostItsFirst64PartnersOfAStartCollapsedToOnePlace) {
+  std::string text = kHeadOn;  // two 8^3 jellies
+  for (std::size_t at; (at = text.find("size = [4, 4, 4]")) != std::string::npos;)
+    text.replace(at, 16, "size = [8, 8, 8]");
+  text.replace(text.find("offset = [0.2, 0.03"), 19, "offset = [1.2, 0.03");
+  const WorldFile file = test::scene(text);
+  const Model model = makeModel(file.world, file.state);
+  const BodyContactTerm& term = *contactTerm(model);
+  const Body& body = model.body();
+  const int n = body.count();
+  State s = file.state;
+  for (int q = 0; q < n; ++q) store(s.p(), q, n, Vec3{0.1, 0.2, 0.3});
+  std::vector<int> first, second;
+  for (int q : body.surfacePoints) (body.partOf(q) == 0 ? first : second).push_back(q);
+  ASSERT_EQ(first.size(), 296u);
+  ASSERT_EQ(second.size(), 296u);
+  std::vector<std::pair<int, int>> expected;
+  for (int a : first)
+    for (int k = 0; k < kMostContactPartners; ++k) expected.emplace_back(a, second[k]);
+  EXPECT_EQ(term.pairsAt(s.p()), expected);
+  std::vector<double> force(3 * n, 0.0);
+  term.addForcesOn({0, n}, s.p(), s.v(), nullptr, force.data());
+  for (double f : force) EXPECT_TRUE(std::isfinite(f));
+}
+
 TEST(BodyContact, OneJellyWithoutSelfContactHasNoContactTerm) {
   const WorldFile file = test::scene("[jelly]\nshape = \"lattice\"\nsize = [3, 3, 3]\n");
   EXPECT_EQ(contactTerm(makeModel(file.world, file.state)), nullptr);
