@@ -30,9 +30,16 @@ struct BuildResult {
   double seconds = 0;
 };
 
+// The CPU seconds the compiler may use for all of a submission's build attempts together (a
+// compile-time loop is not repeated by every attempt), and for one attempt at most.
+constexpr double kCompileBudgetSeconds = 240;
+constexpr double kCompileSeconds = 120;
+
 // Builds the submission in the sandbox and copies the program to `probePath`, and the files
 // beside its source (what it may read as it starts: textures, worlds) to
-// programFilesOf(probePath), where its runs start (probe.h).
-BuildResult buildSubmission(const Submission& submission, const std::string& probePath);
+// programFilesOf(probePath), where its runs start (probe.h). `budgetSeconds`: the compiler's CPU
+// seconds for all its attempts.
+BuildResult buildSubmission(const Submission& submission, const std::string& probePath,
+                            double budgetSeconds = kCompileBudgetSeconds);
 
 }  // namespace jello::grader

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include "grader/build.h"
 #include "grader/sandbox.h"
 #include "grader_test_support.h"
 #include "test_support.h"
@@ -132,6 +133,36 @@ TEST(GraderIntegrity, PrintingReadingTheEnvironmentAndFillingDisksChangeNoGrade)
     EXPECT_EQ(grades[name]["rk4"], "pass") << name;
   }
   EXPECT_EQ(everything(report).find("grader-secret-3141"), std::string::npos);
+  removeTree(root);
+}
+
+// A compile-time loop (a constexpr evaluation of minutes) costs the submission's budget once,
+// not once an attempt: with a budget of 3 s the first attempt is stopped at it and no other
+// compiler runs; the build fails saying so.
+TEST(GraderIntegrity, ACompileTimeLoopSpendsTheBudgetOfAllAttemptsOnce) {
+  if (!haveSandbox()) GTEST_SKIP() << jello::grader::sandboxProblem();
+  std::string root = makeTempDir();
+  std::string bomb = attack(root, "bomb", "",
+                            "constexpr long spin() {\n  long x = 0;\n"
+                            "  for (long i = 0; i < 200000; ++i)\n"
+                            "    for (long j = 0; j < 200000; ++j) x += (i ^ j) % 7;\n"
+                            "  return x;\n}\nconstexpr long spun = spin();\n");
+  const auto started = std::chrono::steady_clock::now();
+  jello::grader::BuildResult build =
+      jello::grader::buildSubmission({bomb, "bomb"}, root + "/probe", 3);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_FALSE(build.built);
+  EXPECT_NE(build.log.find("the compiler used the submission's whole budget (3 s for all its "
+                           "attempts): a compile-time loop?"),
+            std::string::npos)
+      << build.log.substr(0, 3000);
+  std::size_t compilers = 0;
+  for (std::size_t at = build.log.find("jello-grader: compiling root\n");
+       at != std::string::npos; at = build.log.find("jello-grader: compiling root\n", at + 1))
+    ++compilers;
+  EXPECT_EQ(compilers, 1u) << build.log.substr(0, 3000);
+  EXPECT_LT(seconds, 60) << "a hang detector: the budget is 3 s of CPU";
   removeTree(root);
 }
 
