@@ -3,7 +3,6 @@
 # the benchmarks) too.
 BUILD_DIR ?= build
 SANITIZE_DIR ?= build-sanitize
-FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 WORLD ?= world/rotate.w
@@ -63,6 +62,13 @@ test: deps all
 test-quick: deps all
 	cd $(BUILD_DIR) && ctest --output-on-failure --no-tests=error -j $(JOBS) -LE long
 
+# The sanitizers' build: clang, AddressSanitizer, UndefinedBehaviorSanitizer (float-cast-overflow
+# too), libFuzzer's coverage, invariants checked, warnings as errors, no benchmarks. The suite
+# under the sanitizers and the fuzzers share it: one instrumented build, not two.
+SANITIZE_CONFIGURE = cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=clang++ \
+	-DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_SANITIZE=ON -DJELLO_FUZZ=ON -DJELLO_WERROR=ON \
+	-DJELLO_BENCHMARKS=OFF
+
 # The whole suite once more, built by clang with AddressSanitizer and UndefinedBehaviorSanitizer,
 # float-cast-overflow included (a NaN or too large a double converted to an integer: GCC's UBSan
 # does not check it), invariants checked (JELLO_ASSERT) and warnings as errors (JELLO_WERROR).
@@ -72,8 +78,7 @@ test-quick: deps all
 # code shorter tests take through them too) are left out: the grader's class runs, whose own
 # students' code no sanitizer sees, and the long runs of physics, 10 to 60 times slower there.
 test-sanitize: deps
-	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-		-DJELLO_SANITIZE=ON -DJELLO_WERROR=ON -DJELLO_BENCHMARKS=OFF
+	$(SANITIZE_CONFIGURE)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	rm -rf $(SANITIZE_DIR)/ubsan-reports && mkdir -p $(SANITIZE_DIR)/ubsan-reports
 	@status=0; cd $(SANITIZE_DIR) && \
@@ -110,12 +115,12 @@ bench: programs
 	scripts/bench-against
 	scripts/bench-bodies
 
-# The libFuzzer targets (clang, ASan, UBSan), each run for FUZZ_SECONDS; fails on any finding.
+# The libFuzzer targets, in the sanitizers' build, each run for FUZZ_SECONDS; fails on any
+# finding. After `make test-sanitize` there is nothing left to build.
 fuzz: deps
-	cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DJELLO_FUZZ=ON \
-		-DJELLO_TESTS=OFF -DJELLO_GRAPHICS=OFF
-	cmake --build $(FUZZ_DIR) -j $(JOBS) --target fuzz_world_reader fuzz_field_expression fuzz_command_line fuzz_scene_reader fuzz_obj_voxels
-	scripts/run-fuzzers $(FUZZ_DIR) $(FUZZ_SECONDS)
+	$(SANITIZE_CONFIGURE)
+	cmake --build $(SANITIZE_DIR) -j $(JOBS) --target fuzz_world_reader fuzz_field_expression fuzz_command_line fuzz_scene_reader fuzz_obj_voxels
+	scripts/run-fuzzers $(SANITIZE_DIR) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(UBSAN_DIR) $(FUZZ_DIR) build-before jello createWorld grade
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) build-fuzz build-before jello createWorld grade

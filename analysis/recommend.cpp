@@ -53,8 +53,7 @@ Choice cheapestWithin(const std::vector<ReportRow>& rows, double limit,
     const ReportRow* best = nullptr;
     for (const ReportRow& row : rows)
       if (!row.diverged && row.rmsError <= limit && (!inWorldFile || worldFileHolds(row)) &&
-          (!stable || checkCallsStable(row, stability)) &&
-          (!best || row.cost < best->cost))
+          (!stable || checkCallsStable(row, stability)) && (!best || row.cost < best->cost))
         best = &row;
     return best;
   };

@@ -55,7 +55,8 @@ void printChoice(const std::string& what, const std::string& worldPath,
     if (!advice.sceneKeys.empty())
       std::printf("  keep it: %s in %s\n", advice.sceneKeys.c_str(), printable(worldPath).c_str());
   };
-  std::printf("%s: %s\n", what.c_str(), advise(worldPath, reportDir, *choice.best, own).setting.c_str());
+  std::printf("%s: %s\n", what.c_str(),
+              advise(worldPath, reportDir, *choice.best, own).setting.c_str());
   print(*choice.best);
   std::printf("%s", leftOut.c_str());
   if (worldFileHolds(*choice.best)) return;

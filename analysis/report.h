@@ -132,8 +132,8 @@ std::vector<std::string> runCommand(const std::string& worldPath, const ReportRo
 // The createWorld command, as its words, that writes a copy of `worldPath` holding the row's
 // setting into the report's folder `reportDir` (world/rotate.w, RK4 at 0.001, into out:
 // out/rotate-rk4-dt0.001.w); empty when a world file cannot hold it (worldFileHolds).
-std::vector<std::string> worldFileCommand(const std::string& worldPath, const std::string& reportDir,
-                                          const ReportRow& row);
+std::vector<std::string> worldFileCommand(const std::string& worldPath,
+                                          const std::string& reportDir, const ReportRow& row);
 
 // One word for a POSIX shell: as it is when it holds only characters no shell treats
 // specially, otherwise in single quotes (a quote within as '\''); a word with a control

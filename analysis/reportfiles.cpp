@@ -26,6 +26,18 @@ namespace jello {
 
 namespace {
 
+// The y axis of the plot: the errors drawn and the visual tolerance, with room around them (a
+// line on the plot's edge is not seen).
+std::string yRange(const std::vector<ReportRow>& rows, double visualTolerance) {
+  double lowest = visualTolerance, highest = visualTolerance;
+  for (const ReportRow& r : rows)
+    if (!r.diverged && r.rmsError > 0)
+      lowest = std::min(lowest, r.rmsError), highest = std::max(highest, r.rmsError);
+  std::ostringstream range;
+  range << "set yrange [" << lowest / 4 << ":" << highest * 4 << "]\n";
+  return range.str();
+}
+
 std::string gnuplotScript(const std::vector<ReportRow>& rows,
                           const std::vector<Integrator>& integrators, double floor,
                           double visualTolerance, const std::string& title) {
@@ -33,12 +45,6 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
   gp << "# Made by jello --report; run `gnuplot report.gp` in this folder to draw report.png "
         "again.\n";
   std::string plots;
-  // The errors drawn, and the tolerance: the y axis holds them all with room around (a line on
-  // the plot's edge is not seen).
-  double lowest = visualTolerance, highest = visualTolerance;
-  for (const ReportRow& r : rows)
-    if (!r.diverged && r.rmsError > 0)
-      lowest = std::min(lowest, r.rmsError), highest = std::max(highest, r.rmsError);
   for (Integrator integrator : integrators) {
     std::string name = integratorName(integrator);
     gp << "$" << name << " << EOD\n";
@@ -75,7 +81,7 @@ std::string gnuplotScript(const std::vector<ReportRow>& rows,
        << "set label 1 'every run ended exactly where the reference did (error 0 m): nothing to "
           "draw on a log scale' at graph 0.5, 0.5 center\n";
   } else {
-    gp << "set yrange [" << lowest / 4 << ":" << highest * 4 << "]\n";
+    gp << yRange(rows, visualTolerance);
   }
   gp << "set terminal pngcairo size 960,640 font ',11'\n"
      << "if (!exists(\"png\")) png = 'report.png'\n"
@@ -251,9 +257,9 @@ void writeReportFiles(const std::string& worldPath, const ReportOptions& options
   const Existing existing = options.overwrite ? Existing::Replace : Existing::Refuse;
   const double T = options.time, floor = kFitFloor * reference.error;
   const std::string title = worldPath + ": error at T = " + reportNumber(T) + " s against run time";
-  const std::string md = markdownRuns(worldPath, T, reference, rows) +
-                         markdownOrders(orders, reference.contacts) +
-                         markdownRecommendations(worldPath, options.dir, recommended, options.visualTolerance);
+  const std::string md =
+      markdownRuns(worldPath, T, reference, rows) + markdownOrders(orders, reference.contacts) +
+      markdownRecommendations(worldPath, options.dir, recommended, options.visualTolerance);
   writeFileWhole(options.dir + "/report.csv", reportCsv(rows), existing);
   writeFileWhole(options.dir + "/report.md", md, existing);
   writeFileWhole(options.dir + "/report.gp",

@@ -39,9 +39,10 @@ std::string worldWord(const std::string& worldPath) {
   return !worldPath.empty() && worldPath[0] == '-' ? "./" + worldPath : worldPath;
 }
 
-// world/rotate.w, MIDPOINT and dt 0.00078125, reported into out/: out/rotate-midpoint-dt0.00078125.w,
-// in the report's folder (never beside the world: that may be the project's own world/): each
-// recommended setting a name of its own (two of one integrator once shared one).
+// world/rotate.w, MIDPOINT and dt 0.00078125, reported into out/:
+// out/rotate-midpoint-dt0.00078125.w, in the report's folder (never beside the world: that may be
+// the project's own world/): each recommended setting a name of its own (two of one integrator once
+// shared one).
 std::string worldFileFor(const std::string& worldPath, const std::string& reportDir,
                          Integrator integrator, const std::string& dt) {
   const std::size_t slash = worldPath.rfind('/');
@@ -219,8 +220,8 @@ std::vector<std::string> runCommand(const std::string& worldPath, const ReportRo
   return words;
 }
 
-std::vector<std::string> worldFileCommand(const std::string& worldPath, const std::string& reportDir,
-                                          const ReportRow& row) {
+std::vector<std::string> worldFileCommand(const std::string& worldPath,
+                                          const std::string& reportDir, const ReportRow& row) {
   if (!worldFileHolds(row)) return {};
   return {kCreateWorldProgram,
           "--from",

@@ -42,7 +42,8 @@ constexpr std::size_t kMostAnalysedField = 3u * 128 * 128 * 128;
 // Warnings for a world that will run, but perhaps not as its maker meant.
 void warnAbout(jello::World& world, const jello::RunSettings& run, const jello::State& state) {
   jello::ForceField field;
-  if (world.field.forces.size() > kMostAnalysedField) field = std::move(world.field), world.field = {};
+  if (world.field.forces.size() > kMostAnalysedField)
+    field = std::move(world.field), world.field = {};
   const std::string beyond = jello::beyondDoubles(world, state);
   if (!beyond.empty()) {
     warn("the world's numbers are beyond what double arithmetic can simulate (" + beyond +
@@ -60,8 +61,7 @@ void warnAbout(jello::World& world, const jello::RunSettings& run, const jello::
                         ? "dt=%g exceeds %s's stable limit %s s for this world: it will diverge; "
                         : "dt=%g is close to %s's stable limit %s s for this world (jello --check "
                           "calls it marginal); ",
-                    run.dt, jello::integratorName(run.integrator),
-                    jello::limitText(limit).c_str());
+                    run.dt, jello::integratorName(run.integrator), jello::limitText(limit).c_str());
       warn(text + jello::stepAdvice(limit, report.stableFraction));
     }
   }

@@ -18,6 +18,7 @@
 
 #include "core/output.h"
 #include "grader/checkkit.h"
+#include "grader/compilerlog.h"
 #include "grader/graderfiles.h"
 #include "grader/leniency.h"
 #include "grader/probe.h"
@@ -29,16 +30,14 @@ namespace fs = std::filesystem;
 namespace jello::grader {
 namespace {
 
-constexpr int kMostCompiled = 100;       // source files compiled in one attempt
-constexpr int kRewriteRounds = 3;         // compilations again after Visual C++'s rewrites
+constexpr int kMostCompiled = 100;          // source files compiled in one attempt
+constexpr int kRewriteRounds = 3;           // compilations again after Visual C++'s rewrites
 constexpr std::size_t kPrintedKept = 4000;  // of what a program that stops early printed
 // What is left of the submission's compile budget (build.h), on the thread building it.
 thread_local double compileSecondsLeft = kCompileBudgetSeconds;
 thread_local double compileBudget = kCompileBudgetSeconds;
 // What a program that looks for a grader may test (docs/grading.md, "What no grader can prevent").
-const char* const kTells[] = {
-    "F_GETFD", "/proc/self/fd", "isatty",
-    "getenv(\"DISPLAY\")"};
+const char* const kTells[] = {"F_GETFD", "/proc/self/fd", "isatty", "getenv(\"DISPLAY\")"};
 // GCC's warnings, all off (-w would hide the one rewriteMissingReturns reads) but -Wreturn-type;
 // then those of C++ and of C alone.
 const char* const kQuietWarnings =
@@ -52,12 +51,6 @@ const char* const kQuietCxx = "-Wno-conversion-null";
 const char* const kQuietC =
     "-Wno-pointer-to-int-cast -Wno-implicit-function-declaration -Wno-int-conversion "
     "-Wno-incompatible-pointer-types";
-const char* const kProbeName = "jello-grader-probe.cpp";
-// How a build error in the grader's own probe begins: the student changed the course API.
-const std::string kApiChanged =
-    "the course API is changed (the grader calls computeAcceleration(struct world*, struct "
-    "point[8][8][8]), Euler(struct world*) and RK4(struct world*) on struct world's fields p, v, "
-    "dt, ...): ";
 // The course's headers that bring GL into jello.h: empty when the course API's jello.h serves.
 const char* const kCourseGlHeaders[] = {"openGL-headers.h", "input.h", "showCube.h"};
 // Copies of the libraries the grader stands in for, which a submission may ship: each is
@@ -249,18 +242,6 @@ std::string whyNot(const Tree& tree, const Attempt& attempt) {
   return "";
 }
 
-// The lenient stand-ins a build used: each says so as it is included (#pragma message).
-std::vector<std::string> standInsUsed(const std::string& log) {
-  std::set<std::string> used;
-  const std::string mark = "jello-grader stand-in: ";
-  for (std::size_t at = log.find(mark); at != std::string::npos; at = log.find(mark, at + 1)) {
-    std::size_t end = log.find_first_of(">\n", at);
-    if (end != std::string::npos && log[end] == '>')
-      used.insert(log.substr(at + mark.size(), end + 1 - at - mark.size()));
-  }
-  return {used.begin(), used.end()};
-}
-
 // scratch/build: the tree from physics.cpp's folder, the stand-ins' copies replaced, the course
 // API's headers where the attempt says so, the probe. scratch/standins: the stand-ins.
 void layOut(const Tree& tree, const Attempt& attempt, const fs::path& work) {
@@ -331,47 +312,6 @@ std::vector<std::string> writeFlags(const Tree& tree, const Attempt& attempt,
   writeFileWhole((work / "list").string(), list, Existing::Replace);
   writeFileWhole((work / "build.sh").string(), kBuildScript, Existing::Replace);
   return leniencies;
-}
-
-// The first line of the compiler's output that says what is wrong, without sandbox paths: of a
-// file the program needs (physics.cpp, its main, the probe) or of the link, before one of a file
-// the linker would have taken only if needed (a "lib": its error matters only when the link
-// then fails, which says so itself).
-std::string firstError(const std::string& log) {
-  std::istringstream lines(log);
-  std::string line, ofLib;
-  bool inLib = false;
-  while (std::getline(lines, line)) {
-    if (line.rfind("jello-grader: ", 0) == 0) {
-      inLib = line == "jello-grader: compiling lib";
-      continue;
-    }
-    if (line.find(": error:") != std::string::npos ||
-        line.find("fatal error:") != std::string::npos ||
-        line.find("undefined reference") != std::string::npos ||
-        line.find("multiple definition") != std::string::npos) {
-      if (inLib) {
-        if (ofLib.empty()) ofLib = line;
-        continue;
-      }
-      for (const char* prefix : {"/work/build/", "/usr/bin/ld: "}) {
-        for (std::size_t at; (at = line.find(prefix)) != std::string::npos;) {
-          line.erase(at, std::strlen(prefix));
-        }
-      }
-      for (std::size_t at; (at = line.find("./")) != std::string::npos &&
-                           (at == 0 || line[at - 1] == ' ' || line[at - 1] == '(');) {
-        line.erase(at, 2);  // the files are given as ./NAME
-      }
-      if (line.rfind(kProbeName, 0) == 0) {
-        // The grader's own call of the course API does not compile: the API was changed.
-        line = kApiChanged + line;
-      }
-      return line.size() > 400 ? line.substr(0, 400) + "..." : line;
-    }
-  }
-  if (!ofLib.empty()) return firstError(ofLib);
-  return log.empty() ? "the compiler gave no reason" : log.substr(0, log.find('\n'));
 }
 
 struct Compiled {
@@ -495,20 +435,6 @@ Compiled buildAttempt(const Tree& tree, const Attempt& attempt, const Scratch& s
       "the standard headers another compiler brings in on its own (<string>, <vector>, <cmath>, "
       "...) included before each file, and -fpermissive");
   return compiled;
-}
-
-// A token missing in physics.cpp itself (a ';', a brace), as written and leniently alike: no
-// other attempt changes physics.cpp, and no header puts a token back, so none is tried.
-const std::string kUnmendable =
-    "a token is missing in physics.cpp itself, as written and leniently alike: no other attempt "
-    "(the course's headers) can mend that, so none was tried";
-bool unmendable(const std::string& firstError) {
-  if (firstError.rfind("physics.cpp:", 0) != 0) return false;
-  for (const char* token : {"';'", "'}'", "')'", "']'", "','", "'{'"}) {
-    if (firstError.find(std::string(": error: expected ") + token) != std::string::npos)
-      return true;
-  }
-  return false;
 }
 
 // One attempt, as written, then leniently where that did not compile. True when it built a

@@ -154,7 +154,7 @@ AgreementReference agreementReference(const WorldFile& file) {
     return runCheckpoints(nudged, &ignored);
   };
   std::future<std::vector<State>> up = std::async(std::launch::async, nudgedRun, INFINITY),
-                                   down = std::async(std::launch::async, nudgedRun, -INFINITY);
+                                  down = std::async(std::launch::async, nudgedRun, -INFINITY);
   AgreementReference ref;
   ref.checkpoints = runCheckpoints(file, &ref.diverged);
   ref.tolerance.assign(ref.checkpoints.size(), kFloor);
@@ -192,14 +192,13 @@ std::vector<std::pair<std::string, WorldFile>> agreementWorlds(const GradingSetu
 std::mutex referencesLock;
 std::map<std::string, std::shared_future<AgreementReference>> references;
 
-std::shared_future<AgreementReference> referenceOf(const std::string& name,
-                                                   const WorldFile& file) {
+std::shared_future<AgreementReference> referenceOf(const std::string& name, const WorldFile& file) {
   std::lock_guard<std::mutex> hold(referencesLock);
   JELLO_ASSERT(referencesWanted);
   auto found = references.find(name);
   if (found == references.end())
-    found = references.emplace(name, std::async(std::launch::async, agreementReference, file))
-                .first;
+    found =
+        references.emplace(name, std::async(std::launch::async, agreementReference, file)).first;
   return found->second;
 }
 

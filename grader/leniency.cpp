@@ -332,8 +332,8 @@ const char* missingReturn(const std::string& function) {
   std::size_t open = function.find('\''), call = function.find('(', open + 1);
   if (open == std::string::npos || call == std::string::npos) return "return {}; ";
   std::size_t nameStart = function.rfind(' ', call);
-  bool reference = nameStart != std::string::npos && nameStart > open + 1 &&
-                   function[nameStart - 1] == '&';
+  bool reference =
+      nameStart != std::string::npos && nameStart > open + 1 && function[nameStart - 1] == '&';
   if (!reference) return "return {}; ";
   return function.find(": In member function '") != std::string::npos ? "return *this; " : nullptr;
 }

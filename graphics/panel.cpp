@@ -342,8 +342,8 @@ void traceItem(Viewer& v, const char* label) {
 
 bool frictionFields(Viewer& v, const std::string& id, Friction* friction, bool speed) {
   const Friction before = *friction;
-  bool changed =
-      numberField(v, ("static friction##" + id + "mus").c_str(), &friction->muStatic, 0, kMostFriction);
+  bool changed = numberField(v, ("static friction##" + id + "mus").c_str(), &friction->muStatic, 0,
+                             kMostFriction);
   changed |= numberField(v, ("dynamic friction##" + id + "mud").c_str(), &friction->muDynamic, 0,
                          kMostFriction);
   if (speed)

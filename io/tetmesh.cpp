@@ -146,6 +146,24 @@ NodeFile readNodes(const std::string& text, const std::string& name) {
   return out;
 }
 
+// A tetrahedron's nodes in positive order (its third and fourth swapped where its volume is
+// negative); refused when it is under kSmallestTetrahedron across or of no volume.
+void orient(const Words& in, const NodeFile& nodes, const std::string& field, Tet* t) {
+  const Vec3 x0 = nodes.points[(*t)[0]];
+  const Vec3 e1 = nodes.points[(*t)[1]] - x0, e2 = nodes.points[(*t)[2]] - x0,
+             e3 = nodes.points[(*t)[3]] - x0;
+  const double volume = dot(e1, cross(e2, e3)) / 6;
+  const double edge = std::max({length(e1), length(e2), length(e3)});
+  if (!(edge >= kSmallestTetrahedron)) {
+    char what[64];
+    std::snprintf(what, sizeof what, "a tetrahedron under %g m across", kSmallestTetrahedron);
+    in.fail(what, field);
+  }
+  if (!(std::fabs(volume) > 1e-12 * edge * edge * edge))
+    in.fail("a tetrahedron of no volume (its four points lie in a plane)", field);
+  if (volume < 0) std::swap((*t)[2], (*t)[3]);
+}
+
 // Two tetrahedra on one face overlap unless they lie on its two sides; a face of three or more
 // overlaps too. Refused at the later tetrahedron's line.
 void refuseOverlaps(const Words& in, const NodeFile& nodes, const std::vector<Tet>& tets,
@@ -161,17 +179,20 @@ void refuseOverlaps(const Words& in, const NodeFile& nodes, const std::vector<Te
       std::sort(face.begin(), face.end());
       auto [at, fresh] = faceOf.try_emplace(face, e, t[opposite]);
       if (fresh) continue;
-      const Vec3 a = nodes.points[face[0]], normal = cross(nodes.points[face[1]] - a,
-                                                           nodes.points[face[2]] - a);
+      const Vec3 a = nodes.points[face[0]],
+                 normal = cross(nodes.points[face[1]] - a, nodes.points[face[2]] - a);
       const double mine = dot(normal, nodes.points[t[opposite]] - a),
                    theirs = dot(normal, nodes.points[at->second.second] - a);
       const std::string other = std::to_string(at->second.first + firstNumber);
       if (at->second.first < 0)
-        in.failAt(lines[e], "a face that two other tetrahedra share already", "tetrahedron " +
-                  std::to_string(e + firstNumber));
+        in.failAt(lines[e], "a face that two other tetrahedra share already",
+                  "tetrahedron " + std::to_string(e + firstNumber));
       if ((mine > 0) == (theirs > 0))
-        in.failAt(lines[e], "overlaps tetrahedron " + other + " (both on the same side of the "
-                  "face they share)", "tetrahedron " + std::to_string(e + firstNumber));
+        in.failAt(lines[e],
+                  "overlaps tetrahedron " + other +
+                      " (both on the same side of the "
+                      "face they share)",
+                  "tetrahedron " + std::to_string(e + firstNumber));
       at->second.first = -1;  // taken by two: a third is refused
     }
   }
@@ -193,8 +214,8 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
   const long long first = nodes.firstNumber;
   const long long last = first + static_cast<long long>(nodes.points.size()) - 1;
   std::vector<Tet> tets;
-  std::vector<int> lines;                               // each tetrahedron's line
-  std::map<std::array<int, 4>, long long> given;        // each tetrahedron's nodes, sorted: its number
+  std::vector<int> lines;                         // each tetrahedron's line
+  std::map<std::array<int, 4>, long long> given;  // each tetrahedron's nodes, sorted: its number
   tets.reserve(std::min<std::size_t>(count, text.size() / 8));
   long long firstNumber = 0;
   for (long long i = 0; i < count; ++i) {
@@ -214,19 +235,7 @@ std::vector<Tet> readElements(const std::string& text, const std::string& name,
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
         if (t[a] == t[b]) in.fail("node " + std::to_string(t[a] + first) + " twice", field);
-    const Vec3 x0 = nodes.points[t[0]];
-    const Vec3 e1 = nodes.points[t[1]] - x0, e2 = nodes.points[t[2]] - x0,
-               e3 = nodes.points[t[3]] - x0;
-    double volume = dot(e1, cross(e2, e3)) / 6;
-    const double edge = std::max({length(e1), length(e2), length(e3)});
-    if (!(edge >= kSmallestTetrahedron)) {
-      char what[64];
-      std::snprintf(what, sizeof what, "a tetrahedron under %g m across", kSmallestTetrahedron);
-      in.fail(what, field);
-    }
-    if (!(std::fabs(volume) > 1e-12 * edge * edge * edge))
-      in.fail("a tetrahedron of no volume (its four points lie in a plane)", field);
-    if (volume < 0) std::swap(t[2], t[3]), volume = -volume;
+    orient(in, nodes, field, &t);
     std::array<int, 4> key = t;
     std::sort(key.begin(), key.end());
     if (auto [at, fresh] = given.try_emplace(key, i + firstNumber); !fresh)

@@ -9,8 +9,8 @@ namespace jello {
 
 std::optional<FrictionFault> frictionFault(const Friction& f) {
   if (!(f.muStatic >= 0 && f.muStatic <= kMostFriction))
-    return FrictionFault{"friction_static", "must be from 0 to " +
-                                                std::to_string(static_cast<int>(kMostFriction))};
+    return FrictionFault{"friction_static",
+                         "must be from 0 to " + std::to_string(static_cast<int>(kMostFriction))};
   if (!(f.muDynamic >= 0 && f.muDynamic <= f.muStatic))
     return FrictionFault{"friction_dynamic",
                          "must be from 0 to friction_static (dynamic friction is the weaker)"};

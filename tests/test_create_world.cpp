@@ -453,7 +453,9 @@ TEST(CreateWorld, JudgesTheStepAsCheckDoesAtTheInitialStateToo) {
   EXPECT_NE(fast.err.find("dt=0.001 exceeds EULER's stable limit 0.000927 s"), std::string::npos)
       << fast.err;
   test::CommandResult check = test::runProgram({JELLO_BINARY, "--check", dir + "/a.w"});
-  EXPECT_NE(check.out.find("with EULER: unstable (108% of the limit 0.000927 at the initial state)"), std::string::npos)
+  EXPECT_NE(
+      check.out.find("with EULER: unstable (108% of the limit 0.000927 at the initial state)"),
+      std::string::npos)
       << check.out;
   Result slow = createWorld("--preset jello --integrator EULER --dt 0.0002 -o '" + dir + "/b.w'");
   EXPECT_EQ(slow.err, "");

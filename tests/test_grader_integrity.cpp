@@ -158,8 +158,8 @@ TEST(GraderIntegrity, ACompileTimeLoopSpendsTheBudgetOfAllAttemptsOnce) {
             std::string::npos)
       << build.log.substr(0, 3000);
   std::size_t compilers = 0;
-  for (std::size_t at = build.log.find("jello-grader: compiling root\n");
-       at != std::string::npos; at = build.log.find("jello-grader: compiling root\n", at + 1))
+  for (std::size_t at = build.log.find("jello-grader: compiling root\n"); at != std::string::npos;
+       at = build.log.find("jello-grader: compiling root\n", at + 1))
     ++compilers;
   EXPECT_EQ(compilers, 1u) << build.log.substr(0, 3000);
   EXPECT_LT(seconds, 60) << "a hang detector: the budget is 3 s of CPU";

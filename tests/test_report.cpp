@@ -328,7 +328,8 @@ TEST(ReportWords, CommandsQuoteOnlyTheWordsThatNeedIt) {
   EXPECT_FALSE(worldFileHolds(rk45));
   EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),
             "./jello --integrator RK45 --dt 0.025 --rtol 1e-07 --atol 1e-07 world/rotate.w");
-  EXPECT_TRUE(worldFileCommand("world/rotate.w", "out", rk45).empty()) << "no world file holds rtol";
+  EXPECT_TRUE(worldFileCommand("world/rotate.w", "out", rk45).empty())
+      << "no world file holds rtol";
   rk45.tolerances = Tolerances{};
   EXPECT_TRUE(worldFileHolds(rk45)) << "a world file's RK45 runs at the default tolerances";
   EXPECT_EQ(shellLine(runCommand("world/rotate.w", rk45)),

@@ -141,11 +141,12 @@ TEST(SavedScene, EveryFrictionTheRuleAllowsIsSavedAndReadBackAndNoOther) {
     for (double muDynamic : {0.0, 0.2, 0.3, 0.30000000000000004, 10.0})
       for (double speed : {0.01, 1e-9, 5.0}) {
         const Friction f{muStatic, muDynamic, speed};
-        test::writeText(dir + "/in.toml", "dt = 0.0003\n[jelly]\nshape = \"lattice\"\n"
-                                          "size = [3, 3, 3]\n[[sphere]]\ncentre = [0, 0, -2]\n"
-                                          "radius = 0.5\nfriction_static = " + number(muStatic) +
-                                          "\nfriction_dynamic = " + number(muDynamic) +
-                                          "\nfriction_speed = " + number(speed) + "\n");
+        test::writeText(dir + "/in.toml",
+                        "dt = 0.0003\n[jelly]\nshape = \"lattice\"\n"
+                        "size = [3, 3, 3]\n[[sphere]]\ncentre = [0, 0, -2]\n"
+                        "radius = 0.5\nfriction_static = " +
+                            number(muStatic) + "\nfriction_dynamic = " + number(muDynamic) +
+                            "\nfriction_speed = " + number(speed) + "\n");
         const auto fault = frictionFault(f);
         SCOPED_TRACE(number(muStatic) + " " + number(muDynamic) + " " + number(speed));
         if (fault) {
@@ -163,7 +164,8 @@ TEST(SavedScene, EveryFrictionTheRuleAllowsIsSavedAndReadBackAndNoOther) {
         ++allowed;
         const WorldFile in = readSceneFile(dir + "/in.toml");
         writeScene(dir + "/out.toml", in.world, in.run, in.state, true);
-        const Friction back = readSceneFile(dir + "/out.toml").world.scene->obstacles.at(0).friction;
+        const Friction back =
+            readSceneFile(dir + "/out.toml").world.scene->obstacles.at(0).friction;
         EXPECT_EQ(back.muStatic, muStatic);
         EXPECT_EQ(back.muDynamic, muDynamic);
         EXPECT_EQ(back.speed, speed);
