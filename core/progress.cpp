@@ -6,23 +6,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 
 namespace jello {
 
-namespace {
-
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-}  // namespace
-
-Progress::Progress() : terminal_(::isatty(STDERR_FILENO) == 1), lastLogged_(now()) {}
-
-bool Progress::enabled() const { return terminal_ || now() - lastLogged_ >= kLogSeconds; }
+Progress::Progress() : enabled_(::isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() { finish(); }
 
@@ -45,20 +34,14 @@ void Progress::finish() {
 }
 
 void Progress::finish(const std::string& lastLine) {
-  if (!terminal_) return;
+  if (!enabled_) return;
   show(lastLine);
   std::fputc('\n', stderr);
   width_ = 0;
 }
 
 void Progress::show(const std::string& text) {
-  if (!terminal_) {
-    if (!enabled()) return;
-    std::fprintf(stderr, "%s\n", text.c_str());
-    std::fflush(stderr);
-    lastLogged_ = now();
-    return;
-  }
+  if (!enabled_) return;
   const std::size_t limit = lineLimit();
   const std::string line = text.substr(0, limit);
   // Spaces after a line shorter than the last one wipe what would be left of that one.

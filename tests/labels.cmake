@@ -28,7 +28,6 @@ set(jello_labelled
   "long sanitizers|Signals.AFrameBeingWrittenLeavesNoTemporaryFileBehind"
   "long|SpecialFiles.AFifoWriterThatStallsIsRefusedAfterFiveSecondsAndASlowOneIsRead"
   "long|SpecialFiles.AFifoIsReadAndAFifoWithoutWriterDoesNotHang"
-  "long|ProgressToALog.AWholeLineEveryFewSecondsAndNoneSooner"
   "long sanitizers|FullDisk.AReportWhosePictureDoesNotFitNamesNoPictureAndLeavesNoEmptyFile"
   "long sanitizers|Cli.InATerminalTheProgressLineEndsWithItsFinalStateAndANewlineBeforeTheSummary"
   "long sanitizers|Conservation.SymplecticSchemesKeepTheEnergyOfAnUndampedCubeForTenSeconds"

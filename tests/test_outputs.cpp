@@ -22,7 +22,6 @@
 #include "core/exitstatus.h"
 #include "core/output.h"
 #include "core/plot.h"
-#include "core/progress.h"
 #include "test_support.h"
 
 namespace jello {
@@ -641,30 +640,6 @@ TEST(CommandLineNumbers, CameraAndSizeTakeOnlyTheWorldFilesNumbers) {
       kGoOn);
   EXPECT_EQ(c.pictures.width, 320);
   EXPECT_EQ(c.pictures.camera->azimuth, -90);
-}
-
-}  // namespace
-}  // namespace jello
-
-namespace jello {
-namespace {
-
-// Progress to a log (stderr not a terminal, as here): nothing before kLogSeconds of the work,
-// then whole lines, one every kLogSeconds at most, never a carriage return; nothing wiped at the
-// end. (It waits on the clock, not on the machine: a sleep, no work.)
-TEST(ProgressToALog, AWholeLineEveryFewSecondsAndNoneSooner) {
-  ::testing::internal::CaptureStderr();
-  {
-    Progress progress;
-    progress.show("at once: not shown");
-    EXPECT_FALSE(progress.enabled());
-    std::this_thread::sleep_for(std::chrono::duration<double>(kLogSeconds + 0.1));
-    EXPECT_TRUE(progress.enabled());
-    progress.show("step 5 of 10");
-    progress.show("step 6 of 10: too soon after the last");
-    progress.finish();
-  }
-  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "step 5 of 10\n");
 }
 
 }  // namespace
