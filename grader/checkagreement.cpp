@@ -219,7 +219,7 @@ constexpr double kAgreementScale = 12;  // times kProbeSeconds: 60 CPU seconds a
 
 CheckResult checkAgreement(const std::string& probe, const GradingSetup& setup) {
   const std::vector<std::pair<std::string, WorldFile>> worlds = agreementWorlds(setup);
-  startAgreementReferences(setup);
+  for (const auto& [name, file] : worlds) referenceOf(name, file);  // all started, worlds read once
   std::vector<Judged> judgedWorlds;
   for (const auto& [name, file] : worlds) {
     Script script;
